@@ -1,0 +1,204 @@
+// The ctess CLI, run as a user would: the "done when" numbers, outputs, and every bad-input case.
+#include <catch2/catch.hpp>
+
+#include <ctess/cp_pattern.hpp>
+#include <ctess/d3d11_tessellator.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace {
+
+struct Run {
+    int exit_code = -1;
+    std::string out; // stdout and stderr together
+};
+
+Run ctess_cli(const std::string& args) {
+    const std::string cmd = std::string(CTESS_CLI) + " " + args + " 2>&1";
+    Run r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 65536> buf{};
+    std::size_t n = 0;
+    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+long json_number(const std::string& json, const std::string& key) {
+    std::smatch m;
+    REQUIRE(std::regex_search(json, m, std::regex("\"" + key + "\": (\\d+)")));
+    return std::stol(m[1]);
+}
+
+// The "vertices" array as integers, in order.
+std::vector<std::uint32_t> json_vertices(const std::string& json) {
+    const auto begin = json.find("\"vertices\": [");
+    const auto end = json.find("]],", begin);
+    std::vector<std::uint32_t> out;
+    std::string body = json.substr(begin + 13, end - begin - 13);
+    for (char& c : body)
+        if (c == '[' || c == ']' || c == ',') c = ' ';
+    std::istringstream in(body);
+    for (std::uint32_t x; in >> x;) out.push_back(x);
+    return out;
+}
+
+std::string temp_path(const std::string& name) {
+    return (std::filesystem::temp_directory_path() /
+            ("ctess_test_" + std::to_string(::getpid()) + "_" + name))
+        .string();
+}
+
+} // namespace
+
+TEST_CASE("d3d11-even 64,64,64,64 gives 3169 vertices and 6144 triangles", "[cli]") {
+    const Run r = ctess_cli("pattern --mode d3d11-even --factors 64,64,64,64 --format json");
+    REQUIRE(r.exit_code == 0);
+    CHECK(json_number(r.out, "fixed_one") == 65536);
+    CHECK(json_number(r.out, "vertex_count") == 3169);
+    CHECK(json_number(r.out, "triangle_count") == 6144);
+    CHECK(json_vertices(r.out).size() == 2 * 3169);
+}
+
+TEST_CASE("d3d11-odd 2.5,3.7,5.1,4.2 gives 27 vertices and 37 triangles", "[cli]") {
+    const Run r = ctess_cli("pattern --mode d3d11-odd --factors 2.5,3.7,5.1,4.2");
+    REQUIRE(r.exit_code == 0);
+    CHECK(json_number(r.out, "vertex_count") == 27);
+    CHECK(json_number(r.out, "triangle_count") == 37);
+}
+
+TEST_CASE("pattern JSON carries the library's exact vertices", "[cli]") {
+    using namespace ctess;
+    const Run r = ctess_cli("pattern --mode d3d11-even --factors 2.5,3.7,5.1,4.2 --format json");
+    REQUIRE(r.exit_code == 0);
+    std::vector<DomainPoint> pts(d3d11::max_tri_counts.points);
+    std::vector<std::uint32_t> idx(d3d11::max_tri_counts.indices);
+    const auto counts = d3d11::tessellate_tri({d3d11::Partitioning::fractional_even, d3d11::Winding::cw},
+                                              {2.5f, 3.7f, 5.1f, 4.2f}, pts.data(), idx.data());
+    const auto v = json_vertices(r.out);
+    REQUIRE(v.size() == 2 * counts.points);
+    for (std::uint32_t i = 0; i < counts.points; ++i) {
+        CHECK(v[2 * i] == pts[i].u);
+        CHECK(v[2 * i + 1] == pts[i].v);
+    }
+
+    const Run c = ctess_cli("pattern --mode cp --factors 16,8,4 --layout shared");
+    REQUIRE(c.exit_code == 0);
+    CHECK(json_number(c.out, "fixed_one") == (1 << 24));
+    cp::PatternOptions opt;
+    opt.provoking_layout = false;
+    const auto cc = cp::pattern_counts(16, 8, 4, opt);
+    CHECK(json_number(c.out, "vertex_count") == cc.vertices);
+    CHECK(json_number(c.out, "triangle_count") == cc.triangles);
+}
+
+TEST_CASE("svg and obj outputs are written", "[cli]") {
+    const std::string svg = temp_path("p.svg");
+    REQUIRE(
+        ctess_cli("pattern --mode cp --factors 10.3,6,3 --format svg --provoking --out " + svg).exit_code ==
+        0);
+    std::ifstream in(svg);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(text.rfind("<svg", 0) == 0);
+    CHECK(text.find("</svg>") != std::string::npos);
+    CHECK(text.find("factors (10.3, 6, 3)") != std::string::npos);
+    std::filesystem::remove(svg);
+
+    const Run obj = ctess_cli("pattern --mode d3d11-integer --factors 3,3,3,3 --format obj");
+    REQUIRE(obj.exit_code == 0);
+    const auto faces = std::count(obj.out.begin(), obj.out.end(), 'f');
+    CHECK(faces >= 13); // 13 triangles at integer 3 (spec 4.6), plus the 'f' letters of comments
+}
+
+TEST_CASE("line, sweep and animate run", "[cli]") {
+    const Run line = ctess_cli("line --mode cp --factor 1.5");
+    REQUIRE(line.exit_code == 0);
+    CHECK(line.out.find("4 points") != std::string::npos);
+    CHECK(line.out.find("4194304") != std::string::npos); // 0.25 in units of 2^-24
+
+    const Run even = ctess_cli("line --mode d3d11-even --factor 10.3 --format json");
+    REQUIRE(even.exit_code == 0);
+    CHECK(even.out.find(
+              "[0, 6390, 12780, 19170, 19989, 26379, 32768, 39157, 45547, 46366, 52756, 59146, 65536]") !=
+          std::string::npos); // spec 4.3
+
+    const std::string svg = temp_path("sweep.svg");
+    REQUIRE(ctess_cli("sweep --mode d3d11-even --from 4 --to 8 --steps 50 --svg " + svg).exit_code == 0);
+    CHECK(std::filesystem::file_size(svg) > 1000);
+    std::filesystem::remove(svg);
+
+    const std::string dir = temp_path("anim");
+    REQUIRE(ctess_cli("animate --mode cp --from 1,1,1 --to 4,4,4 --frames 5 --out " + dir).exit_code == 0);
+    CHECK(std::filesystem::exists(dir + "/frame_004.svg"));
+    CHECK(std::filesystem::exists(dir + "/index.html"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bad arguments give a clear message and exit code 2", "[cli][bad_input]") {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"", "usage"},
+        {"frobnicate", "unknown command"},
+        {"pattern --mode cp", "missing required option '--factors'"},
+        {"pattern --mode cp --factors nan,2,3", "must be finite and greater than 0"},
+        {"pattern --mode cp --factors inf,2,3", "must be finite and greater than 0"},
+        {"pattern --mode cp --factors -inf,2,3", "must be finite and greater than 0"},
+        {"pattern --mode d3d11-even --factors -1,2,3,4", "must be finite and greater than 0"},
+        {"pattern --mode d3d11-even --factors 0,2,3,4", "must be finite and greater than 0"},
+        {"pattern --mode cp --factors 1e39,2,3", "out of the float range"},
+        {"pattern --mode cp --factors abc,2,3", "is not a number"},
+        {"pattern --mode cp --factors 1,,3", "is not a number"},
+        {"pattern --mode cp --factors 2x,2,3", "is not a number"},
+        {"pattern --mode cp --factors 1", "expected 2 to 6 comma-separated values"},
+        {"pattern --mode cp --factors 1,2", "cp takes three edge factors"},
+        {"pattern --mode cp --factors 1,2,3,4", "cp takes three edge factors"},
+        {"pattern --mode d3d11-odd --factors 1,2", "tri domain takes"},
+        {"pattern --mode bogus --factors 1,2,3", "is not one of"},
+        {"pattern --mode cp --factors 1,2,3 --format png", "is not one of"},
+        {"pattern --mode cp --factors 1,2,3 --winding left", "is not one of"},
+        {"pattern --mode cp --factors 1,2,3 --max 128", "is not one of"},
+        {"pattern --mode cp --factors 1,2,3 --bogus 1", "unknown option"},
+        {"pattern --mode cp --factors 1,2,3 --factors 1,2,3", "given twice"},
+        {"pattern --mode cp --factors", "needs a value"},
+        {"pattern --mode cp --domain quad --factors 1,2,3", "triangles only"},
+        {"pattern --mode d3d11-odd --factors 1,2,3 --layout shared", "cp mode only"},
+        {"line --mode cp --factor -2", "must be finite and greater than 0"},
+        {"line --mode cp --factor 3 extra", "unexpected argument"},
+        {"sweep --mode cp --from 4 --to 2 --svg x.svg", "--to must be greater"},
+        {"sweep --mode cp --from 1 --to 2 --steps 1 --svg x.svg", "outside [2, 20000]"},
+        {"sweep --mode cp --from 1 --to 2 --steps -5 --svg x.svg", "not a whole number"},
+        {"animate --mode cp --from 1,1,1 --to 2,2 --frames 3 --out d", "expected 3 comma-separated"},
+    };
+    for (const auto& [args, message] : cases) {
+        INFO("ctess " << args);
+        const Run r = ctess_cli(args);
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.find(message) != std::string::npos);
+    }
+    // An unwritable output path is an error too (exit 1), not a crash.
+    const Run r = ctess_cli("pattern --mode cp --factors 2,2,2 --format svg --out /nonexistent-dir/x.svg");
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("cannot write") != std::string::npos);
+}
+
+TEST_CASE("finite out-of-range factors are clamped as documented", "[cli][bad_input]") {
+    // CP clamps to [1, max]; D3D11 clamps edges to its partitioning's range.
+    const Run big = ctess_cli("pattern --mode cp --factors 1000,1000,1000 --max 64 --layout shared");
+    REQUIRE(big.exit_code == 0);
+    CHECK(json_number(big.out, "triangle_count") == 64 * 64);
+    const Run small = ctess_cli("pattern --mode cp --factors 0.25,0.5,1e-30 --layout shared");
+    REQUIRE(small.exit_code == 0);
+    CHECK(json_number(small.out, "triangle_count") == 1);
+    const Run d3d = ctess_cli("pattern --mode d3d11-even --factors 1e30,1e30,1e30,1e30");
+    REQUIRE(d3d.exit_code == 0);
+    CHECK(json_number(d3d.out, "triangle_count") == 6144);
+}

@@ -1,0 +1,97 @@
+// ctess animate: one SVG per frame while the factors move from one triple to another, plus an index.html
+// flip-book, so a person can watch a transition and see that nothing pops.
+#include "cli_args.hpp"
+#include "commands.hpp"
+#include "file_output.hpp"
+#include "mesh.hpp"
+#include "mesh_formats.hpp"
+
+#include <fmt/core.h>
+
+namespace ctess::cli {
+
+PatternRequest pattern_request_from(const Args& args, const std::string& factors_key);
+
+namespace {
+
+std::string flip_book_html(unsigned frames, const std::string& title,
+                           const std::vector<std::string>& captions) {
+    std::string list;
+    for (unsigned i = 0; i < frames; ++i) list += fmt::format("{}\"{}\"", i ? "," : "", captions[i]);
+    return fmt::format(R"(<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>{0}</title>
+<style>
+ body {{ font-family: DejaVu Sans, Helvetica, Arial, sans-serif; margin: 20px; color: #1b2838; }}
+ #controls {{ display: flex; gap: 12px; align-items: center; margin: 8px 0; }}
+ input[type=range] {{ width: 420px; }}
+ img {{ border: 1px solid #ccd; }}
+</style></head>
+<body>
+<h2>{0}</h2>
+<div id="controls">
+ <button id="play">Play</button>
+ <input id="slider" type="range" min="0" max="{1}" value="0">
+ <span id="label"></span>
+</div>
+<img id="frame" src="frame_000.svg" width="720" height="700" alt="tessellation frame">
+<p>Drag the slider or press Play. Keys: left/right step one frame, space plays/pauses.</p>
+<script>
+const captions = [{2}];
+const img = document.getElementById('frame'), slider = document.getElementById('slider');
+const label = document.getElementById('label'), play = document.getElementById('play');
+const pad = (i) => String(i).padStart(3, '0');
+function show(i) {{ slider.value = i; img.src = 'frame_' + pad(i) + '.svg'; label.textContent = captions[i]; }}
+let timer = null;
+function toggle() {{
+  if (timer) {{ clearInterval(timer); timer = null; play.textContent = 'Play'; return; }}
+  play.textContent = 'Pause';
+  timer = setInterval(() => show((+slider.value + 1) % {3}), 120);
+}}
+slider.oninput = () => show(+slider.value);
+play.onclick = toggle;
+document.onkeydown = (e) => {{
+  if (e.key === 'ArrowRight') show(Math.min({1}, +slider.value + 1));
+  if (e.key === 'ArrowLeft') show(Math.max(0, +slider.value - 1));
+  if (e.key === ' ') {{ e.preventDefault(); toggle(); }}
+}};
+show(0);
+</script>
+</body></html>
+)",
+                       title, frames - 1, list, frames);
+}
+
+} // namespace
+
+int run_animate(int argc, char** argv) {
+    const Args args(argc, argv, 2,
+                    {"mode", "domain", "from", "to", "frames", "out", "winding", "max", "layout"},
+                    {"provoking"});
+    PatternRequest r = pattern_request_from(args, "from");
+    const std::vector<float> from = r.factors;
+    const std::vector<float> to = parse_float_list(args.get("to"), "--to", from.size(), from.size());
+    require_usable_factors(to, "--to");
+    const unsigned frames = parse_unsigned(args.get("frames"), "--frames", 2, 1000);
+    const std::string dir = args.get("out");
+    make_directory(dir);
+
+    std::vector<std::string> captions;
+    for (unsigned i = 0; i < frames; ++i) {
+        const double s = double(i) / (frames - 1);
+        for (std::size_t k = 0; k < from.size(); ++k)
+            r.factors[k] = static_cast<float>(from[k] + (double(to[k]) - from[k]) * s);
+        const Mesh mesh = tessellate(r);
+        const std::string caption =
+            fmt::format("frame {} of {}: factors ({})", i + 1, frames, factors_text(r.factors));
+        write_text(fmt::format("{}/frame_{:03}.svg", dir, i),
+                   mesh_to_svg(mesh, r, SvgOptions{args.has("provoking"), caption}));
+        captions.push_back(caption);
+    }
+    const std::string title =
+        fmt::format("ctess animate · {} · ({}) → ({})", r.mode, factors_text(from), factors_text(to));
+    write_text(dir + "/index.html", flip_book_html(frames, title, captions));
+    fmt::print("wrote {} frames and {}/index.html\n", frames, dir);
+    return 0;
+}
+
+} // namespace ctess::cli

@@ -1,0 +1,123 @@
+#include "mesh.hpp"
+
+#include "cli_args.hpp"
+
+#include <ctess/cp_pattern.hpp>
+#include <ctess/d3d11_tessellator.hpp>
+
+#include <array>
+
+#include <fmt/core.h>
+
+namespace ctess::cli {
+
+const std::vector<std::string>& pattern_modes() {
+    static const std::vector<std::string> modes = {"cp", "d3d11-integer", "d3d11-pow2", "d3d11-odd",
+                                                   "d3d11-even"};
+    return modes;
+}
+
+bool is_d3d11_mode(const std::string& mode) {
+    return mode.rfind("d3d11-", 0) == 0;
+}
+
+namespace {
+
+d3d11::Partitioning partitioning_of(const std::string& mode) {
+    if (mode == "d3d11-integer") return d3d11::Partitioning::integer;
+    if (mode == "d3d11-pow2") return d3d11::Partitioning::pow2;
+    if (mode == "d3d11-odd") return d3d11::Partitioning::fractional_odd;
+    return d3d11::Partitioning::fractional_even;
+}
+
+float max_of(const std::vector<float>& v, std::size_t n) {
+    float m = v[0];
+    for (std::size_t i = 1; i < n; ++i) m = v[i] > m ? v[i] : m;
+    return m;
+}
+
+Mesh tessellate_d3d11(const PatternRequest& r) {
+    const d3d11::TessOptions opt{partitioning_of(r.mode), r.ccw ? d3d11::Winding::ccw : d3d11::Winding::cw};
+    Mesh mesh;
+    mesh.fixed_one = d3d11::fixed_one;
+    const auto& f = r.factors;
+    auto run = [&](auto fn, const auto& factors) {
+        const d3d11::MeshCounts counts = fn(opt, factors, nullptr, nullptr);
+        mesh.vertices.resize(counts.points);
+        mesh.indices.resize(counts.indices);
+        fn(opt, factors, mesh.vertices.data(), mesh.indices.data());
+    };
+    if (r.domain == "tri") {
+        if (f.size() != 3 && f.size() != 4)
+            throw UsageError(fmt::format(
+                "--factors: the tri domain takes Ueq0,Veq0,Weq0[,inside], got {} values", f.size()));
+        // Without an inside factor, use the largest edge factor (HLSL's "max" inside reduction).
+        const std::array<float, 4> tf = {f[0], f[1], f[2], f.size() == 4 ? f[3] : max_of(f, 3)};
+        run([](auto&&... a) { return d3d11::tessellate_tri(a...); }, tf);
+    } else if (r.domain == "quad") {
+        if (f.size() != 4 && f.size() != 6)
+            throw UsageError(fmt::format(
+                "--factors: the quad domain takes Ueq0,Veq0,Ueq1,Veq1[,insideU,insideV], got {} values",
+                f.size()));
+        const float in_u = f.size() == 6 ? f[4] : (f[1] > f[3] ? f[1] : f[3]);
+        const float in_v = f.size() == 6 ? f[5] : (f[0] > f[2] ? f[0] : f[2]);
+        const std::array<float, 6> tf = {f[0], f[1], f[2], f[3], in_u, in_v};
+        run([](auto&&... a) { return d3d11::tessellate_quad(a...); }, tf);
+    } else {
+        if (f.size() != 2)
+            throw UsageError(
+                fmt::format("--factors: the iso domain takes density,detail, got {} values", f.size()));
+        const std::array<float, 2> tf = {f[0], f[1]};
+        run([](auto&&... a) { return d3d11::tessellate_isoline(a...); }, tf);
+        mesh.vertices_per_primitive = 2;
+    }
+    return mesh;
+}
+
+Mesh tessellate_cp(const PatternRequest& r) {
+    if (r.domain != "tri")
+        throw UsageError("--domain: the cp mode tessellates triangles only (use --domain tri)");
+    if (r.factors.size() != 3)
+        throw UsageError(
+            fmt::format("--factors: cp takes three edge factors n0,n1,n2, got {} values", r.factors.size()));
+    cp::PatternOptions opt;
+    opt.max_factor = r.max_factor;
+    opt.provoking_layout = r.provoking_layout;
+    Mesh mesh;
+    mesh.fixed_one = cp::fixed_one;
+    const auto& f = r.factors;
+    const cp::PatternCounts counts = cp::tessellate(f[0], f[1], f[2], opt, nullptr, nullptr);
+    mesh.vertices.resize(counts.vertices);
+    mesh.indices.resize(std::size_t{counts.triangles} * 3);
+    cp::tessellate(f[0], f[1], f[2], opt, mesh.vertices.data(), mesh.indices.data());
+    if (!r.ccw) // CP triangles are counter-clockwise; clockwise output keeps the provoking vertex first
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+    return mesh;
+}
+
+} // namespace
+
+Mesh tessellate(const PatternRequest& request) {
+    choice(request.mode, pattern_modes(), "--mode");
+    choice(request.domain, {"tri", "quad", "iso"}, "--domain");
+    return is_d3d11_mode(request.mode) ? tessellate_d3d11(request) : tessellate_cp(request);
+}
+
+std::int64_t doubled_area(const Mesh& mesh, std::size_t t) {
+    const DomainPoint& a = mesh.vertices[mesh.indices[3 * t]];
+    const DomainPoint& b = mesh.vertices[mesh.indices[3 * t + 1]];
+    const DomainPoint& c = mesh.vertices[mesh.indices[3 * t + 2]];
+    const std::int64_t bx = std::int64_t{b.u} - a.u, by = std::int64_t{b.v} - a.v;
+    const std::int64_t cx = std::int64_t{c.u} - a.u, cy = std::int64_t{c.v} - a.v;
+    return bx * cy - by * cx;
+}
+
+std::size_t degenerate_triangles(const Mesh& mesh) {
+    if (mesh.vertices_per_primitive != 3) return 0;
+    std::size_t n = 0;
+    for (std::size_t t = 0; t < mesh.primitive_count(); ++t) n += doubled_area(mesh, t) == 0;
+    return n;
+}
+
+} // namespace ctess::cli

@@ -1,0 +1,36 @@
+// A tessellated patch as the CLI handles it: exact domain points, primitives, and what produced them.
+#pragma once
+#include <ctess/domain_point.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ctess::cli {
+
+struct PatternRequest {
+    std::string mode = "cp";      // cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
+    std::string domain = "tri";   // tri; quad and iso for D3D11 modes
+    std::vector<float> factors;   // cp: n0,n1,n2; D3D11 in the reference's order
+    bool ccw = false;             // output winding
+    unsigned max_factor = 64;     // CP only
+    bool provoking_layout = true; // CP only
+};
+
+struct Mesh {
+    std::vector<DomainPoint> vertices;
+    std::vector<std::uint32_t> indices;
+    std::uint32_t fixed_one = 0;
+    unsigned vertices_per_primitive = 3; // 2 for isolines
+    std::size_t primitive_count() const { return indices.size() / vertices_per_primitive; }
+};
+
+const std::vector<std::string>& pattern_modes();
+bool is_d3d11_mode(const std::string& mode);
+// Validates the factor count for the mode and domain (UsageError otherwise), then tessellates.
+Mesh tessellate(const PatternRequest& request);
+// Twice the signed area of triangle t, in units of fixed_one^2 (exact).
+std::int64_t doubled_area(const Mesh& mesh, std::size_t t);
+std::size_t degenerate_triangles(const Mesh& mesh);
+
+} // namespace ctess::cli
