@@ -18,6 +18,7 @@ commands:
   line     --mode M --factor f [--max 64|256] [--format text|json]
   sweep    --mode M --from a --to b [--steps n] --svg out.svg [--max 64|256]
   animate  --mode M --from a,b,c --to d,e,f --frames n --out DIR [pattern options]
+  efficiency [--max 64|256] [--random n] [--seed s] [--format markdown|json] [--out FILE]
 
 pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
 line modes:    the pattern modes plus pow2-subdivision, one-at-a-time, even-spacing
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
         if (command == "line") return ctess::cli::run_line(argc, argv);
         if (command == "sweep") return ctess::cli::run_sweep(argc, argv);
         if (command == "animate") return ctess::cli::run_animate(argc, argv);
+        if (command == "efficiency") return ctess::cli::run_efficiency(argc, argv);
         fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
         return 2;
     } catch (const ctess::cli::UsageError& e) {

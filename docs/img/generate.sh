@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Regenerates the figures of docs/algorithm.md with the ctess CLI.
+# Usage: docs/img/generate.sh [path/to/ctess]   (default: build/release/tools/ctess/ctess)
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+ctess="${1:-$here/../../build/release/tools/ctess/ctess}"
+cd "$here"
+
+# §1: how edge points move with the factor.
+"$ctess" sweep --mode cp --from 1 --to 16 --steps 300 --svg sweep_cp.svg
+"$ctess" sweep --mode d3d11-even --from 2 --to 16 --steps 300 --svg sweep_d3d11_even.svg
+"$ctess" sweep --mode one-at-a-time --from 1 --to 16 --steps 300 --svg sweep_one_at_a_time.svg
+"$ctess" sweep --mode even-spacing --from 1 --to 16 --steps 300 --svg sweep_even_spacing.svg
+
+# §2: triangle patterns (name, mode, factors, extra options).
+while read -r name mode factors extra; do
+  [ -z "$name" ] && continue
+  # shellcheck disable=SC2086
+  "$ctess" pattern --mode "$mode" --factors "$factors" --format svg --out "$name.svg" $extra
+done <<'LIST'
+cp_8_8_8 cp 8,8,8 --layout shared
+d3d11_even_8_8_8 d3d11-even 8,8,8,8
+cp_16_8_4 cp 16,8,4 --layout shared
+cp_10.3_6_3 cp 10.3,6,3 --layout shared
+cp_32_32_8 cp 32,32,8 --layout shared
+cp_1.5_1.5_1.5 cp 1.5,1.5,1.5 --layout shared
+cp_1.5_20_1.2 cp 1.5,20,1.2 --layout shared
+cp_2.5_1.2_40 cp 2.5,1.2,40 --layout shared
+cp_5_5_5_provoking cp 5,5,5 --provoking
+LIST
+echo "figures written to $here"

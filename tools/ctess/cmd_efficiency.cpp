@@ -1,0 +1,24 @@
+// ctess efficiency: the CP efficiency table against D3D11 fractional_even.
+#include "cli_args.hpp"
+#include "commands.hpp"
+#include "efficiency.hpp"
+#include "file_output.hpp"
+
+namespace ctess::cli {
+
+unsigned max_factor_from(const Args& args);
+
+int run_efficiency(int argc, char** argv) {
+    const Args args(argc, argv, 2, {"max", "random", "seed", "format", "out"});
+    const unsigned max = max_factor_from(args);
+    const unsigned random = parse_unsigned(args.get_or("random", "40"), "--random", 1, 100000);
+    const unsigned seed = parse_unsigned(args.get_or("seed", "2026"), "--seed", 0, 4294967295u);
+    const std::string format = choice(args.get_or("format", "markdown"), {"markdown", "json"}, "--format");
+    const auto rows = efficiency_rows(max, random, seed);
+    const auto summary = summarize(rows);
+    write_text(args.get_or("out", "-"), format == "json" ? efficiency_json(rows, summary, max)
+                                                         : efficiency_markdown(rows, summary, max));
+    return 0;
+}
+
+} // namespace ctess::cli

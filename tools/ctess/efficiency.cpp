@@ -1,0 +1,129 @@
+#include "efficiency.hpp"
+
+#include <ctess/cp_pattern.hpp>
+#include <ctess/d3d11_tessellator.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include <fmt/core.h>
+
+namespace ctess::cli {
+
+namespace {
+
+std::uint32_t d3d_even_triangles(const std::array<float, 3>& f, float inside) {
+    const d3d11::TessOptions opt{d3d11::Partitioning::fractional_even, d3d11::Winding::cw};
+    return d3d11::tessellate_tri(opt, {f[0], f[1], f[2], inside}, nullptr, nullptr).indices / 3;
+}
+
+EfficiencyRow measure(const std::string& group, const std::array<float, 3>& f, unsigned max) {
+    EfficiencyRow row;
+    row.group = group;
+    row.factors = f;
+    cp::PatternOptions opt;
+    opt.max_factor = max;
+    opt.provoking_layout = false;
+    const cp::PatternCounts counts = cp::pattern_counts(f[0], f[1], f[2], opt);
+    std::vector<DomainPoint> v(counts.vertices);
+    std::vector<std::uint32_t> idx(3 * std::size_t{counts.triangles});
+    cp::tessellate(f[0], f[1], f[2], opt, v.data(), idx.data());
+    row.cp_triangles = counts.triangles;
+    for (std::size_t t = 0; t < counts.triangles; ++t) {
+        const DomainPoint a = v[idx[3 * t]], b = v[idx[3 * t + 1]], c = v[idx[3 * t + 2]];
+        const std::int64_t area = (std::int64_t{b.u} - a.u) * (std::int64_t{c.v} - a.v) -
+                                  (std::int64_t{b.v} - a.v) * (std::int64_t{c.u} - a.u);
+        row.cp_nondegenerate += area != 0;
+    }
+    // The orientation rule: rotate cyclically (winding kept) so that the smallest factor is on e2.
+    std::array<float, 3> r = f;
+    while (!(r[2] <= r[0] && r[2] <= r[1])) r = {r[1], r[2], r[0]};
+    row.cp_rotated_triangles = cp::pattern_counts(r[0], r[1], r[2], opt).triangles;
+    row.d3d_max = d3d_even_triangles(f, std::max({f[0], f[1], f[2]}));
+    row.d3d_avg = d3d_even_triangles(f, (f[0] + f[1] + f[2]) / 3.0f);
+    return row;
+}
+
+} // namespace
+
+std::vector<EfficiencyRow> efficiency_rows(unsigned max, unsigned random_count, std::uint32_t seed) {
+    std::vector<EfficiencyRow> rows;
+    for (float f : {2.0f, 4.0f, 5.0f, 8.0f, 10.3f, 16.0f, 24.0f, 32.0f, 48.0f, 64.0f})
+        rows.push_back(measure("equal", {f, f, f}, max));
+    const std::array<std::array<float, 3>, 8> two_high = {{{64, 64, 2},
+                                                            {64, 2, 64},
+                                                            {2, 64, 64},
+                                                            {32, 32, 8},
+                                                            {8, 32, 32},
+                                                            {48, 40, 3},
+                                                            {20, 24, 1.5f},
+                                                            {16, 16, 4}}};
+    for (const auto& f : two_high) rows.push_back(measure("two high, one low", f, max));
+    std::mt19937 rng(seed);
+    for (unsigned i = 0; i < random_count; ++i) {
+        std::array<float, 3> f{};
+        // 2 + 62 * k / 2^24 with a 24-bit k: the same triples on every standard library.
+        for (float& x : f) x = 2.0f + 62.0f * static_cast<float>(rng() >> 8) / 16777216.0f;
+        rows.push_back(measure("random", f, max));
+    }
+    return rows;
+}
+
+EfficiencySummary summarize(const std::vector<EfficiencyRow>& rows) {
+    EfficiencySummary s;
+    for (const auto& r : rows) {
+        if (r.group != "random") continue;
+        ++s.random_count;
+        s.mean_ratio_max += double(r.cp_triangles) / r.d3d_max;
+        s.mean_ratio_avg += double(r.cp_triangles) / r.d3d_avg;
+        s.mean_nondegenerate_ratio_max += double(r.cp_nondegenerate) / r.d3d_max;
+        s.mean_nondegenerate_ratio_avg += double(r.cp_nondegenerate) / r.d3d_avg;
+        s.mean_rotated_ratio_max += double(r.cp_rotated_triangles) / r.d3d_max;
+        s.mean_rotated_ratio_avg += double(r.cp_rotated_triangles) / r.d3d_avg;
+    }
+    if (s.random_count != 0) {
+        const double n = double(s.random_count);
+        for (double* m : {&s.mean_ratio_max, &s.mean_ratio_avg, &s.mean_nondegenerate_ratio_max,
+                          &s.mean_nondegenerate_ratio_avg, &s.mean_rotated_ratio_max, &s.mean_rotated_ratio_avg})
+            *m /= n;
+    }
+    return s;
+}
+
+std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max) {
+    std::string out = fmt::format("CP (max factor {}) against D3D11 fractional_even on the same edges\n\n", max);
+    out += "| group | factors (e0, e1, e2) | CP triangles | non-degenerate | CP, smallest on e2 | D3D11 (inside max) "
+           "| ratio | D3D11 (inside avg) | ratio |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& r : rows)
+        out += fmt::format("| {} | {:.2f}, {:.2f}, {:.2f} | {} | {} | {} | {} | {:.3f} | {} | {:.3f} |\n", r.group,
+                           r.factors[0], r.factors[1], r.factors[2], r.cp_triangles, r.cp_nondegenerate,
+                           r.cp_rotated_triangles, r.d3d_max, double(r.cp_triangles) / r.d3d_max, r.d3d_avg,
+                           double(r.cp_triangles) / r.d3d_avg);
+    out += fmt::format("\nMean over the {} random triples in [2, 64]:\n", s.random_count);
+    out += fmt::format("- CP / D3D11 (inside = max): {:.3f} (target <= 0.35); non-degenerate only {:.3f}; "
+                       "smallest edge on e2 {:.3f}\n",
+                       s.mean_ratio_max, s.mean_nondegenerate_ratio_max, s.mean_rotated_ratio_max);
+    out += fmt::format("- CP / D3D11 (inside = average): {:.3f} (target <= 0.65); non-degenerate only {:.3f}; "
+                       "smallest edge on e2 {:.3f}\n",
+                       s.mean_ratio_avg, s.mean_nondegenerate_ratio_avg, s.mean_rotated_ratio_avg);
+    return out;
+}
+
+std::string efficiency_json(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max) {
+    std::string out = fmt::format("{{\"max_tess_factor\": {}, \"rows\": [", max);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const auto& r = rows[i];
+        out += fmt::format("{}\n  {{\"group\": \"{}\", \"factors\": [{}, {}, {}], \"cp_triangles\": {}, "
+                           "\"cp_nondegenerate\": {}, \"cp_rotated_triangles\": {}, \"d3d11_even_inside_max\": {}, "
+                           "\"d3d11_even_inside_avg\": {}}}",
+                           i ? "," : "", r.group, r.factors[0], r.factors[1], r.factors[2], r.cp_triangles,
+                           r.cp_nondegenerate, r.cp_rotated_triangles, r.d3d_max, r.d3d_avg);
+    }
+    out += fmt::format("\n], \"random_count\": {}, \"mean_ratio_inside_max\": {:.6f}, \"mean_ratio_inside_avg\": {:.6f}, "
+                       "\"mean_nondegenerate_ratio_inside_max\": {:.6f}, \"mean_nondegenerate_ratio_inside_avg\": {:.6f}}}\n",
+                       s.random_count, s.mean_ratio_max, s.mean_ratio_avg, s.mean_nondegenerate_ratio_max,
+                       s.mean_nondegenerate_ratio_avg);
+    return out;
+}
+
+} // namespace ctess::cli

@@ -1,0 +1,34 @@
+// The CP efficiency report: CP triangle counts against D3D11 fractional_even on the same edges (issue: "ratio to
+// D3D11 fractional_even, inside = max of the edges and inside = average").
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ctess::cli {
+
+struct EfficiencyRow {
+    std::string group; // "equal", "two high, one low", "random"
+    std::array<float, 3> factors{};
+    std::uint32_t cp_triangles = 0;
+    std::uint32_t cp_nondegenerate = 0;
+    std::uint32_t cp_rotated_triangles = 0; // smallest factor put on e2 (the orientation rule)
+    std::uint32_t d3d_max = 0;              // fractional_even, inside = max of the edges
+    std::uint32_t d3d_avg = 0;              // fractional_even, inside = average of the edges
+};
+
+struct EfficiencySummary {
+    std::size_t random_count = 0;
+    double mean_ratio_max = 0, mean_ratio_avg = 0;                 // CP triangles / D3D11, random rows
+    double mean_nondegenerate_ratio_max = 0, mean_nondegenerate_ratio_avg = 0;
+    double mean_rotated_ratio_max = 0, mean_rotated_ratio_avg = 0;
+};
+
+// Equal factors, two-high-one-low triples and `random_count` seeded random triples in [2, 64].
+std::vector<EfficiencyRow> efficiency_rows(unsigned max_factor, unsigned random_count, std::uint32_t seed);
+EfficiencySummary summarize(const std::vector<EfficiencyRow>& rows);
+std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max);
+std::string efficiency_json(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max);
+
+} // namespace ctess::cli
