@@ -53,6 +53,19 @@ std::vector<std::uint32_t> json_vertices(const std::string& json) {
     return out;
 }
 
+// The "triangles" array as integers, in order.
+std::vector<std::uint32_t> json_triangles(const std::string& json) {
+    const auto begin = json.find("\"triangles\": [");
+    const auto end = json.find("]]", begin);
+    std::string body = json.substr(begin + 14, end - begin - 14);
+    for (char& c : body)
+        if (c == '[' || c == ']' || c == ',') c = ' ';
+    std::vector<std::uint32_t> out;
+    std::istringstream in(body);
+    for (std::uint32_t x; in >> x;) out.push_back(x);
+    return out;
+}
+
 std::string temp_path(const std::string& name) {
     return (std::filesystem::temp_directory_path() /
             ("ctess_test_" + std::to_string(::getpid()) + "_" + name))
@@ -169,7 +182,9 @@ TEST_CASE("bad arguments give a clear message and exit code 2", "[cli][bad_input
         {"pattern --mode cp --factors 1,2,3 --bogus 1", "unknown option"},
         {"pattern --mode cp --factors 1,2,3 --factors 1,2,3", "given twice"},
         {"pattern --mode cp --factors", "needs a value"},
-        {"pattern --mode cp --domain quad --factors 1,2,3", "triangles only"},
+        {"pattern --mode cp --domain quad --factors 1,2,3", "a cp quad takes four edge factors"},
+        {"pattern --mode cp --domain iso --factors 1,2", "tessellates tri and quad"},
+        {"pattern --mode cp --factors 1,2,3 --column-rule fancy", "is not one of"},
         {"pattern --mode d3d11-odd --factors 1,2,3 --layout shared", "cp mode only"},
         {"line --mode cp --factor -2", "must be finite and greater than 0"},
         {"line --mode cp --factor 3 extra", "unexpected argument"},
@@ -201,4 +216,33 @@ TEST_CASE("finite out-of-range factors are clamped as documented", "[cli][bad_in
     const Run d3d = ctess_cli("pattern --mode d3d11-even --factors 1e30,1e30,1e30,1e30");
     REQUIRE(d3d.exit_code == 0);
     CHECK(json_number(d3d.out, "triangle_count") == 6144);
+}
+
+TEST_CASE("a cp quad tiles the unit square and welds its diagonal", "[cli]") {
+    for (const char* layout : {"shared", "provoking"}) {
+        INFO(layout);
+        const Run r = ctess_cli(
+            std::string("pattern --mode cp --domain quad --factors 12,5,12,30 --winding ccw --layout ") +
+            layout);
+        REQUIRE(r.exit_code == 0);
+        const auto v = json_vertices(r.out);
+        const auto t = json_triangles(r.out);
+        REQUIRE(t.size() % 3 == 0);
+        std::int64_t doubled = 0;
+        for (std::size_t i = 0; i < t.size(); i += 3) {
+            const std::int64_t ax = v[2 * t[i]], ay = v[2 * t[i] + 1];
+            const std::int64_t bx = v[2 * t[i + 1]], by = v[2 * t[i + 1] + 1];
+            const std::int64_t cx = v[2 * t[i + 2]], cy = v[2 * t[i + 2] + 1];
+            const std::int64_t a = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+            CHECK(a >= 0);
+            doubled += a;
+        }
+        CHECK(doubled == 2 * (std::int64_t{1} << 48)); // the unit square, in units of 2^-24
+        // Welded: the diagonal's points appear once (shared), or once per half (provoking).
+        std::size_t on_diagonal = 0;
+        for (std::size_t i = 0; i < v.size(); i += 2) on_diagonal += v[i] + v[i + 1] == (1u << 24);
+        std::uint32_t line[300];
+        const unsigned n = ctess::cp::edge_points(12.0f, 64, line);
+        CHECK(on_diagonal == (std::string(layout) == "shared" ? n : 2 * n));
+    }
 }

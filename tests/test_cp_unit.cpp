@@ -691,6 +691,19 @@ constexpr PatternCounts constexpr_mesh_area_ok() {
     }
     return area2 == std::int64_t{fixed_one} * fixed_one ? c : PatternCounts{};
 }
+constexpr bool constexpr_provoking_unique() {
+    std::array<DomainPoint, 66> v{};
+    std::array<std::uint32_t, 3 * 64> idx{};
+    const PatternCounts c = tessellate(8.0f, 8.0f, 8.0f, PatternOptions{64, ColumnRule::minimal, true, true},
+                                       v.data(), idx.data());
+    if (!(c == PatternCounts{66, 64})) return false; // 45 unique + one copy per non-top point of columns 1..6
+    for (std::uint32_t a = 0; a < c.triangles; ++a) {
+        for (std::uint32_t b = a + 1; b < c.triangles; ++b) {
+            if (idx[3 * a] == idx[3 * b]) return false;
+        }
+    }
+    return true;
+}
 constexpr unsigned constexpr_gap_count() {
     std::array<std::uint16_t, 9> l{}, s{}, m{};
     const EdgeLine e = make_edge_line({4, lerp_one});
@@ -732,6 +745,7 @@ TEST_CASE("constant evaluation of every public function", "[cp][constexpr]") {
     STATIC_REQUIRE(pattern_counts(1, 1, 1) == PatternCounts{3, 1});
     STATIC_REQUIRE(max_pattern_counts(64) == PatternCounts{4098, 4096});
     STATIC_REQUIRE(pattern_type(LineState{0, 0}, LineState{9, 0}, LineState{1, 5}) == PatternType::fan);
+    STATIC_REQUIRE(constexpr_provoking_unique());
     STATIC_REQUIRE(constexpr_gap_count() == 15);
     STATIC_REQUIRE(constexpr_type1_count() == 9);
     STATIC_REQUIRE(constexpr_column_sum() == 36);

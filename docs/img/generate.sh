@@ -22,10 +22,20 @@ cp_8_8_8 cp 8,8,8 --layout shared
 d3d11_even_8_8_8 d3d11-even 8,8,8,8
 cp_16_8_4 cp 16,8,4 --layout shared
 cp_10.3_6_3 cp 10.3,6,3 --layout shared
+cp_10.3_rule_b cp 10.3,10.3,10.3 --layout shared --column-rule minimal
+cp_10.3_rule_a cp 10.3,10.3,10.3 --layout shared --column-rule staircase
+cp_32_12_20 cp 32,12,20 --layout shared
 cp_32_32_8 cp 32,32,8 --layout shared
+cp_40_1.2_2.5 cp 40,1.2,2.5 --layout shared
 cp_1.5_1.5_1.5 cp 1.5,1.5,1.5 --layout shared
 cp_1.5_20_1.2 cp 1.5,20,1.2 --layout shared
 cp_2.5_1.2_40 cp 2.5,1.2,40 --layout shared
+cp_64_1_1 cp 64,1,1 --layout shared
+cp_anim_1.3 cp 1.3,1.3,1.3 --layout shared
+cp_anim_2 cp 2,2,2 --layout shared
+cp_anim_2.6 cp 2.6,2.6,2.6 --layout shared
+cp_8_8_8_provoking cp 8,8,8 --provoking
 cp_5_5_5_provoking cp 5,5,5 --provoking
+cp_quad_12_5_12_30 cp 12,5,12,30 --domain quad --layout shared
 LIST
 echo "figures written to $here"

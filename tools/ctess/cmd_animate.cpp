@@ -64,9 +64,10 @@ show(0);
 } // namespace
 
 int run_animate(int argc, char** argv) {
-    const Args args(argc, argv, 2,
-                    {"mode", "domain", "from", "to", "frames", "out", "winding", "max", "layout"},
-                    {"provoking"});
+    const Args args(
+        argc, argv, 2,
+        {"mode", "domain", "from", "to", "frames", "out", "winding", "max", "layout", "column-rule"},
+        {"provoking"});
     PatternRequest r = pattern_request_from(args, "from");
     const std::vector<float> from = r.factors;
     const std::vector<float> to = parse_float_list(args.get("to"), "--to", from.size(), from.size());

@@ -22,13 +22,16 @@ PatternRequest pattern_request_from(const Args& args, const std::string& factors
     r.max_factor = max_factor_from(args);
     r.provoking_layout =
         choice(args.get_or("layout", "provoking"), {"provoking", "shared"}, "--layout") == "provoking";
-    if (is_d3d11_mode(r.mode) && (args.has("layout") || args.has("max")))
-        throw UsageError("--layout and --max apply to the cp mode only");
+    r.staircase_columns = choice(args.get_or("column-rule", "minimal"), {"minimal", "staircase"},
+                                 "--column-rule") == "staircase";
+    if (is_d3d11_mode(r.mode) && (args.has("layout") || args.has("max") || args.has("column-rule")))
+        throw UsageError("--layout, --max and --column-rule apply to the cp mode only");
     return r;
 }
 
 int run_pattern(int argc, char** argv) {
-    const Args args(argc, argv, 2, {"mode", "domain", "factors", "winding", "format", "out", "max", "layout"},
+    const Args args(argc, argv, 2,
+                    {"mode", "domain", "factors", "winding", "format", "out", "max", "layout", "column-rule"},
                     {"provoking"});
     const PatternRequest r = pattern_request_from(args, "factors");
     const std::string format = choice(args.get_or("format", "json"), {"json", "svg", "obj"}, "--format");

@@ -51,13 +51,13 @@ std::vector<EfficiencyRow> efficiency_rows(unsigned max, unsigned random_count, 
     for (float f : {2.0f, 4.0f, 5.0f, 8.0f, 10.3f, 16.0f, 24.0f, 32.0f, 48.0f, 64.0f})
         rows.push_back(measure("equal", {f, f, f}, max));
     const std::array<std::array<float, 3>, 8> two_high = {{{64, 64, 2},
-                                                            {64, 2, 64},
-                                                            {2, 64, 64},
-                                                            {32, 32, 8},
-                                                            {8, 32, 32},
-                                                            {48, 40, 3},
-                                                            {20, 24, 1.5f},
-                                                            {16, 16, 4}}};
+                                                           {64, 2, 64},
+                                                           {2, 64, 64},
+                                                           {32, 32, 8},
+                                                           {8, 32, 32},
+                                                           {48, 40, 3},
+                                                           {20, 24, 1.5f},
+                                                           {16, 16, 4}}};
     for (const auto& f : two_high) rows.push_back(measure("two high, one low", f, max));
     std::mt19937 rng(seed);
     for (unsigned i = 0; i < random_count; ++i) {
@@ -83,46 +83,55 @@ EfficiencySummary summarize(const std::vector<EfficiencyRow>& rows) {
     }
     if (s.random_count != 0) {
         const double n = double(s.random_count);
-        for (double* m : {&s.mean_ratio_max, &s.mean_ratio_avg, &s.mean_nondegenerate_ratio_max,
-                          &s.mean_nondegenerate_ratio_avg, &s.mean_rotated_ratio_max, &s.mean_rotated_ratio_avg})
+        for (double* m :
+             {&s.mean_ratio_max, &s.mean_ratio_avg, &s.mean_nondegenerate_ratio_max,
+              &s.mean_nondegenerate_ratio_avg, &s.mean_rotated_ratio_max, &s.mean_rotated_ratio_avg})
             *m /= n;
     }
     return s;
 }
 
-std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max) {
-    std::string out = fmt::format("CP (max factor {}) against D3D11 fractional_even on the same edges\n\n", max);
-    out += "| group | factors (e0, e1, e2) | CP triangles | non-degenerate | CP, smallest on e2 | D3D11 (inside max) "
+std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s,
+                                unsigned max) {
+    std::string out =
+        fmt::format("CP (max factor {}) against D3D11 fractional_even on the same edges\n\n", max);
+    out += "| group | factors (e0, e1, e2) | CP triangles | non-degenerate | CP, smallest on e2 | D3D11 "
+           "(inside max) "
            "| ratio | D3D11 (inside avg) | ratio |\n|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& r : rows)
-        out += fmt::format("| {} | {:.2f}, {:.2f}, {:.2f} | {} | {} | {} | {} | {:.3f} | {} | {:.3f} |\n", r.group,
-                           r.factors[0], r.factors[1], r.factors[2], r.cp_triangles, r.cp_nondegenerate,
-                           r.cp_rotated_triangles, r.d3d_max, double(r.cp_triangles) / r.d3d_max, r.d3d_avg,
-                           double(r.cp_triangles) / r.d3d_avg);
+        out += fmt::format("| {} | {:.2f}, {:.2f}, {:.2f} | {} | {} | {} | {} | {:.3f} | {} | {:.3f} |\n",
+                           r.group, r.factors[0], r.factors[1], r.factors[2], r.cp_triangles,
+                           r.cp_nondegenerate, r.cp_rotated_triangles, r.d3d_max,
+                           double(r.cp_triangles) / r.d3d_max, r.d3d_avg, double(r.cp_triangles) / r.d3d_avg);
     out += fmt::format("\nMean over the {} random triples in [2, 64]:\n", s.random_count);
     out += fmt::format("- CP / D3D11 (inside = max): {:.3f} (target <= 0.35); non-degenerate only {:.3f}; "
                        "smallest edge on e2 {:.3f}\n",
                        s.mean_ratio_max, s.mean_nondegenerate_ratio_max, s.mean_rotated_ratio_max);
-    out += fmt::format("- CP / D3D11 (inside = average): {:.3f} (target <= 0.65); non-degenerate only {:.3f}; "
-                       "smallest edge on e2 {:.3f}\n",
-                       s.mean_ratio_avg, s.mean_nondegenerate_ratio_avg, s.mean_rotated_ratio_avg);
+    out +=
+        fmt::format("- CP / D3D11 (inside = average): {:.3f} (target <= 0.65); non-degenerate only {:.3f}; "
+                    "smallest edge on e2 {:.3f}\n",
+                    s.mean_ratio_avg, s.mean_nondegenerate_ratio_avg, s.mean_rotated_ratio_avg);
     return out;
 }
 
-std::string efficiency_json(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max) {
+std::string efficiency_json(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s,
+                            unsigned max) {
     std::string out = fmt::format("{{\"max_tess_factor\": {}, \"rows\": [", max);
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const auto& r = rows[i];
-        out += fmt::format("{}\n  {{\"group\": \"{}\", \"factors\": [{}, {}, {}], \"cp_triangles\": {}, "
-                           "\"cp_nondegenerate\": {}, \"cp_rotated_triangles\": {}, \"d3d11_even_inside_max\": {}, "
-                           "\"d3d11_even_inside_avg\": {}}}",
-                           i ? "," : "", r.group, r.factors[0], r.factors[1], r.factors[2], r.cp_triangles,
-                           r.cp_nondegenerate, r.cp_rotated_triangles, r.d3d_max, r.d3d_avg);
+        out += fmt::format(
+            "{}\n  {{\"group\": \"{}\", \"factors\": [{}, {}, {}], \"cp_triangles\": {}, "
+            "\"cp_nondegenerate\": {}, \"cp_rotated_triangles\": {}, \"d3d11_even_inside_max\": {}, "
+            "\"d3d11_even_inside_avg\": {}}}",
+            i ? "," : "", r.group, r.factors[0], r.factors[1], r.factors[2], r.cp_triangles,
+            r.cp_nondegenerate, r.cp_rotated_triangles, r.d3d_max, r.d3d_avg);
     }
-    out += fmt::format("\n], \"random_count\": {}, \"mean_ratio_inside_max\": {:.6f}, \"mean_ratio_inside_avg\": {:.6f}, "
-                       "\"mean_nondegenerate_ratio_inside_max\": {:.6f}, \"mean_nondegenerate_ratio_inside_avg\": {:.6f}}}\n",
-                       s.random_count, s.mean_ratio_max, s.mean_ratio_avg, s.mean_nondegenerate_ratio_max,
-                       s.mean_nondegenerate_ratio_avg);
+    out += fmt::format(
+        "\n], \"random_count\": {}, \"mean_ratio_inside_max\": {:.6f}, \"mean_ratio_inside_avg\": {:.6f}, "
+        "\"mean_nondegenerate_ratio_inside_max\": {:.6f}, \"mean_nondegenerate_ratio_inside_avg\": "
+        "{:.6f}}}\n",
+        s.random_count, s.mean_ratio_max, s.mean_ratio_avg, s.mean_nondegenerate_ratio_max,
+        s.mean_nondegenerate_ratio_avg);
     return out;
 }
 

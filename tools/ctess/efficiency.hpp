@@ -1,5 +1,5 @@
-// The CP efficiency report: CP triangle counts against D3D11 fractional_even on the same edges (issue: "ratio to
-// D3D11 fractional_even, inside = max of the edges and inside = average").
+// The CP efficiency report: CP triangle counts against D3D11 fractional_even on the same edges (issue: "ratio
+// to D3D11 fractional_even, inside = max of the edges and inside = average").
 #pragma once
 #include <array>
 #include <cstdint>
@@ -20,7 +20,7 @@ struct EfficiencyRow {
 
 struct EfficiencySummary {
     std::size_t random_count = 0;
-    double mean_ratio_max = 0, mean_ratio_avg = 0;                 // CP triangles / D3D11, random rows
+    double mean_ratio_max = 0, mean_ratio_avg = 0; // CP triangles / D3D11, random rows
     double mean_nondegenerate_ratio_max = 0, mean_nondegenerate_ratio_avg = 0;
     double mean_rotated_ratio_max = 0, mean_rotated_ratio_avg = 0;
 };
@@ -28,7 +28,8 @@ struct EfficiencySummary {
 // Equal factors, two-high-one-low triples and `random_count` seeded random triples in [2, 64].
 std::vector<EfficiencyRow> efficiency_rows(unsigned max_factor, unsigned random_count, std::uint32_t seed);
 EfficiencySummary summarize(const std::vector<EfficiencyRow>& rows);
-std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max);
+std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s,
+                                unsigned max);
 std::string efficiency_json(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s, unsigned max);
 
 } // namespace ctess::cli

@@ -15,6 +15,7 @@ constexpr const char* kUsage = R"(usage: ctess <command> [options]
 commands:
   pattern  --mode M --factors a,b,c[,inside] [--domain tri|quad|iso] [--winding cw|ccw]
            [--format json|svg|obj] [--out FILE] [--max 64|256] [--layout provoking|shared] [--provoking]
+           [--column-rule minimal|staircase]
   line     --mode M --factor f [--max 64|256] [--format text|json]
   sweep    --mode M --from a --to b [--steps n] --svg out.svg [--max 64|256]
   animate  --mode M --from a,b,c --to d,e,f --frames n --out DIR [pattern options]

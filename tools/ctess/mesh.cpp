@@ -3,9 +3,11 @@
 #include "cli_args.hpp"
 
 #include <ctess/cp_pattern.hpp>
+#include <ctess/cp_quad.hpp>
 #include <ctess/d3d11_tessellator.hpp>
 
 #include <array>
+#include <map>
 
 #include <fmt/core.h>
 
@@ -74,22 +76,68 @@ Mesh tessellate_d3d11(const PatternRequest& r) {
     return mesh;
 }
 
+void append_cp_triangle(Mesh& mesh, const cp::PatternOptions& opt, const std::array<float, 3>& f,
+                        unsigned quad_half, bool quad) {
+    const cp::PatternCounts counts = cp::tessellate(f[0], f[1], f[2], opt, nullptr, nullptr);
+    const std::size_t v0 = mesh.vertices.size(), i0 = mesh.indices.size();
+    mesh.vertices.resize(v0 + counts.vertices);
+    mesh.indices.resize(i0 + std::size_t{counts.triangles} * 3);
+    cp::tessellate(f[0], f[1], f[2], opt, mesh.vertices.data() + v0, mesh.indices.data() + i0);
+    for (std::size_t i = i0; i < mesh.indices.size(); ++i) mesh.indices[i] += static_cast<std::uint32_t>(v0);
+    if (quad)
+        for (std::size_t i = v0; i < mesh.vertices.size(); ++i)
+            mesh.vertices[i] = cp::quad_point(quad_half, mesh.vertices[i]);
+}
+
+// One vertex per position on the shared diagonal u + v = 1 of a CP quad (the two halves compute it bit for
+// bit).
+void weld_diagonal(Mesh& mesh) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> first;
+    std::vector<std::uint32_t> remap(mesh.vertices.size());
+    std::vector<DomainPoint> kept;
+    for (std::uint32_t i = 0; i < mesh.vertices.size(); ++i) {
+        const DomainPoint p = mesh.vertices[i];
+        if (std::uint64_t{p.u} + p.v == mesh.fixed_one) {
+            const auto [it, inserted] =
+                first.emplace(std::make_pair(p.u, p.v), static_cast<std::uint32_t>(kept.size()));
+            if (inserted) kept.push_back(p);
+            remap[i] = it->second;
+        } else {
+            remap[i] = static_cast<std::uint32_t>(kept.size());
+            kept.push_back(p);
+        }
+    }
+    for (auto& i : mesh.indices) i = remap[i];
+    mesh.vertices = std::move(kept);
+}
+
 Mesh tessellate_cp(const PatternRequest& r) {
-    if (r.domain != "tri")
-        throw UsageError("--domain: the cp mode tessellates triangles only (use --domain tri)");
-    if (r.factors.size() != 3)
+    if (r.domain == "iso") throw UsageError("--domain: the cp mode tessellates tri and quad domains");
+    const bool quad = r.domain == "quad";
+    if (r.factors.size() != (quad ? 4u : 3u))
         throw UsageError(
-            fmt::format("--factors: cp takes three edge factors n0,n1,n2, got {} values", r.factors.size()));
+            quad ? fmt::format("--factors: a cp quad takes four edge factors (q0q1, q1q2, q2q3, q3q0), "
+                               "got {} values",
+                               r.factors.size())
+                 : fmt::format("--factors: cp takes three edge factors n0,n1,n2, got {} values",
+                               r.factors.size()));
     cp::PatternOptions opt;
     opt.max_factor = r.max_factor;
     opt.provoking_layout = r.provoking_layout;
+    opt.column_rule = r.staircase_columns ? cp::ColumnRule::staircase : cp::ColumnRule::minimal;
     Mesh mesh;
     mesh.fixed_one = cp::fixed_one;
     const auto& f = r.factors;
-    const cp::PatternCounts counts = cp::tessellate(f[0], f[1], f[2], opt, nullptr, nullptr);
-    mesh.vertices.resize(counts.vertices);
-    mesh.indices.resize(std::size_t{counts.triangles} * 3);
-    cp::tessellate(f[0], f[1], f[2], opt, mesh.vertices.data(), mesh.indices.data());
+    if (!quad) {
+        append_cp_triangle(mesh, opt, {f[0], f[1], f[2]}, 0, false);
+    } else {
+        const cp::QuadSplit split = cp::split_quad({f[0], f[1], f[2], f[3]});
+        for (unsigned half = 0; half < 2; ++half)
+            append_cp_triangle(mesh, opt, split.triangles[half].factors, half, true);
+        // The shared layout welds the diagonal; the provoking layout keeps each half's own copies, so every
+        // triangle keeps a first vertex of its own.
+        if (!r.provoking_layout) weld_diagonal(mesh);
+    }
     if (!r.ccw) // CP triangles are counter-clockwise; clockwise output keeps the provoking vertex first
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
             std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);

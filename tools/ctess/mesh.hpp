@@ -9,12 +9,13 @@
 namespace ctess::cli {
 
 struct PatternRequest {
-    std::string mode = "cp";      // cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
-    std::string domain = "tri";   // tri; quad and iso for D3D11 modes
-    std::vector<float> factors;   // cp: n0,n1,n2; D3D11 in the reference's order
-    bool ccw = false;             // output winding
-    unsigned max_factor = 64;     // CP only
-    bool provoking_layout = true; // CP only
+    std::string mode = "cp";        // cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
+    std::string domain = "tri";     // tri; quad and iso for D3D11 modes
+    std::vector<float> factors;     // cp: n0,n1,n2; D3D11 in the reference's order
+    bool ccw = false;               // output winding
+    unsigned max_factor = 64;       // CP only
+    bool provoking_layout = true;   // CP only
+    bool staircase_columns = false; // CP only: column rule (a) instead of the minimal rule (b)
 };
 
 struct Mesh {

@@ -153,6 +153,16 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
         svg.text(fr.x(0.5, 0.5) + 16, fr.y(0.5), right, edge_label);
         if (is_d3d11_mode(r.mode) && f.size() == 4)
             svg.text(fr.x(1, 0) - 150, fr.y(1) + 10, "inside = " + fv(3), edge_label);
+    } else if (!is_d3d11_mode(r.mode)) { // a CP quad: corners q0..q3, edge k runs q_k -> q_(k+1)
+        svg.text(fr.x(0, 0) - 30, fr.y(0) + 22, "q0", label);
+        svg.text(fr.x(1, 0) + 6, fr.y(0) + 22, "q1", label);
+        svg.text(fr.x(1, 1) + 6, fr.y(1) - 8, "q2", label);
+        svg.text(fr.x(0, 1) - 30, fr.y(1) - 8, "q3", label);
+        const auto& f = r.factors;
+        svg.text(fr.x(0.5, 0) - 30, fr.y(0) + 40, fmt::format("f0 = {:g}", f[0]), edge_label);
+        svg.text(fr.x(1, 0.5) + 8, fr.y(0.5), fmt::format("f1 = {:g}", f[1]), edge_label);
+        svg.text(fr.x(0.5, 1) - 30, fr.y(1) - 10, fmt::format("f2 = {:g}", f[2]), edge_label);
+        svg.text(fr.x(0, 0.5) - 66, fr.y(0.5), fmt::format("f3 = {:g}", f[3]), edge_label);
     } else {
         svg.text(fr.x(0, 0) - 46, fr.y(0) + 22, "(0,0)", label);
         svg.text(fr.x(1, 0) + 6, fr.y(0) + 22, "u = 1", label);

@@ -1,0 +1,19 @@
+// All compile-time CP tables of one maximum factor (docs/algorithm.md §2, shared/notes/table_encoding.md):
+// the token table, the interior column table (in chunks) and the gap table. This header only gathers the
+// builders and the chunk counts; the objects are emitted once, into .rodata, by runtime/src/cp_tables_*.cpp.
+#pragma once
+
+#include "cp_tables_columns.hpp"
+#include "cp_tables_gap.hpp"
+#include "cp_tables_layout.hpp"
+#include "cp_tables_tokens.hpp"
+
+namespace ctess::cp::tables {
+
+// Column-table translation units per maximum factor: one is fast at 64; at 256 four keep each unit's
+// constant evaluation short and its pool offsets below 2^16.
+constexpr unsigned column_chunks(unsigned max_factor) {
+    return max_factor > 64 ? 4u : 1u;
+}
+
+} // namespace ctess::cp::tables

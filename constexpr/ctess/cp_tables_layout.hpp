@@ -1,0 +1,53 @@
+// Record layouts of the compile-time CP tables (docs/algorithm.md §2, shared/notes/table_encoding.md) and the
+// constants that builders and the runtime must agree on.
+//
+// Tables are indexed by *shape* token: a T0 edge uses T1's points at t = 0 (cp_edge_line.hpp), so T1..T(n-1)
+// are the only shapes and shape index = token - 1 (T0 -> 0, like T1).
+#pragma once
+#include <cstdint>
+
+#include "cp_line.hpp"
+
+namespace ctess::cp::tables {
+
+constexpr unsigned shape_count(unsigned max_factor) {
+    return token_count(max_factor) - 1;
+}
+constexpr unsigned shape_index(unsigned token) {
+    return token == 0 ? 0u : token - 1;
+}
+
+// Token table: one record per shape token, then its interior points 1..n-1 (the endpoints are 0 and 1).
+struct TokenRecord {
+    std::uint16_t first_point = 0; // index of interior point 1 in the point table
+    std::uint16_t segments = 0;    // n
+    std::uint16_t half_step = 0;   // |start - final| of a sliding point on the 256 grid
+};
+
+// A packed interior point: bits 0-7 the final position (interior finals are 1..255), bits 8-9 the slide.
+inline constexpr unsigned point_final_mask = 0xFF;
+inline constexpr unsigned point_slide_shift = 8;
+inline constexpr std::uint16_t slide_none = 0;  // start == final
+inline constexpr std::uint16_t slide_down = 1;  // start = final + half_step: slides down to its final
+inline constexpr std::uint16_t slide_up = 2;    // start = final - half_step
+
+// Interior column table, per token pair (shape0, shape2): the column starts C_0..C_{h+1} (u16, C_0 = 0,
+// C_{h+1} = C_h + 1) where h is the first column with one point; every column from h on has one point.
+struct ColumnRecord {
+    std::uint16_t offset = 0; // C_0's index in the chunk's pool
+    std::uint16_t head = 0;   // h >= 1
+    float a = 0.0f;           // C_k ~ a k - b k^2 (least squares, k = 0..h): the lookups' first guess
+    float b = 0.0f;
+};
+
+// The lookups read C up to (h - 1) + window + 1; pools end with this many spare entries so the branch-free
+// window never reads past its array.
+inline constexpr unsigned search_window = 5;
+inline constexpr unsigned pool_padding = search_window + 2;
+
+// Gap table, per pair (shape0, shape1): one bit per zipper triangle, 1 = the lhs advances (the reversed
+// triangle), 0 = the rhs advances (a fan). Word = (lhs steps before the word) << 16 | 16 step bits, LSB
+// first, so the lhs count before any triangle is the prefix plus one popcount.
+inline constexpr unsigned gap_bits_per_word = 16;
+
+} // namespace ctess::cp::tables
