@@ -116,6 +116,35 @@ TEST_CASE("cp pops: e2 crosses every token boundary, all other token pairs, max 
     single_edge_exhaustive(2, 64, 0xe2);
 }
 
+TEST_CASE("cp pops: rule (a) and no T0 collapse, every boundary, all token pairs, max 64",
+          "[cp_pattern][pops]") {
+    // cp_resolution §7.2 also ran the staircase rule with and without the collapse: the options rotate with
+    // the token pair, the other edges get seeded random lerps.
+    const std::array<cp::PatternOptions, 3> variants = [] {
+        std::array<cp::PatternOptions, 3> v{default_options(64), default_options(64), default_options(64)};
+        v[0].column_rule = v[1].column_rule = cp::ColumnRule::staircase;
+        v[1].collapse_t0 = v[2].collapse_t0 = false;
+        return v;
+    }();
+    std::array<PopChecker, 3> checks{PopChecker(variants[0]), PopChecker(variants[1]),
+                                     PopChecker(variants[2])};
+    Rng rng(0xa0);
+    for (unsigned edge = 0; edge < 3; ++edge)
+        for (unsigned k = 0; k < 16; ++k)
+            for (unsigned a = 0; a < 17; ++a)
+                for (unsigned b = 0; b < 17; ++b) {
+                    Triple before, after;
+                    before[edge] = boundary_before(k);
+                    after[edge] = boundary_after(k);
+                    before[(edge + 1) % 3] = after[(edge + 1) % 3] = state(a, rng.lerp());
+                    before[(edge + 2) % 3] = after[(edge + 2) % 3] = state(b, rng.lerp());
+                    checks[(a + b + k) % 3].compare(before, after);
+                }
+    checks[0].require_clean("max 64 rule a collapse");
+    checks[1].require_clean("max 64 rule a no-collapse");
+    checks[2].require_clean("max 64 rule b no-collapse");
+}
+
 TEST_CASE("cp pops: e0 crosses every token boundary, sampled, max 256", "[cp_pattern][pops]") {
     single_edge_sampled(0, 256, 40, 0x2560);
 }
@@ -162,7 +191,7 @@ TEST_CASE("cp pops: several edges cross at once", "[cp_pattern][pops]") {
     // All three edges cross boundaries k0, k1, k2 together (every combination at max 64, equal factors moving
     // together among them), then two edges at once with the third at a random state.
     {
-        PopChecker check(cp::PatternOptions{});
+        PopChecker check(default_options(64));
         for (unsigned k0 = 0; k0 < 16; ++k0)
             for (unsigned k1 = 0; k1 < 16; ++k1)
                 for (unsigned k2 = 0; k2 < 16; ++k2)

@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -27,23 +26,19 @@ constexpr cp::PatternOptions flat_options(unsigned max_factor) {
 }
 
 // Constant-evaluation proofs of every public function.
-constexpr cp::LineState T(unsigned token, std::uint32_t t16 = 0) {
-    return {token, t16};
-}
-static_assert(cp::pattern_type(T(0), T(0), T(0)) == cp::PatternType::single);
-static_assert(cp::pattern_type(T(1, 5), T(16, 7), T(0)) == cp::PatternType::fan);
-static_assert(cp::pattern_type(T(2), T(0), T(1)) == cp::PatternType::parallelogram);
+static_assert(cp::pattern_type(state(0, 0), state(0, 0), state(0, 0)) == cp::PatternType::single);
+static_assert(cp::pattern_type(state(1, 5), state(16, 7), state(0, 0)) == cp::PatternType::fan);
+static_assert(cp::pattern_type(state(2, 0), state(0, 0), state(1, 0)) == cp::PatternType::parallelogram);
 static_assert(cp::pattern_counts(1.0f, 1.0f, 1.0f, flat_options(64)) == cp::PatternCounts{3, 1});
 static_assert(cp::pattern_counts(64.0f, 1.0f, 1.0f, flat_options(64)) == cp::PatternCounts{66, 64}); // §7.4
 static_assert(cp::pattern_counts(4.0f, 8.0f, 16.0f, flat_options(64)) == cp::PatternCounts{40, 50}); // §7.4
 constexpr bool max_counts_bound_the_largest_pattern() {
-    const cp::PatternCounts big = cp::pattern_counts(16.0f, 16.0f, 16.0f);
+    const cp::PatternCounts big = cp::pattern_counts(16.0f, 16.0f, 16.0f, default_options(64));
     const cp::PatternCounts cap = cp::max_pattern_counts(64);
     return big.vertices <= cap.vertices && big.triangles <= cap.triangles && cap.triangles >= 64 * 64;
 }
 static_assert(max_counts_bound_the_largest_pattern());
-// Filling in a constant expression: (4, 4, 4) is the uniform N = 4 triforce (§7.3), corner v1 = (1, 0)
-// present.
+// Filling in a constant expression: (4, 4, 4) is the N = 4 triforce (§7.3) and includes the corner v1.
 constexpr bool fills_triforce_4() {
     std::array<DomainPoint, 15> v{};
     std::array<std::uint32_t, 48> i{};
@@ -56,7 +51,8 @@ static_assert(fills_triforce_4());
 constexpr bool fills_from_states() {
     std::array<DomainPoint, 3> v{};
     std::array<std::uint32_t, 3> i{};
-    const cp::PatternCounts c = cp::tessellate(T(0), T(0), T(0), flat_options(64), v.data(), i.data());
+    const cp::PatternCounts c =
+        cp::tessellate(state(0, 0), state(0, 0), state(0, 0), flat_options(64), v.data(), i.data());
     return c == cp::PatternCounts{3, 1} && v[i[0]] == DomainPoint{0, 0} &&
            v[i[1]] == DomainPoint{cp::fixed_one, 0} && v[i[2]] == DomainPoint{0, cp::fixed_one};
 }
@@ -163,6 +159,10 @@ void validate_random(const cp::PatternOptions& options, std::size_t count, std::
 } // namespace
 
 TEST_CASE("cp pattern: mesh checks detect defects", "[cp_pattern][mesh_checks]") {
+    STATIC_REQUIRE(signed_area2({0, 0}, {4, 0}, {0, 2}) == 8);
+    STATIC_REQUIRE(signed_area2({0, 0}, {0, 2}, {4, 0}) == -8);
+    STATIC_REQUIRE(canonical_rotation({DomainPoint{5, 0}, {0, 9}, {0, 1}})[0] == DomainPoint{0, 1});
+    STATIC_REQUIRE(canonical_rotation({DomainPoint{5, 0}, {0, 9}, {0, 1}})[1] == DomainPoint{5, 0});
     // The reference triforce passes; each defect is caught by the check meant for it.
     const TriforceGrid g = triforce_grid(4, cp::fixed_one);
     const auto p = uniform_params(4, cp::fixed_one);
@@ -216,6 +216,42 @@ TEST_CASE("cp pattern: mesh checks detect defects", "[cp_pattern][mesh_checks]")
     REQUIRE(surface_triangles({g.vertices, flipped}) != surface_triangles(good));
 }
 
+TEST_CASE("cp pattern: max_pattern_counts bounds every pattern under every option", "[cp_pattern]") {
+    // Count-only calls over token triples (all at max 64, T18..T24 at max 256: the largest), all 8 options.
+    // Counts depend on tokens only (the index buffer is fixed inside a token triple, test_cp_pattern_pops).
+    for (unsigned max_factor : {64u, 256u}) {
+        const cp::PatternCounts cap = cp::max_pattern_counts(max_factor);
+        const unsigned tokens = cp::token_count(max_factor);
+        const unsigned first = max_factor == 64 ? 0 : 18;
+        cp::PatternCounts worst{};
+        FailureLog log;
+        for (int variant = 0; variant < 8; ++variant) {
+            cp::PatternOptions o;
+            o.max_factor = max_factor;
+            o.column_rule = (variant & 1) ? cp::ColumnRule::staircase : cp::ColumnRule::minimal;
+            o.collapse_t0 = (variant & 2) == 0;
+            o.provoking_layout = (variant & 4) == 0;
+            for (unsigned a = first; a < tokens; ++a)
+                for (unsigned b = first; b < tokens; ++b)
+                    for (unsigned c = first; c < tokens; ++c)
+                        for (std::uint32_t t : {cp::lerp_one}) {
+                            const cp::PatternCounts n =
+                                cp::tessellate(state(a, t), state(b, t), state(c, t), o, nullptr, nullptr);
+                            worst.vertices = std::max(worst.vertices, n.vertices);
+                            worst.triangles = std::max(worst.triangles, n.triangles);
+                            if (n.vertices > cap.vertices || n.triangles > cap.triangles)
+                                log.add(cat(describe(state(a, t), state(b, t), state(c, t)), " options ",
+                                            variant, ": ", n.vertices, " vertices, ", n.triangles,
+                                            " triangles"));
+                        }
+        }
+        std::printf("cp max_pattern_counts(%u) = {%u, %u}; largest seen {%u, %u}\n", max_factor, cap.vertices,
+                    cap.triangles, worst.vertices, worst.triangles);
+        INFO("max " << max_factor << ": " << log.summary());
+        REQUIRE(log.count == 0);
+    }
+}
+
 TEST_CASE("cp pattern: type selection from tokens alone (cp_resolution §2)", "[cp_pattern]") {
     for (unsigned a = 0; a < 25; ++a)
         for (unsigned b = 0; b < 25; ++b)
@@ -248,20 +284,50 @@ TEST_CASE("cp pattern: Type 0 is the single domain triangle", "[cp_pattern]") {
 
 TEST_CASE("cp pattern: every token triple at t in {0, 1/2, 1} tiles exactly, max 64, e0 T0..T9",
           "[cp_pattern]") {
-    validate_token_triples({}, zero_half_one, 0, 9);
+    validate_token_triples(default_options(64), zero_half_one, 0, 9);
 }
 TEST_CASE("cp pattern: every token triple at t in {0, 1/2, 1} tiles exactly, max 64, e0 T10..T13",
           "[cp_pattern]") {
-    validate_token_triples({}, zero_half_one, 10, 13);
+    validate_token_triples(default_options(64), zero_half_one, 10, 13);
 }
 TEST_CASE("cp pattern: every token triple at t in {0, 1/2, 1} tiles exactly, max 64, e0 T14..T16",
           "[cp_pattern]") {
-    validate_token_triples({}, zero_half_one, 14, 16);
+    validate_token_triples(default_options(64), zero_half_one, 14, 16);
+}
+
+TEST_CASE("cp pattern: Type 1 over a dense lerp grid of e0 and e2, every e1 token", "[cp_pattern]") {
+    // The sliding point P must stay strictly inside the hexagon for every (t0, t2) and every e1 state
+    // (cp_resolution §3.2): 37 lerps per edge plus T0, e1 in every token at t in {0, 1/2, 1}, both layouts.
+    std::vector<cp::LineState> small{{0, 0}};
+    for (std::uint32_t k = 0; k <= 36; ++k) small.push_back({1, (k * cp::lerp_one + 18) / 36});
+    const std::vector<cp::LineState> e1_states = token_states(64, zero_half_one);
+    for (bool provoking : {true, false}) {
+        cp::PatternOptions o = default_options(64);
+        o.provoking_layout = provoking;
+        CpRunner run(o);
+        FailureLog log;
+        std::size_t degenerate = 0, meshes = 0;
+        for (cp::LineState s0 : small)
+            for (cp::LineState s2 : small)
+                for (cp::LineState s1 : e1_states) {
+                    if (s0.token == 0 && s2.token == 0 && s1.token == 0) continue; // Type 0
+                    ++meshes;
+                    std::string f =
+                        cp::pattern_type(s0, s1, s2) == cp::PatternType::fan ? "" : "not Type 1; ";
+                    f += check_state_triple(run, s0, s1, s2, line_points(s0), line_points(s1),
+                                            line_points(s2), degenerate);
+                    if (!f.empty()) log.add(cat(describe(s0, s1, s2), ": ", f));
+                }
+        std::printf("cp validity Type 1 sweep (%s): %zu meshes, %zu zero-area, %zu failing\n",
+                    provoking ? "provoking" : "flat", meshes, degenerate, log.count);
+        INFO(log.summary());
+        REQUIRE(log.count == 0);
+    }
 }
 
 TEST_CASE("cp pattern: random factors and token states tile exactly, max 64", "[cp_pattern]") {
-    validate_random({}, 3000, 0x5eed64, true);
-    validate_random({}, 3000, 0x64, false);
+    validate_random(default_options(64), 3000, 0x5eed64, true);
+    validate_random(default_options(64), 3000, 0x64, false);
 }
 
 TEST_CASE("cp pattern: random factors and token states tile exactly, max 256", "[cp_pattern]") {

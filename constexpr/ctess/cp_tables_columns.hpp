@@ -21,64 +21,64 @@ struct ShapeTracks {
 };
 
 constexpr void fill_shape_tracks(unsigned max_factor, ShapeTracks& out) {
-    for (unsigned t = 1; t < token_count(max_factor); ++t) out.segments[t] = token_points(t, out.track[t].data()) - 1;
+    for (unsigned t = 1; t < token_count(max_factor); ++t)
+        out.segments[t] = token_points(t, out.track[t].data()) - 1;
 }
 
 // Rule (b) for column i >= 1 and row k, as cp::minimal_rows states it: row k reaches the clamp of column i
-// at all four extreme lerp pairs.
-struct RowReach {
-    int u_start = 0, u_final = 0;   // unused until set per column
-    int g0_start = 0, g0_final = 0; // 256 - e0's last interior point
-    int g2_start = 0, g2_final = 0; // 256 - e2's clamp point (last interior point, A2 for T1)
-
-    constexpr bool reaches(const PointTrack& row) const {
-        const int gss = g0_start > g2_start ? g0_start : g2_start;
-        const int gsf = g0_start > g2_final ? g0_start : g2_final;
-        const int gfs = g0_final > g2_start ? g0_final : g2_start;
-        const int gff = g0_final > g2_final ? g0_final : g2_final;
-        return row.start + gss + u_start >= 256 && row.final + gsf + u_start >= 256 &&
-               row.start + gfs + u_final >= 256 && row.final + gff + u_final >= 256;
-    }
+// at all four extreme lerp pairs (start/final of e0 and of e2). The gaps are precomputed per pair; the test
+// itself is written out in the loops, because the constant evaluators are slow at small calls.
+struct ReachGaps {
+    int ss = 0, sf = 0, fs = 0, ff = 0; // max(G0, G2) for (e0 at start/final, e2 at start/final)
 };
 
-constexpr RowReach row_reach(const ShapeTracks& st, unsigned s0, unsigned s2) {
+constexpr ReachGaps reach_gaps(const ShapeTracks& st, unsigned s0, unsigned s2) {
     const PointTrack end0 = st.track[s0][st.segments[s0] - 1];
     const PointTrack end2 = s2 >= 2 ? st.track[s2][st.segments[s2] - 1] : st.track[s2][1];
-    return {0, 0, 256 - end0.start, 256 - end0.final, 256 - end2.start, 256 - end2.final};
+    const int g0s = 256 - end0.start, g0f = 256 - end0.final;
+    const int g2s = 256 - end2.start, g2f = 256 - end2.final;
+    return {g0s > g2s ? g0s : g2s, g0s > g2f ? g0s : g2f, g0f > g2s ? g0f : g2s, g0f > g2f ? g0f : g2f};
 }
+
+#define CTESS_CP_ROW_REACHES(row, us, uf)                                                                    \
+    ((row).start + g.ss + (us) >= 256 && (row).final + g.sf + (us) >= 256 &&                                 \
+     (row).start + g.fs + (uf) >= 256 && (row).final + g.ff + (uf) >= 256)
 
 // h: the first column i >= 1 with one point (row 0 already reaches the clamp). R is non-increasing, so every
 // later column has one point too.
 constexpr unsigned column_head(const ShapeTracks& st, unsigned s0, unsigned s2) {
-    RowReach r = row_reach(st, s0, s2);
+    const ReachGaps g = reach_gaps(st, s0, s2);
     const unsigned n0 = st.segments[s0];
+    const PointTrack* t0 = st.track[s0].data();
+    const PointTrack row0 = st.track[s2][0];
     for (unsigned i = 1; i < n0; ++i) {
-        r.u_start = st.track[s0][i].start;
-        r.u_final = st.track[s0][i].final;
-        if (r.reaches(st.track[s2][0])) return i;
+        const int us = t0[i].start, uf = t0[i].final;
+        if (CTESS_CP_ROW_REACHES(row0, us, uf)) return i;
     }
     return n0 - 1;
 }
 
-// R_0..R_{h} of a pair (R_0 = n2), each column's rows found by walking down from the previous column's
-// count: rows only shrink with i, and reaching is monotone in k. Returns h. Checked against cp::column_counts
-// for every pair by the tests.
+// R_0..R_h of a pair (R_0 = n2), each column's rows found by walking down from the previous column's count:
+// rows only shrink with i, and reaching is monotone in k. Returns h. Checked against cp::column_counts for
+// every pair by the tests.
 constexpr unsigned head_column_counts(const ShapeTracks& st, unsigned s0, unsigned s2, std::uint16_t* rows) {
-    RowReach r = row_reach(st, s0, s2);
+    const ReachGaps g = reach_gaps(st, s0, s2);
     const unsigned n0 = st.segments[s0];
     const unsigned n2 = st.segments[s2];
+    const PointTrack* t0 = st.track[s0].data();
     const PointTrack* t2 = st.track[s2].data();
     rows[0] = static_cast<std::uint16_t>(n2);
     unsigned k = n2 - 1;
     for (unsigned i = 1; i < n0; ++i) {
-        r.u_start = st.track[s0][i].start;
-        r.u_final = st.track[s0][i].final;
-        while (k > 0 && r.reaches(t2[k - 1])) --k;
+        const int us = t0[i].start, uf = t0[i].final;
+        while (k > 0 && CTESS_CP_ROW_REACHES(t2[k - 1], us, uf)) --k;
         rows[i] = static_cast<std::uint16_t>(k + 1);
         if (k == 0) return i;
     }
     return n0 - 1;
 }
+
+#undef CTESS_CP_ROW_REACHES
 
 // Chunk plan: chunk c holds the pairs with shape2 in [first_shape2(c), first_shape2(c+1)), balanced by the
 // number of e2 points (the work and the pool grow with n2).
@@ -102,7 +102,8 @@ struct ColumnChunkPlan {
     static constexpr std::array<std::uint8_t, shapes> chunk_of = [] {
         std::array<std::uint8_t, shapes> of{};
         for (unsigned c = 0; c < Chunks; ++c)
-            for (unsigned s = first_shape2[c]; s < first_shape2[c + 1]; ++s) of[s - 1] = static_cast<std::uint8_t>(c);
+            for (unsigned s = first_shape2[c]; s < first_shape2[c + 1]; ++s)
+                of[s - 1] = static_cast<std::uint8_t>(c);
         return of;
     }();
 };

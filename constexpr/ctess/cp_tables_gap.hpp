@@ -3,6 +3,7 @@
 // zipper depends on the final positions only, so it is fixed within a token pair.
 #pragma once
 #include <array>
+#include <bit>
 #include <cstdint>
 
 #include "cp_line.hpp"
@@ -39,27 +40,34 @@ struct GapTable {
 // M(0..nL), exactly as cp::gap_merge computes it, in one pass: both searches move forward only, because the
 // lhs coordinates grow with a and the rhs coordinates with b. Returns nL. Checked against cp::gap_merge.
 constexpr unsigned zipper_merge(const ShapeTracks& st, unsigned s0, unsigned s1, std::uint16_t* merge) {
-    const unsigned nl = st.segments[s0] < 3 ? 3u : st.segments[s0];
+    const unsigned nl = st.segments[s0];
     const unsigned n1 = st.segments[s1];
-    auto lambda = [&](unsigned a) -> unsigned {
-        if (s0 < 2) return a == 0 ? 0u : 256u;
-        return st.track[s0][a + 1].final;
-    };
-    auto sigma = [&](unsigned b) -> unsigned {
-        if (s1 < 2) return b == 0 ? 0u : b == 1 ? 0u : b == 2 ? 128u : 256u;
-        return st.track[s1][b].final;
-    };
+    // lambda_a (lhs) and sigma_b (rhs), docs/algorithm.md §2.6; T1 sides have fixed coordinates.
+    std::uint16_t la[max_segments + 1]{};
+    std::uint16_t si[max_segments + 1]{};
+    const PointTrack* t0 = st.track[s0].data();
+    const PointTrack* t1 = st.track[s1].data();
+    if (s0 < 2) {
+        la[0] = 0, la[1] = 256, la[2] = 256;
+    } else {
+        for (unsigned a = 0; a < nl; ++a) la[a] = t0[a + 1].final;
+    }
+    if (s1 < 2) {
+        si[0] = 0, si[1] = 0, si[2] = 128, si[3] = 256;
+    } else {
+        for (unsigned b = 0; b <= n1; ++b) si[b] = t1[b].final;
+    }
     merge[0] = 0;
     merge[nl] = static_cast<std::uint16_t>(n1);
     unsigned ceil_b = 0;  // min{b : sigma_b >= lambda_a}
     unsigned floor_b = 0; // max{b : sigma_b < lambda_{a+1}}
     for (unsigned a = 0; a + 1 < nl; ++a) {
         unsigned m = 0;
-        if (lambda(a) + lambda(a + 1) <= 256) {
-            while (ceil_b < n1 && sigma(ceil_b) < lambda(a)) ++ceil_b;
+        if (la[a] + la[a + 1] <= 256) {
+            while (ceil_b < n1 && si[ceil_b] < la[a]) ++ceil_b;
             m = ceil_b;
         } else {
-            while (floor_b + 1 <= n1 && sigma(floor_b + 1) < lambda(a + 1)) ++floor_b;
+            while (floor_b + 1 <= n1 && si[floor_b + 1] < la[a + 1]) ++floor_b;
             m = floor_b;
         }
         merge[a + 1] = static_cast<std::uint16_t>(m);
@@ -84,23 +92,22 @@ constexpr GapTable<MaxFactor> build_gap_table() {
         for (unsigned s0 = 1; s0 <= Out::shapes; ++s0) {
             out.offset[(s1 - 1) * Out::shapes + s0 - 1] = static_cast<std::uint16_t>(next);
             const unsigned nl = zipper_merge(st, s0, s1, merge.data());
-            std::uint32_t bits = 0, lhs_before = 0, lhs_total = 0;
-            unsigned n = 0;
-            auto put = [&](bool lhs) {
-                bits |= static_cast<std::uint32_t>(lhs) << n;
-                lhs_total += lhs ? 1u : 0u;
-                if (++n == gap_bits_per_word) {
-                    out.word[next++] = (lhs_before << 16) | bits;
-                    lhs_before = lhs_total;
-                    bits = 0;
-                    n = 0;
-                }
-            };
-            for (unsigned a = 0; a < nl; ++a) {
-                for (unsigned b = merge[a]; b < merge[a + 1]; ++b) put(false);
-                if (a + 1 < nl) put(true);
+            // Step q is bit q % 16 of word q / 16; the lhs steps (1 bits) before step q are a, the rhs steps
+            // (0 bits) are q - a, so the bit positions follow from M directly.
+            const unsigned total = gap_triangle_count(s0, s1);
+            const unsigned words = (total + gap_bits_per_word - 1) / gap_bits_per_word;
+            std::uint32_t* w = out.word.data() + next;
+            for (unsigned a = 1; a < nl; ++a) {
+                const unsigned q = (a - 1) + merge[a]; // the reversed triangle that ends lhs point a - 1
+                w[q / gap_bits_per_word] |= 1u << (q % gap_bits_per_word);
             }
-            if (n != 0) out.word[next++] = (lhs_before << 16) | bits;
+            std::uint32_t lhs_before = 0;
+            for (unsigned k = 0; k < words; ++k) {
+                const std::uint32_t bits = w[k];
+                w[k] = bits | (lhs_before << 16);
+                lhs_before += static_cast<std::uint32_t>(std::popcount(bits));
+            }
+            next += words;
             if (s1 == 1) {
                 unsigned lhs_steps = 0;
                 for (unsigned a = 1; a < nl; ++a) lhs_steps += merge[a] <= 2 ? 1u : 0u;

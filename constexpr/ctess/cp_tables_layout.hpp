@@ -27,9 +27,9 @@ struct TokenRecord {
 // A packed interior point: bits 0-7 the final position (interior finals are 1..255), bits 8-9 the slide.
 inline constexpr unsigned point_final_mask = 0xFF;
 inline constexpr unsigned point_slide_shift = 8;
-inline constexpr std::uint16_t slide_none = 0;  // start == final
-inline constexpr std::uint16_t slide_down = 1;  // start = final + half_step: slides down to its final
-inline constexpr std::uint16_t slide_up = 2;    // start = final - half_step
+inline constexpr std::uint16_t slide_none = 0; // start == final
+inline constexpr std::uint16_t slide_down = 1; // start = final + half_step: slides down to its final
+inline constexpr std::uint16_t slide_up = 2;   // start = final - half_step
 
 // Interior column table, per token pair (shape0, shape2): the column starts C_0..C_{h+1} (u16, C_0 = 0,
 // C_{h+1} = C_h + 1) where h is the first column with one point; every column from h on has one point.
@@ -40,9 +40,12 @@ struct ColumnRecord {
     float b = 0.0f;
 };
 
-// The lookups read C up to (h - 1) + window + 1; pools end with this many spare entries so the branch-free
-// window never reads past its array.
-inline constexpr unsigned search_window = 5;
+// The lookups (runtime/include/ctess/runtime/cp_search.hpp): a first guess, one integer Newton step, then
+// this many compares. The tests measure the residual the Newton step leaves, for every element of every pair,
+// with the guess moved by -1, 0, +1: at most 1 (vertex, strip) and 2 (copy) at max 64; 7, 7 and 8 at max 256
+// under rule (b), more than the notes' 5, which they measured under rules (a) and (a+b).
+// The reads reach C up to (h - 1) + window + 1; pools end with spare entries so that they stay in the array.
+inline constexpr unsigned search_window = 8;
 inline constexpr unsigned pool_padding = search_window + 2;
 
 // Gap table, per pair (shape0, shape1): one bit per zipper triangle, 1 = the lhs advances (the reversed

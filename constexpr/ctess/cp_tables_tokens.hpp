@@ -65,7 +65,9 @@ constexpr TokenTable<MaxFactor> build_token_table() {
 constexpr PointTrack unpack_point(std::uint16_t packed, unsigned half_step) {
     const auto final = static_cast<std::uint16_t>(packed & point_final_mask);
     const unsigned slide = packed >> point_slide_shift;
-    const unsigned start = slide == slide_down ? final + half_step : slide == slide_up ? final - half_step : final;
+    const unsigned start = slide == slide_down ? final + half_step
+                           : slide == slide_up ? final - half_step
+                                               : final;
     return {static_cast<std::uint16_t>(start), final};
 }
 

@@ -32,17 +32,25 @@ struct Rng {
     }
 };
 
+// The default options at an explicit maximum (the tests never depend on the CTESS_MAX_TESS_FACTOR build
+// option).
+constexpr cp::PatternOptions default_options(unsigned max_factor) {
+    cp::PatternOptions o;
+    o.max_factor = max_factor;
+    return o;
+}
+
 // A valid line state of a token: T0 has no lerp (t16 = 0).
-inline cp::LineState state(unsigned token, std::uint32_t t16) {
+constexpr cp::LineState state(unsigned token, std::uint32_t t16) {
     return {token, token == 0 ? 0u : t16};
 }
 
 // Boundary k | k+1 of a line: the state at the end of token k and the one at the start of token k+1. They
 // have the same point positions. T0 ends at its only state (f = 1).
-inline cp::LineState boundary_before(unsigned k) {
+constexpr cp::LineState boundary_before(unsigned k) {
     return state(k, cp::lerp_one);
 }
-inline cp::LineState boundary_after(unsigned k) {
+constexpr cp::LineState boundary_after(unsigned k) {
     return {k + 1, 0};
 }
 
@@ -80,12 +88,15 @@ inline std::string describe(cp::LineState s0, cp::LineState s1, cp::LineState s2
     return cat("(", describe(s0), ", ", describe(s1), ", ", describe(s2), ")");
 }
 
-// Runs cp::tessellate into buffers allocated once for the largest pattern of the options' max_factor.
+// Runs cp::tessellate into buffers allocated once for the largest pattern of the options' max_factor. The
+// buffers have slack beyond max_pattern_counts, so that a count above the bound is reported instead of
+// overrunning.
 class CpRunner {
   public:
     explicit CpRunner(const cp::PatternOptions& options)
         : options_(options), capacity_(cp::max_pattern_counts(options.max_factor)),
-          vertices_(capacity_.vertices), indices_(3 * std::size_t{capacity_.triangles}) {}
+          vertices_(2 * std::size_t{capacity_.vertices} + slack),
+          indices_(3 * (2 * std::size_t{capacity_.triangles} + slack)) {}
 
     const cp::PatternOptions& options() const { return options_; }
     cp::PatternCounts capacity() const { return capacity_; }
@@ -105,6 +116,7 @@ class CpRunner {
     }
 
   private:
+    static constexpr std::size_t slack = 4096;
     MeshView view() const {
         if (!within_capacity()) return {};
         return {std::span<const DomainPoint>(vertices_.data(), counts_.vertices),

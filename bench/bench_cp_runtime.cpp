@@ -1,0 +1,95 @@
+// The table-driven CP runtime (ctess::rt::CpPatch): bulk emission, and random access to triangle(p) and
+// vertex(i), as independent calls (throughput) and as a dependent chain (latency: each call's index waits
+// for the previous call's result). The same code times the frozen pre-issue-4 lookup (bench/baseline/), so
+// that one run shows before and after.
+#include <ctess/config.hpp>
+#include <ctess/domain_point.hpp>
+#include <ctess/runtime/cp_patch.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "baseline/cp_patch_baseline.hpp"
+#include "bench_workloads.hpp"
+
+namespace {
+
+using ctess::DomainPoint;
+namespace bench = ctess::bench;
+
+const ctess::rt::CpTableSet& tables() {
+    return ctess::max_tess_factor == 256 ? ctess::rt::cp_tables_256 : ctess::rt::cp_tables_64;
+}
+
+// Construction plus emit, per iteration: what a renderer pays per patch.
+template <class Patch>
+void cp_emit(benchmark::State& state) {
+    const Patch probe(tables(), bench::factor(state, 0), bench::factor(state, 1), bench::factor(state, 2));
+    std::vector<DomainPoint> vertices(probe.vertex_count());
+    std::vector<std::uint32_t> indices(3 * std::size_t{probe.triangle_count()});
+    for (auto _ : state) {
+        float f0 = bench::factor(state, 0), f1 = bench::factor(state, 1), f2 = bench::factor(state, 2);
+        benchmark::DoNotOptimize(f0); // keeps the construction inside the loop
+        const Patch patch(tables(), f0, f1, f2);
+        benchmark::DoNotOptimize(patch.emit(vertices, indices));
+        benchmark::ClobberMemory();
+    }
+    bench::count_triangles(state, probe.triangle_count());
+}
+
+// Random triangle(p) on one patch: independent calls (chain = false) or a dependent chain.
+template <class Patch, bool chain>
+void cp_triangle(benchmark::State& state) {
+    const Patch patch(tables(), bench::factor(state, 0), bench::factor(state, 1), bench::factor(state, 2));
+    const std::vector<std::uint32_t> list = bench::random_indices(patch.triangle_count());
+    const std::size_t mask = list.size() - 1;
+    std::size_t k = 0;
+    std::uint32_t carry = 0;
+    for (auto _ : state) {
+        const auto t = patch.triangle(list[k++ & mask] + (chain ? carry : 0u));
+        // Chain: indices are < 2^31, so carry is 0, but the next call cannot start before this one ends.
+        carry = chain ? t[0] >> 31 : carry + (t[0] ^ t[1] ^ t[2]);
+    }
+    benchmark::DoNotOptimize(carry);
+    bench::count_calls(state);
+}
+
+template <class Patch, bool chain>
+void cp_vertex(benchmark::State& state) {
+    const Patch patch(tables(), bench::factor(state, 0), bench::factor(state, 1), bench::factor(state, 2));
+    const std::vector<std::uint32_t> list = bench::random_indices(patch.vertex_count());
+    const std::size_t mask = list.size() - 1;
+    std::size_t k = 0;
+    std::uint32_t carry = 0;
+    for (auto _ : state) {
+        const DomainPoint p = patch.vertex(list[k++ & mask] + (chain ? carry : 0u));
+        carry = chain ? p.u >> 31 : carry + (p.u ^ p.v); // u <= 2^24: see cp_triangle
+    }
+    benchmark::DoNotOptimize(carry);
+    bench::count_calls(state);
+}
+
+using Current = ctess::rt::CpPatch;
+using Baseline = ctess::rt::baseline::CpPatch;
+
+} // namespace
+
+BENCHMARK(cp_emit<Current>)->Name("cp_runtime/emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_triangle<Current, false>)->Name("cp_runtime/triangle")->Apply(bench::random_factor_sets);
+BENCHMARK(cp_triangle<Current, true>)->Name("cp_runtime/triangle_chain")->Apply(bench::random_factor_sets);
+BENCHMARK(cp_vertex<Current, false>)->Name("cp_runtime/vertex")->Apply(bench::random_factor_sets);
+BENCHMARK(cp_vertex<Current, true>)->Name("cp_runtime/vertex_chain")->Apply(bench::random_factor_sets);
+
+BENCHMARK(cp_emit<Baseline>)->Name("cp_runtime_baseline/emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_triangle<Baseline, false>)
+    ->Name("cp_runtime_baseline/triangle")
+    ->Apply(bench::random_factor_sets);
+BENCHMARK(cp_triangle<Baseline, true>)
+    ->Name("cp_runtime_baseline/triangle_chain")
+    ->Apply(bench::random_factor_sets);
+BENCHMARK(cp_vertex<Baseline, false>)->Name("cp_runtime_baseline/vertex")->Apply(bench::random_factor_sets);
+BENCHMARK(cp_vertex<Baseline, true>)
+    ->Name("cp_runtime_baseline/vertex_chain")
+    ->Apply(bench::random_factor_sets);

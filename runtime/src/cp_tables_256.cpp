@@ -1,0 +1,33 @@
+// The token and gap tables for max factor 256 and the table set that points at every chunk. The column
+// table is evaluated in cp_tables_256_columns_*.cpp, one chunk per translation unit.
+#include <ctess/runtime/cp_table_set.hpp>
+
+#include "cp_table_objects.hpp"
+
+namespace ctess::rt {
+namespace detail {
+constexpr tables::TokenTable<256> token_table_256 = tables::build_token_table<256>();
+constexpr tables::GapTable<256> gap_table_256 = tables::build_gap_table<256>();
+
+#define CTESS_CHUNK_256(k)                                                                                   \
+    {                                                                                                        \
+        column_chunk_256_##k.records.data(), column_chunk_256_##k.pool.data(),                               \
+            column_chunk_256_##k.first_shape2                                                                \
+    }
+constexpr CpColumnChunk column_chunks_256[] = {CTESS_CHUNK_256(0), CTESS_CHUNK_256(1), CTESS_CHUNK_256(2),
+                                               CTESS_CHUNK_256(3)};
+#undef CTESS_CHUNK_256
+constexpr auto chunk_of_shape2_256 = tables::ColumnChunkPlan<256, chunks_256>::chunk_of;
+} // namespace detail
+
+extern const CpTableSet cp_tables_256;
+constexpr CpTableSet cp_tables_256 = {256,
+                                      detail::tables::shape_count(256),
+                                      detail::token_table_256.records.data(),
+                                      detail::token_table_256.point.data(),
+                                      detail::chunk_of_shape2_256.data(),
+                                      detail::column_chunks_256,
+                                      detail::gap_table_256.offset.data(),
+                                      detail::gap_table_256.word.data(),
+                                      detail::gap_table_256.t1_last_fan.data()};
+} // namespace ctess::rt
