@@ -364,7 +364,7 @@ inline bool unique_first_index(const MeshView& m) {
 }
 
 // All checks that make a mesh a valid, watertight tessellation of the domain with the given edge parameters.
-// Returns an empty string when valid, else a short description of every failed check.
+// failures is empty when valid, else a short description of every failed check; area holds the area counts.
 struct ValidityReport {
     AreaStats area;
     std::string failures;
