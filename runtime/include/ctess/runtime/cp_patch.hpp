@@ -2,7 +2,9 @@
 // O(1), and a bulk emit into caller spans. Bit-identical to cp::tessellate with the default PatternOptions
 // (rule (b) columns, T0 collapse, provoking layout): same vertices, same triangles, same order.
 //
-// Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value.
+// Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value (about
+// 400 bytes). The constructor precomputes a per-patch bucket table of the strips (O(h + 128) work), so
+// that triangle(p) is a bucket load plus a few branchless steps: build a patch once, query it many times.
 //
 //   ctess::rt::CpPatch patch(ctess::rt::cp_tables_64, 5.0f, 9.0f, 3.0f);
 //   std::uint32_t n = patch.triangle_count();
@@ -134,6 +136,23 @@ class CpPatch {
         return column_point(i, static_cast<std::uint32_t>(t - y(static_cast<int>(i))));
     }
     DomainPoint type2_vertex(std::uint32_t v) const noexcept;
+    // Strip of raw triangle r < strips_: the largest i with PS_i = C_i + C_{i+1} - 2i - R_0 <= r. The bucket
+    // of r bounds it to [lo, hi]; a branchless search of the patch's fixed step count finishes.
+    std::uint32_t strip_of(std::uint32_t r) const noexcept {
+        const std::uint16_t* c = c_;
+        const std::uint32_t b = r >> bucket_shift_;
+        std::uint32_t lo = strip_bucket_[b];
+        const std::uint32_t hi = strip_bucket_[b + 1];
+        const std::uint32_t target = r + n2_; // PS_k <= r  <=>  C_k + C_{k+1} - 2k <= r + R_0
+        for (std::uint32_t half = bucket_half_; half != 0; half >>= 1) {
+            const std::uint32_t k = lo + half < hi ? lo + half : hi;
+            lo = c[k] + c[k + 1] - 2 * k <= target ? k : lo;
+        }
+        return lo;
+    }
+    void build_strip_buckets() noexcept;
+    CpTriangle strip_triangle(std::uint32_t r) const noexcept;
+    CpTriangle zipper_triangle(std::uint32_t q) const noexcept;
     CpTriangle type2_triangle(std::uint32_t r) const noexcept;
     void emit_type2_plain(DomainPoint* vertices, std::uint32_t* indices) const noexcept;
 
@@ -158,6 +177,14 @@ class CpPatch {
     const std::uint32_t* gap_ = nullptr;        // zipper words
     std::uint32_t head_ = 0, n0_ = 0, n1_ = 0, n2_ = 0;
     float a_ = 0.0f, b_ = 0.0f;
+    std::uint32_t copy_bias_ = 0; // copy of A_j in column i >= 1: C_i - i + j + copy_bias_
+    bool plain_ = false;          // Type 2 without a T0 edge: the fast paths, no skips
+    // Strip buckets: bucket b holds the raw strip triangles [b, b + 1) << bucket_shift_; strip_bucket_[b] is
+    // the strip of its first one (strip_bucket_[used] = h - 1), so that the strip of any r lies in
+    // [strip_bucket_[b], strip_bucket_[b + 1]]; bucket_half_ = 2^(steps - 1) covers the widest such range.
+    static constexpr unsigned strip_buckets = 128;
+    std::array<std::uint8_t, strip_buckets + 1> strip_bucket_{};
+    std::uint32_t bucket_shift_ = 0, bucket_half_ = 0;
     std::uint32_t clamp_ = 0; // K
     std::uint32_t e1_offset_ = 0, unique_ = 0, strips_ = 0, zipper_ = 0;
     std::uint32_t vertices_ = 0, triangles_ = 0;
@@ -238,6 +265,7 @@ inline CpPatch::CpPatch(const CpTableSet& tables, cp::LineState s0, cp::LineStat
     e1_offset_ = c0_ ? n2_ : c2_ ? n0_ : ch + n0_ - head_;
     unique_ = e1_offset_ + (c1_ ? 2u : n1_ + 1);
     copies_ = !c0_ && !c2_;
+    copy_bias_ = unique_ + 1u - c_[1];
     const std::uint32_t copies = copies_ ? ch - c_[1] - (head_ - 1) : 0u;
     // Triangles the collapse drops (docs/algorithm.md §2.9), as runs of the raw emission order.
     const std::uint32_t z = strips_;
@@ -274,6 +302,33 @@ inline CpPatch::CpPatch(const CpTableSet& tables, cp::LineState s0, cp::LineStat
     for (unsigned k = 0; k < tri_skips_; ++k) dropped += tri_skip_[k].length;
     vertices_ = unique_ + copies;
     triangles_ = strips_ + zipper_ - dropped;
+    plain_ = !c0_ && !c1_ && !c2_;
+    build_strip_buckets();
+}
+
+// Bucket b's strip is the number of strips k in [1, h-1] with PS_k <= b << shift: each strip adds one to
+// the buckets from ceil(PS_k / width) on. Counting, then a prefix sum: both loops have fixed trip counts,
+// so the constructor pays no misprediction per bucket.
+inline void CpPatch::build_strip_buckets() noexcept {
+    static_assert(cp::max_segments <= 256, "strip indices (< h < n0) must fit the u8 buckets");
+    if (strips_ == 0 || head_ == 0) return;
+    while (((strips_ - 1) >> bucket_shift_) >= strip_buckets) ++bucket_shift_;
+    const std::uint32_t used = ((strips_ - 1) >> bucket_shift_) + 1;
+    const std::uint32_t round_up = (1u << bucket_shift_) - 1u;
+    const std::uint16_t* c = c_;
+    std::uint8_t* count = strip_bucket_.data();
+    for (std::uint32_t k = 1; k < head_; ++k)
+        ++count[(c[k] + c[k + 1] - 2 * k - n2_ + round_up) >> bucket_shift_];
+    std::uint32_t i = 0, widest = 0;
+    for (std::uint32_t b = 0; b < used; ++b) {
+        const std::uint32_t step = count[b];
+        widest = step > widest ? step : widest; // the span of bucket b - 1 (count[0] = 0)
+        i += step;
+        count[b] = static_cast<std::uint8_t>(i);
+    }
+    count[used] = static_cast<std::uint8_t>(head_ - 1);
+    widest = head_ - 1 - i > widest ? head_ - 1 - i : widest;
+    bucket_half_ = widest == 0 ? 0u : std::bit_floor(widest);
 }
 
 inline DomainPoint CpPatch::slot_point(std::uint32_t s) const noexcept {
@@ -330,27 +385,55 @@ inline DomainPoint CpPatch::type2_vertex(std::uint32_t v) const noexcept {
     return column_point(i, v - c[i]);
 }
 
+// Strip triangle r of a patch without a T0 edge on e0 or e2 (so col_index(i, j) = C_i + j and every column
+// i >= 1 has copies): the strip search, then cell (even, odd) or fan chosen by selects.
+inline CpTriangle CpPatch::strip_triangle(std::uint32_t r) const noexcept {
+    const std::uint16_t* c = c_;
+    const std::uint32_t i = strip_of(r);
+    const std::uint32_t a = c[i], b = c[i + 1], nb = c[i + 2] - b;
+    const std::uint32_t o = r - (a + b - 2 * i - n2_);
+    // Selects as masks: the compilers turn ternaries into branches, and odd/even is a coin toss.
+    const std::uint32_t cell = 0u - static_cast<std::uint32_t>(o < 2 * (nb - 1)); // all ones in a cell
+    const std::uint32_t odd = cell & (0u - (o & 1u));                             // all ones: odd cell
+    const std::uint32_t j = ((o >> 1) & cell) | ((o - (nb - 1)) & ~cell);
+    // First vertex A_j of column i >= 1 already provoked a triangle of strip i - 1: use its copy.
+    const std::uint32_t first = a + ((copy_bias_ - i) & (0u - static_cast<std::uint32_t>(i >= 1)));
+    return {first + j + ((b - first) & odd), b + (((j + (odd & 1u)) & cell) | ((nb - 1) & ~cell)), a + j + 1};
+}
+
+// Zipper triangle q of a patch without a T0 edge: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point
+// b.
+inline CpTriangle CpPatch::zipper_triangle(std::uint32_t q) const noexcept {
+    const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
+    const std::uint32_t bit = q % cp::tables::gap_bits_per_word;
+    const std::uint32_t bits = w & 0xFFFFu;
+    const std::uint32_t a = (w >> 16) + static_cast<std::uint32_t>(std::popcount(bits & ((1u << bit) - 1u)));
+    const std::uint32_t b = q - a;
+    const bool lhs = (bits >> bit) & 1u;
+    auto top = [this](std::uint32_t col) { // C_col - 1 for col in [1, n0]; the tail has one row per column
+        const std::uint32_t k = col < head_ ? col : head_;
+        return c_[k] + (col - k) - 1u;
+    };
+    const std::uint32_t la = top(n0_ - a);
+    const std::uint32_t rb = e1_offset_ + b;
+    return {lhs ? top(n0_ - a - 1) : rb + 1, la, rb};
+}
+
 inline CpTriangle CpPatch::type2_triangle(std::uint32_t r) const noexcept {
+    if (!c0_ && !c1_ && !c2_) return r < strips_ ? strip_triangle(r) : zipper_triangle(r - strips_);
     if (r < strips_) {
+        if (copies_) return strip_triangle(r);
         const std::uint16_t* c = c_;
-        const int r0 = static_cast<int>(n2_);
-        auto ps = [c, r0](int k) { return static_cast<int>(c[k]) + static_cast<int>(c[k + 1]) - 2 * k - r0; };
-        const float alpha = 2.0f * a_ - 2.0f * b_ - 2.0f;
-        const float model = static_cast<float>(r) - (a_ - b_ - static_cast<float>(r0));
-        const std::uint32_t i =
-            search_from(ps, head_, static_cast<int>(r), search_first_guess(alpha, 2.0f * b_, model, head_));
-        const std::uint32_t o = r - static_cast<std::uint32_t>(ps(static_cast<int>(i)));
+        const std::uint32_t i = strip_of(r);
+        const std::uint32_t o = r - (c[i] + c[i + 1] - 2 * i - n2_);
         const std::uint32_t nb = static_cast<std::uint32_t>(c[i + 2] - c[i + 1]);
-        // First vertex A_j of column i >= 1 already provoked a triangle of strip i - 1: use its copy.
-        const std::uint32_t copy_base = unique_ + (c[i] - i) - (c[1] - 1u);
-        const bool copy = copies_ && i >= 1;
         if (o < 2 * (nb - 1)) {
             const std::uint32_t j = o >> 1;
             if (o & 1u) return {col_index(i + 1, j), col_index(i + 1, j + 1), col_index(i, j + 1)};
-            return {copy ? copy_base + j : col_index(i, j), col_index(i + 1, j), col_index(i, j + 1)};
+            return {col_index(i, j), col_index(i + 1, j), col_index(i, j + 1)};
         }
         const std::uint32_t j = o - (nb - 1);
-        return {copy ? copy_base + j : col_index(i, j), col_index(i + 1, nb - 1), col_index(i, j + 1)};
+        return {col_index(i, j), col_index(i + 1, nb - 1), col_index(i, j + 1)};
     }
     const std::uint32_t q = r - strips_;
     const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
@@ -373,6 +456,7 @@ inline DomainPoint CpPatch::vertex(std::uint32_t i) const noexcept {
 
 inline CpTriangle CpPatch::triangle(std::uint32_t p) const noexcept {
     if (p >= triangles_) return {0, 0, 0};
+    if (plain_) return p < strips_ ? strip_triangle(p) : zipper_triangle(p - strips_);
     const std::uint32_t r = skip_forward(tri_skip_.data(), tri_skips_, p);
     if (type_ == 2) return type2_triangle(r);
     if (type_ == 1) return type1_triangle(r);
