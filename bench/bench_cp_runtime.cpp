@@ -1,7 +1,6 @@
 // The table-driven CP runtime (ctess::rt::CpPatch): bulk emission, and random access to triangle(p) and
 // vertex(i), as independent calls (throughput) and as a dependent chain (latency: each call's index waits
-// for the previous call's result). The same code times the frozen pre-issue-4 lookup (bench/baseline/), so
-// that one run shows before and after.
+// for the previous call's result).
 #include <ctess/config.hpp>
 #include <ctess/domain_point.hpp>
 #include <ctess/runtime/cp_patch.hpp>
@@ -11,7 +10,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include "baseline/cp_patch_baseline.hpp"
 #include "bench_workloads.hpp"
 
 namespace {
@@ -72,7 +70,6 @@ void cp_vertex(benchmark::State& state) {
 }
 
 using Current = ctess::rt::CpPatch;
-using Baseline = ctess::rt::baseline::CpPatch;
 
 } // namespace
 
@@ -81,15 +78,3 @@ BENCHMARK(cp_triangle<Current, false>)->Name("cp_runtime/triangle")->Apply(bench
 BENCHMARK(cp_triangle<Current, true>)->Name("cp_runtime/triangle_chain")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_vertex<Current, false>)->Name("cp_runtime/vertex")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_vertex<Current, true>)->Name("cp_runtime/vertex_chain")->Apply(bench::random_factor_sets);
-
-BENCHMARK(cp_emit<Baseline>)->Name("cp_runtime_baseline/emit")->Apply(bench::bulk_factor_sets);
-BENCHMARK(cp_triangle<Baseline, false>)
-    ->Name("cp_runtime_baseline/triangle")
-    ->Apply(bench::random_factor_sets);
-BENCHMARK(cp_triangle<Baseline, true>)
-    ->Name("cp_runtime_baseline/triangle_chain")
-    ->Apply(bench::random_factor_sets);
-BENCHMARK(cp_vertex<Baseline, false>)->Name("cp_runtime_baseline/vertex")->Apply(bench::random_factor_sets);
-BENCHMARK(cp_vertex<Baseline, true>)
-    ->Name("cp_runtime_baseline/vertex_chain")
-    ->Apply(bench::random_factor_sets);
