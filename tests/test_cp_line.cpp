@@ -29,7 +29,7 @@ std::vector<std::uint32_t> points(cp::LineState s) {
     return p;
 }
 
-constexpr std::uint32_t midpoint_of_t1_at(float f) {
+constexpr std::uint32_t first_interior_point_at(float f) {
     std::uint32_t p[cp::max_segments + 1]{};
     cp::edge_points(f, 64, p);
     return p[1];
@@ -43,7 +43,7 @@ static_assert(cp::token_info(24).lo == 224 && cp::token_info(24).hi == 256 &&
               cp::token_info(24).segments == 256);
 static_assert(cp::line_state(10.3f, 256) == cp::LineState{6, 9830});
 static_assert(cp::line_state(2.0f, 64) == cp::LineState{1, 65536});
-static_assert(midpoint_of_t1_at(1.5f) == cp::fixed_one / 4);
+static_assert(first_interior_point_at(1.5f) == cp::fixed_one / 4);
 static_assert(cp::point_position({256, 128}, 65536) == cp::fixed_one / 2);
 
 TEST_CASE("token count and factor ranges follow spec 1.2", "[cp_line]") {

@@ -10,8 +10,6 @@
 
 namespace ctess::cli {
 
-PatternRequest pattern_request_from(const Args& args, const std::string& factors_key);
-
 namespace {
 
 std::string flip_book_html(unsigned frames, const std::string& title,

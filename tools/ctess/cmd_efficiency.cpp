@@ -6,8 +6,6 @@
 
 namespace ctess::cli {
 
-unsigned max_factor_from(const Args& args);
-
 int run_efficiency(int argc, char** argv) {
     const Args args(argc, argv, 2, {"max", "random", "seed", "format", "out"});
     const unsigned max = max_factor_from(args);

@@ -9,8 +9,6 @@
 
 namespace ctess::cli {
 
-unsigned max_factor_from(const Args& args);
-
 PatternRequest pattern_request_from(const Args& args, const std::string& factors_key) {
     PatternRequest r;
     r.mode = choice(args.get_or("mode", "cp"), pattern_modes(), "--mode");

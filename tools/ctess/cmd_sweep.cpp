@@ -14,9 +14,6 @@
 
 namespace ctess::cli {
 
-LineMode line_mode_from(const std::string& name);
-unsigned max_factor_from(const Args& args);
-
 namespace {
 
 constexpr double kW = 960, kH = 620, kLeft = 90, kRight = 30, kTop = 90, kBottom = 70;

@@ -1,7 +1,19 @@
 // The ctess subcommands. Each parses its own options and returns the process exit code.
 #pragma once
+#include <string>
+
+#include <ctess/line_modes.hpp>
+
+#include "cli_args.hpp"
+#include "mesh.hpp"
 
 namespace ctess::cli {
+
+// Option parsers shared by several commands (UsageError on bad values).
+LineMode line_mode_from(const std::string& name); // --mode for line/sweep
+unsigned max_factor_from(const Args& args);       // --max, default: the build's
+PatternRequest pattern_request_from(const Args& args,
+                                    const std::string& factors_key); // pattern/animate options
 
 int run_line(int argc, char** argv);
 int run_pattern(int argc, char** argv);

@@ -1,5 +1,7 @@
 #include "efficiency.hpp"
 
+#include "mesh.hpp"
+
 #include <ctess/cp_pattern.hpp>
 #include <ctess/d3d11_tessellator.hpp>
 
@@ -21,20 +23,16 @@ EfficiencyRow measure(const std::string& group, const std::array<float, 3>& f, u
     EfficiencyRow row;
     row.group = group;
     row.factors = f;
+    PatternRequest request;
+    request.factors = {f[0], f[1], f[2]};
+    request.ccw = true;
+    request.max_factor = max;
+    request.provoking_layout = false;
+    const Mesh mesh = tessellate(request);
+    row.cp_triangles = static_cast<std::uint32_t>(mesh.primitive_count());
+    row.cp_nondegenerate = static_cast<std::uint32_t>(mesh.primitive_count() - degenerate_triangles(mesh));
     cp::PatternOptions opt;
     opt.max_factor = max;
-    opt.provoking_layout = false;
-    const cp::PatternCounts counts = cp::pattern_counts(f[0], f[1], f[2], opt);
-    std::vector<DomainPoint> v(counts.vertices);
-    std::vector<std::uint32_t> idx(3 * std::size_t{counts.triangles});
-    cp::tessellate(f[0], f[1], f[2], opt, v.data(), idx.data());
-    row.cp_triangles = counts.triangles;
-    for (std::size_t t = 0; t < counts.triangles; ++t) {
-        const DomainPoint a = v[idx[3 * t]], b = v[idx[3 * t + 1]], c = v[idx[3 * t + 2]];
-        const std::int64_t area = (std::int64_t{b.u} - a.u) * (std::int64_t{c.v} - a.v) -
-                                  (std::int64_t{b.v} - a.v) * (std::int64_t{c.u} - a.u);
-        row.cp_nondegenerate += area != 0;
-    }
     // The orientation rule: rotate cyclically (winding kept) so that the smallest factor is on e2.
     std::array<float, 3> r = f;
     while (!(r[2] <= r[0] && r[2] <= r[1])) r = {r[1], r[2], r[0]};
