@@ -1,0 +1,697 @@
+// ctess CP mesh pipeline, GLSL 4.50 compute (Vulkan). Generated from shaders/ctess_cp.comp.glsl by gen/: the
+// generator fills in the double-brace placeholders (max factor, token counts, table section offsets) and the entry
+// point. The same steps as runtime/include/ctess/runtime/mesh_pipeline.hpp, operation for operation; the
+// CP lookups mirror runtime/include/ctess/runtime/cp_patch.hpp and cp_search.hpp (docs/shaders.md).
+#version 450
+
+const uint MAX_FACTOR = {{MAX_FACTOR}}u;
+const uint TOKENS = {{TOKENS}}u;
+const uint SHAPES = {{SHAPES}}u;
+const uint TOKEN_RANGE = {{TOKEN_RANGE}}u;
+const uint TOKEN_RECORD = {{TOKEN_RECORD}}u;
+const uint POINT = {{POINT}}u;
+const uint COLUMN_RECORD = {{COLUMN_RECORD}}u;
+const uint COLUMN_POOL = {{COLUMN_POOL}}u;
+const uint GAP_OFFSET = {{GAP_OFFSET}}u;
+const uint GAP_WORD = {{GAP_WORD}}u;
+const uint T1_LAST_FAN = {{T1_LAST_FAN}}u;
+const uint SEARCH_WINDOW = {{SEARCH_WINDOW}}u;
+const uint FIXED_ONE = 16777216u; // 2^24
+const uint LERP_ONE = 65536u;
+const uint PATCH_WORDS = 16u;
+const uint VERTEX_WORDS = 10u;
+const uint MESH_VERTEX_FLOATS = 8u;
+
+layout(local_size_x = {{LOCAL_SIZE}}) in;
+
+// params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
+// patch range [first, end) that the emit passes cover (hosts may emit in batches)
+layout(std430, set = 0, binding = 0) readonly buffer Params { uint params[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Tables { uint tables[]; };
+layout(std430, set = 0, binding = 2) readonly buffer MeshVertices { float mesh_vertices[]; };
+layout(std430, set = 0, binding = 3) readonly buffer MeshIndices { uint mesh_indices[]; };
+layout(std430, set = 0, binding = 4) buffer Patches { uint patches[]; };
+layout(std430, set = 0, binding = 5) writeonly buffer OutVertices { uint out_vertices[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer OutIndices { uint out_indices[]; };
+
+uint patch_count() { return params[0]; }
+
+// ---- 64-bit helpers (GLSL 4.50 core has no 64-bit integers): x = (lo, hi) ----
+uvec2 mul_wide(uint a, uint b) {
+    uint a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
+    uint p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint mid = (p00 >> 16) + (p01 & 0xFFFFu) + (p10 & 0xFFFFu);
+    return uvec2((p00 & 0xFFFFu) | (mid << 16), p11 + (p01 >> 16) + (p10 >> 16) + (mid >> 16));
+}
+uvec2 add_wide(uvec2 x, uint y) {
+    uint lo = x.x + y;
+    return uvec2(lo, x.y + (lo < y ? 1u : 0u));
+}
+
+// ---- tables ----
+uint table_u16(uint base, uint i) { return (tables[base + (i >> 1)] >> ((i & 1u) * 16u)) & 0xFFFFu; }
+
+// ---- CP line (constexpr/ctess/cp_line.hpp) ----
+uint round_half_even_shift(uint n, uint s) {
+    if (s == 0u) return n;
+    uint q = n >> s, r = n & ((1u << s) - 1u), half_ = 1u << (s - 1u);
+    return (r > half_ || (r == half_ && (q & 1u) != 0u)) ? q + 1u : q;
+}
+// Factor -> (token, t16); NaN and f <= 1 give T0, f >= max the last token at t = 1.
+uvec2 line_state(float f) {
+    uint bits = floatBitsToUint(f);
+    bool nan_ = (bits & 0x7FFFFFFFu) > 0x7F800000u;
+    uint f16;
+    if (nan_ || f <= 1.0) f16 = LERP_ONE;
+    else if (f >= float(MAX_FACTOR)) f16 = MAX_FACTOR << 16;
+    else f16 = uint(roundEven(f * 65536.0));
+    if (f16 <= LERP_ONE) return uvec2(0u, 0u);
+    for (uint t = 1u; t < TOKENS; ++t) {
+        uint range = tables[TOKEN_RANGE + t];
+        uint lo = range & 0xFFFFu, hi = range >> 16;
+        // hi - lo is a power of two: its lowest set bit is its log2
+        if (f16 <= (hi << 16)) return uvec2(t, round_half_even_shift(f16 - (lo << 16), uint(findLSB(hi - lo))));
+    }
+    return uvec2(TOKENS - 1u, LERP_ONE);
+}
+
+// ---- patch state (CpPatch) ----
+struct Edge {
+    uint points; // u16 index of interior point 1
+    uint t16;
+    uint segments;
+    uint half_step;
+};
+struct Patch {
+    Edge e[3];
+    uint type_;
+    bool c0, c1, c2, copies;
+    uint c;   // u16 index of C_0 in the column pool
+    uint gap; // word index of the pair's first zipper word
+    uint head, n0, n1, n2;
+    float a, b;
+    uint copy_bias, clamp_, e1_offset, unique_, strips, zipper, vertices, triangles;
+    uvec2 tri_skip[8];
+    uint tri_skips;
+    uvec2 slot_skip[4];
+    uint slot_skips;
+};
+
+uint col(Patch p, int x) { return table_u16(COLUMN_POOL, p.c + uint(x)); }
+
+uint edge_point(Edge e, uint i) {
+    if (i == 0u) return 0u;
+    if (i >= e.segments) return FIXED_ONE;
+    uint packed = table_u16(POINT, e.points + i - 1u);
+    int fin = int(packed & 0xFFu);
+    uint slide = packed >> 8;
+    int half_ = int(e.half_step);
+    int start = slide == 1u ? fin + half_ : slide == 2u ? fin - half_ : fin;
+    return uint(start * 65536 + (fin - start) * int(e.t16));
+}
+
+void add_triangle_skip(inout Patch p, uint begin, uint end) {
+    if (end > begin) {
+        p.tri_skip[p.tri_skips] = uvec2(begin, end - begin);
+        p.tri_skips += 1u;
+    }
+}
+void add_slot_skip(inout Patch p, uint begin, uint end) {
+    p.slot_skip[p.slot_skips] = uvec2(begin, end - begin);
+    p.slot_skips += 1u;
+}
+
+Patch patch_setup(uvec2 s0, uvec2 s1, uvec2 s2) {
+    Patch p;
+    uvec2 s[3] = uvec2[3](s0, s1, s2);
+    for (uint k = 0u; k < 3u; ++k) {
+        uint shape = s[k].x == 0u ? 1u : s[k].x;
+        uint rec = tables[TOKEN_RECORD + 2u * (shape - 1u)];
+        p.e[k].points = rec & 0xFFFFu;
+        p.e[k].segments = rec >> 16;
+        p.e[k].half_step = tables[TOKEN_RECORD + 2u * (shape - 1u) + 1u];
+        p.e[k].t16 = s[k].x == 0u ? 0u : s[k].y;
+    }
+    p.c0 = s0.x == 0u;
+    p.c1 = s1.x == 0u;
+    p.c2 = s2.x == 0u;
+    p.n0 = p.e[0].segments;
+    p.n1 = p.e[1].segments;
+    p.n2 = p.e[2].segments;
+    p.tri_skips = 0u;
+    p.slot_skips = 0u;
+    p.copies = false;
+    p.c = 0u; p.gap = 0u; p.head = 0u; p.a = 0.0; p.b = 0.0;
+    p.copy_bias = 0u; p.clamp_ = 0u; p.e1_offset = 0u; p.unique_ = 0u; p.strips = 0u; p.zipper = 0u;
+    for (uint k = 0u; k < 8u; ++k) p.tri_skip[k] = uvec2(0u);
+    for (uint k = 0u; k < 4u; ++k) p.slot_skip[k] = uvec2(0u);
+    if (p.c0 && p.c1 && p.c2) {
+        p.type_ = 0u;
+        p.vertices = 3u;
+        p.triangles = 1u;
+        return p;
+    }
+    if (s0.x <= 1u && s2.x <= 1u) { // Type 1: n1 + 7 slots, n1 + 6 triangles before the collapse
+        p.type_ = 1u;
+        uint dropped_slots = 0u;
+        if (p.c0) { add_slot_skip(p, 1u, 3u); dropped_slots += 2u; }
+        if (p.c1) { add_slot_skip(p, 4u, 6u); dropped_slots += 2u; }
+        if (p.c2) {
+            uint end = p.c0 ? 7u + p.n1 : 6u + p.n1;
+            add_slot_skip(p, 4u + p.n1, end);
+            dropped_slots += end - (4u + p.n1);
+        }
+        if (p.c0 || p.c2) add_triangle_skip(p, 0u, 1u);
+        if (p.c0 || p.c1) add_triangle_skip(p, 1u, 2u);
+        if (p.c1 || p.c2) add_triangle_skip(p, 2u, 3u);
+        if (p.c0 && p.c2) add_triangle_skip(p, 3u, 4u);
+        if (p.c0 && p.c1) add_triangle_skip(p, 4u, 5u);
+        if (p.c1 && p.c2) add_triangle_skip(p, p.n1 + 3u, p.n1 + 4u);
+        if (p.c0 && p.c2) add_triangle_skip(p, p.n1 + 4u, p.n1 + 5u);
+        if (p.c0 && p.c2) add_triangle_skip(p, p.n1 + 5u, p.n1 + 6u);
+        uint dropped = 0u;
+        for (uint k = 0u; k < p.tri_skips; ++k) dropped += p.tri_skip[k].y;
+        p.vertices = p.n1 + 7u - dropped_slots;
+        p.triangles = p.n1 + 6u - dropped;
+        return p;
+    }
+    p.type_ = 2u;
+    uint sh0 = s0.x == 0u ? 1u : s0.x;
+    uint sh1 = s1.x == 0u ? 1u : s1.x;
+    uint sh2 = s2.x == 0u ? 1u : s2.x;
+    uint rec = COLUMN_RECORD + 4u * ((sh2 - 1u) * SHAPES + sh0 - 1u);
+    p.c = tables[rec];
+    p.head = tables[rec + 1u];
+    p.a = uintBitsToFloat(tables[rec + 2u]);
+    p.b = uintBitsToFloat(tables[rec + 3u]);
+    p.gap = GAP_WORD + table_u16(GAP_OFFSET, (sh1 - 1u) * SHAPES + sh0 - 1u);
+    uint last0 = edge_point(p.e[0], p.n0 - 1u);
+    uint v2 = edge_point(p.e[2], sh2 >= 2u ? p.n2 - 1u : 1u);
+    p.clamp_ = min(last0, v2);
+    uint ch = col(p, int(p.head));
+    p.strips = 2u * ch + 1u - 2u * p.head - p.n2;
+    p.zipper = p.n0 + p.n1 - 1u;
+    p.e1_offset = p.c0 ? p.n2 : p.c2 ? p.n0 : ch + p.n0 - p.head;
+    p.unique_ = p.e1_offset + (p.c1 ? 2u : p.n1 + 1u);
+    p.copies = !p.c0 && !p.c2;
+    uint c1v = col(p, 1);
+    p.copy_bias = p.unique_ + 1u - c1v;
+    uint copies = p.copies ? ch - c1v - (p.head - 1u) : 0u;
+    uint z = p.strips;
+    uint t1_fan = p.c1 ? tables[T1_LAST_FAN + sh0 - 1u] : 0u;
+    if (p.c0) {
+        add_triangle_skip(p, 0u, 2u * p.n2 - 2u);
+        if (p.c1) {
+            add_triangle_skip(p, z, z + 2u);
+            add_triangle_skip(p, z + 3u, z + 5u);
+        } else {
+            add_triangle_skip(p, z, z + 1u);
+            add_triangle_skip(p, z + p.n1, z + p.n1 + 1u);
+        }
+    } else if (p.c2) {
+        uint r1 = col(p, 2) - c1v;
+        add_triangle_skip(p, 0u, r1);
+        add_triangle_skip(p, r1 + 1u, p.strips);
+        if (p.c1) {
+            add_triangle_skip(p, z, z + 1u);
+            if (t1_fan == p.zipper - 1u) {
+                add_triangle_skip(p, z + p.n0, z + p.n0 + 2u);
+            } else {
+                add_triangle_skip(p, z + t1_fan, z + t1_fan + 1u);
+                add_triangle_skip(p, z + p.zipper - 1u, z + p.zipper);
+            }
+        } else {
+            add_triangle_skip(p, z + p.zipper - 1u, z + p.zipper);
+        }
+    } else if (p.c1) {
+        add_triangle_skip(p, z, z + 1u);
+        add_triangle_skip(p, z + t1_fan, z + t1_fan + 1u);
+    }
+    uint dropped = 0u;
+    for (uint k = 0u; k < p.tri_skips; ++k) dropped += p.tri_skip[k].y;
+    p.vertices = p.unique_ + copies;
+    p.triangles = p.strips + p.zipper - dropped;
+    return p;
+}
+
+// ---- reverse lookups (cp_search.hpp): y = C_x (vertex), C_x - x (copy), PS_x (strip) ----
+const int SEARCH_VERTEX = 0, SEARCH_COPY = 1, SEARCH_STRIP = 2;
+int search_y(Patch p, int kind, int x) {
+    if (kind == SEARCH_VERTEX) return int(col(p, x));
+    if (kind == SEARCH_COPY) return int(col(p, x)) - x;
+    return int(col(p, x)) + int(col(p, x + 1)) - 2 * x - int(p.n2);
+}
+int search_first_guess(float alpha, float beta, float e, uint h) {
+    float d = alpha * alpha - 4.0 * beta * e;
+    d = d > 0.0 ? d : 0.0;
+    float x = 2.0 * e / (alpha + sqrt(d));
+    float last = float(h - 1u);
+    x = x > 0.0 ? x : 0.0;
+    x = x < last ? x : last;
+    return int(x);
+}
+uint search_from(Patch p, int kind, uint h, int e, int x0) {
+    int last = int(h) - 1;
+    int x = x0 < 0 ? 0 : x0 > last ? last : x0;
+    int y0 = search_y(p, kind, x);
+    int ahead = search_y(p, kind, x + 1) - y0;
+    int behind = y0 - search_y(p, kind, x > 0 ? x - 1 : 0);
+    bool forward = e >= y0;
+    int step_ = forward ? ahead : behind;
+    int den = step_ > 0 ? step_ : 1;
+    int num = forward ? e - y0 : (y0 - e) + den - 1;
+    int q = num / den;
+    int next_ = forward ? x + q : x - q;
+    x = next_ < 0 ? 0 : next_ > last ? last : next_;
+    uint i = uint(x);
+    for (uint k = 1u; k <= SEARCH_WINDOW; ++k) {
+        int at = x + int(k);
+        if (at <= last && search_y(p, kind, at) <= e) i += 1u;
+    }
+    return i;
+}
+
+// ---- vertices ----
+uvec2 e1_point(uint s) { return uvec2(FIXED_ONE - s, s); }
+uvec2 column_point(Patch p, uint i, uint j) {
+    uint v2 = edge_point(p.e[2], j);
+    if (i == 0u) return uvec2(0u, v2);
+    uint u = edge_point(p.e[0], i);
+    uint top = p.clamp_ > u ? p.clamp_ - u : 0u;
+    return uvec2(u, min(v2, top));
+}
+uvec2 type1_center(uint t0, uint t2) {
+    uint a = min(t0, LERP_ONE), c = min(t2, LERP_ONE);
+    // x = (a << 32) + (1 - a) c (1 - c);  y = (1 - a)(2^16 (a + c) - a c), all in units of 2^-32
+    uvec2 x = mul_wide(LERP_ONE - a, c * (LERP_ONE - c));
+    x.y += a;
+    uvec2 y;
+    if (a == LERP_ONE || c == LERP_ONE) y = uvec2(0u, LERP_ONE - a); // the inner factor is 2^32
+    else y = mul_wide(LERP_ONE - a, 0u - (LERP_ONE - a) * (LERP_ONE - c));
+    x = add_wide(x, 1u << 24);
+    y = add_wide(y, 1u << 24);
+    return uvec2((x.y << 7) | (x.x >> 25), (y.y << 7) | (y.x >> 25));
+}
+uvec2 slot_point(Patch p, uint s) {
+    if (s == 0u) return uvec2(0u);
+    if (s <= 2u) return uvec2(edge_point(p.e[0], s), 0u);
+    if (s <= 3u + p.n1) return e1_point(edge_point(p.e[1], s - 3u));
+    if (s == 4u + p.n1) return uvec2(0u, edge_point(p.e[2], 2u));
+    if (s == 5u + p.n1) return uvec2(0u, edge_point(p.e[2], 1u));
+    return type1_center(p.e[0].t16, p.e[2].t16);
+}
+uint col_start(Patch p, uint i) { return i <= p.head ? col(p, int(i)) : col(p, int(p.head)) + (i - p.head); }
+uvec2 copy_point(Patch p, uint k) {
+    int t = int(k + col(p, 1)) - 1;
+    uint i = search_from(p, SEARCH_COPY, p.head, t, search_first_guess(p.a - 1.0, p.b, float(t), p.head));
+    return column_point(p, i, uint(t - search_y(p, SEARCH_COPY, int(i))));
+}
+uvec2 type2_vertex(Patch p, uint v) {
+    if (v >= p.unique_) return copy_point(p, v - p.unique_);
+    if (v >= p.e1_offset) {
+        uint b = v - p.e1_offset;
+        return e1_point(edge_point(p.e[1], p.c1 ? b * p.n1 : b));
+    }
+    if (p.c0) return column_point(p, 0u, v);
+    if (p.c2) return column_point(p, v, 0u);
+    uint ch = col(p, int(p.head));
+    if (v >= ch) return column_point(p, p.head + (v - ch), 0u);
+    uint i = search_from(p, SEARCH_VERTEX, p.head, int(v), search_first_guess(p.a, p.b, float(v), p.head));
+    return column_point(p, i, v - col(p, int(i)));
+}
+uvec2 patch_vertex(Patch p, uint i) {
+    if (i >= p.vertices) return uvec2(0u);
+    if (p.type_ == 2u) return type2_vertex(p, i);
+    if (p.type_ == 1u) {
+        for (uint k = 0u; k < p.slot_skips; ++k) i += i >= p.slot_skip[k].x ? p.slot_skip[k].y : 0u;
+        return slot_point(p, i);
+    }
+    return i == 0u ? uvec2(0u) : i == 1u ? uvec2(FIXED_ONE, 0u) : uvec2(0u, FIXED_ONE);
+}
+
+// ---- triangles ----
+uint slot_index(Patch p, uint s) {
+    if (p.c1 && s == 4u) s = 3u;
+    if (p.c1 && s == 5u) s = 3u + p.n1;
+    if (p.c2 && s == 5u + p.n1) s = 0u;
+    if (p.c2 && s == 4u + p.n1) s = 3u + p.n1;
+    if (p.c0 && s == 1u) s = 0u;
+    if (p.c0 && s == 2u) s = 3u;
+    if (p.c0 && p.c2 && s == 6u + p.n1) s = 0u;
+    uint below = 0u;
+    for (uint k = 0u; k < p.slot_skips; ++k) below += s > p.slot_skip[k].x ? p.slot_skip[k].y : 0u;
+    return s - below;
+}
+uint hexagon_slot(Patch p, uint k) {
+    uint m = p.n1 + 3u;
+    k %= m;
+    if (k == 0u) return 1u;
+    if (k == 1u) return 2u;
+    if (k < m - 2u) return 3u + (k - 1u);
+    return k == m - 2u ? 4u + p.n1 : 5u + p.n1;
+}
+uvec3 type1_triangle(Patch p, uint r) {
+    uint a, b, c;
+    if (r == 0u) { a = 0u; b = 1u; c = 5u + p.n1; }
+    else if (r == 1u) { a = 3u; b = 4u; c = 2u; }
+    else if (r == 2u) { a = 3u + p.n1; b = 4u + p.n1; c = 2u + p.n1; }
+    else { a = hexagon_slot(p, r - 2u); b = 6u + p.n1; c = hexagon_slot(p, r - 3u); }
+    return uvec3(slot_index(p, a), slot_index(p, b), slot_index(p, c));
+}
+uint e1_index(Patch p, uint b) { return p.c1 ? p.e1_offset + (b <= 1u ? 0u : 1u) : p.e1_offset + b; }
+uint col_index(Patch p, uint i, uint j) {
+    if (p.c2) {
+        if (i == 0u) return j == 2u ? e1_index(p, p.n1) : 0u;
+        return i;
+    }
+    if (p.c0) {
+        if (i == 2u) return e1_index(p, 0u);
+        if (i == 1u) return j;
+    }
+    return col_start(p, i) + j;
+}
+uint lhs_index(Patch p, uint a) {
+    uint i = p.n0 - 1u - a;
+    return col_index(p, i, col_start(p, i + 1u) - col_start(p, i) - 1u);
+}
+uvec3 type2_triangle(Patch p, uint r) {
+    if (r < p.strips) {
+        float alpha = 2.0 * p.a - 2.0 * p.b - 2.0;
+        float model = float(r) - (p.a - p.b - float(p.n2));
+        uint i = search_from(p, SEARCH_STRIP, p.head, int(r), search_first_guess(alpha, 2.0 * p.b, model, p.head));
+        uint o = r - uint(search_y(p, SEARCH_STRIP, int(i)));
+        uint nb = col(p, int(i) + 2) - col(p, int(i) + 1);
+        if (p.copies && i >= 1u) {
+            // First vertex A_j of column i >= 1 already provoked a triangle of strip i - 1: use its copy.
+            uint a = col(p, int(i)), b = col(p, int(i) + 1);
+            uint first = a + p.copy_bias - i;
+            if (o < 2u * (nb - 1u)) {
+                uint j = o >> 1;
+                if ((o & 1u) != 0u) return uvec3(b + j, b + j + 1u, a + j + 1u);
+                return uvec3(first + j, b + j, a + j + 1u);
+            }
+            uint j = o - (nb - 1u);
+            return uvec3(first + j, b + nb - 1u, a + j + 1u);
+        }
+        if (o < 2u * (nb - 1u)) {
+            uint j = o >> 1;
+            if ((o & 1u) != 0u) return uvec3(col_index(p, i + 1u, j), col_index(p, i + 1u, j + 1u), col_index(p, i, j + 1u));
+            return uvec3(col_index(p, i, j), col_index(p, i + 1u, j), col_index(p, i, j + 1u));
+        }
+        uint j = o - (nb - 1u);
+        return uvec3(col_index(p, i, j), col_index(p, i + 1u, nb - 1u), col_index(p, i, j + 1u));
+    }
+    uint q = r - p.strips;
+    uint w = tables[p.gap + q / 16u];
+    uint bit = q % 16u;
+    uint bits = w & 0xFFFFu;
+    uint a = (w >> 16) + uint(bitCount(bits & ((1u << bit) - 1u)));
+    uint b = q - a;
+    if (((bits >> bit) & 1u) != 0u) return uvec3(lhs_index(p, a + 1u), lhs_index(p, a), e1_index(p, b));
+    return uvec3(e1_index(p, b + 1u), lhs_index(p, a), e1_index(p, b));
+}
+uvec3 patch_triangle(Patch p, uint t) {
+    if (t >= p.triangles) return uvec3(0u);
+    for (uint k = 0u; k < p.tri_skips; ++k) t += t >= p.tri_skip[k].x ? p.tri_skip[k].y : 0u;
+    if (p.type_ == 2u) return type2_triangle(p, t);
+    if (p.type_ == 1u) return type1_triangle(p, t);
+    return uvec3(0u, 1u, 2u);
+}
+
+// ---- mesh input ----
+vec3 mesh_position(uint v) {
+    uint o = v * MESH_VERTEX_FLOATS;
+    return vec3(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]);
+}
+struct Corner {
+    vec3 position;
+    vec3 normal;
+    vec2 uv;
+    uint index;
+};
+Corner mesh_corner(uint v) {
+    uint o = v * MESH_VERTEX_FLOATS;
+    Corner c;
+    c.position = vec3(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]);
+    c.normal = vec3(mesh_vertices[o + 3u], mesh_vertices[o + 4u], mesh_vertices[o + 5u]);
+    c.uv = vec2(mesh_vertices[o + 6u], mesh_vertices[o + 7u]);
+    c.index = v;
+    return c;
+}
+bool base_triangle(uint t, out uvec3 w) {
+    w = uvec3(mesh_indices[3u * t], mesh_indices[3u * t + 1u], mesh_indices[3u * t + 2u]);
+    uint n = params[7];
+    return w.x < n && w.y < n && w.z < n;
+}
+
+// ---- tess factors (tess_factor.hpp): precise, so that no multiply-add is fused ----
+float dot3(vec3 a, vec3 b) {
+    precise float r = a.x * b.x + a.y * b.y + a.z * b.z;
+    return r;
+}
+float edge_tess_factor(vec3 a, vec3 b, vec3 eye, float factor_scale) {
+    precise vec3 d = b - a;
+    precise vec3 m = 0.5 * (a + b);
+    precise vec3 e = m - eye;
+    precise float len2 = dot3(d, d);
+    precise float dist2 = dot3(e, e);
+    precise float f = sqrt(len2 * (1.0 / dist2)) * factor_scale;
+    return f;
+}
+
+// ---- surface (surface_eval.hpp) ----
+vec3 normalize_or_zero(vec3 a) {
+    float len2 = dot3(a, a);
+    if (!(len2 > 0.0)) return vec3(0.0);
+    return (1.0 / sqrt(len2)) * a;
+}
+vec3 pn_edge_point(Corner i, Corner j) {
+    float w = dot3(j.position - i.position, i.normal);
+    return (1.0 / 3.0) * ((2.0 * i.position + j.position) - w * i.normal);
+}
+vec3 pn_edge_normal(Corner i, Corner j) {
+    vec3 d = j.position - i.position;
+    float len2 = dot3(d, d);
+    float v = len2 > 0.0 ? 2.0 * dot3(d, i.normal + j.normal) * (1.0 / len2) : 0.0;
+    return normalize_or_zero((i.normal + j.normal) - v * d);
+}
+vec3 phong_project(vec3 q, Corner i) { return q - dot3(q - i.position, i.normal) * i.normal; }
+vec3 blend(vec3 flat_, vec3 curved, float alpha) { return (1.0 - alpha) * flat_ + alpha * curved; }
+
+struct SurfacePoint {
+    vec3 position;
+    vec3 normal;
+    vec2 uv;
+};
+SurfacePoint edge_surface(Corner a, Corner b, float s, float t, uint surface, float alpha) {
+    SurfacePoint o;
+    vec3 flat_p = s * a.position + t * b.position;
+    vec3 flat_n = s * a.normal + t * b.normal;
+    o.uv = vec2(s * a.uv.x + t * b.uv.x, s * a.uv.y + t * b.uv.y);
+    vec3 pos = flat_p, n = flat_n;
+    if (surface == 1u) {
+        vec3 bab = pn_edge_point(a, b), bba = pn_edge_point(b, a);
+        float s2 = s * s, t2 = t * t;
+        vec3 pn = (s2 * s) * a.position + (3.0 * s2 * t) * bab + (3.0 * s * t2) * bba + (t2 * t) * b.position;
+        vec3 nn = s2 * a.normal + t2 * b.normal + (s * t) * pn_edge_normal(a, b);
+        pos = blend(flat_p, pn, alpha);
+        n = blend(flat_n, nn, alpha);
+    } else if (surface == 2u) {
+        vec3 ph = (s * s) * a.position + (t * t) * b.position +
+                  (s * t) * (phong_project(b.position, a) + phong_project(a.position, b));
+        pos = blend(flat_p, ph, alpha);
+    }
+    o.position = pos;
+    o.normal = normalize_or_zero(n);
+    return o;
+}
+SurfacePoint interior_surface(Corner c0, Corner c1, Corner c2, float w0, float w1, float w2, uint surface, float alpha) {
+    SurfacePoint o;
+    vec3 flat_p = w0 * c0.position + w1 * c1.position + w2 * c2.position;
+    vec3 flat_n = w0 * c0.normal + w1 * c1.normal + w2 * c2.normal;
+    o.uv = vec2(w0 * c0.uv.x + w1 * c1.uv.x + w2 * c2.uv.x, w0 * c0.uv.y + w1 * c1.uv.y + w2 * c2.uv.y);
+    vec3 pos = flat_p, n = flat_n;
+    if (surface == 1u) {
+        vec3 b210 = pn_edge_point(c0, c1), b120 = pn_edge_point(c1, c0);
+        vec3 b021 = pn_edge_point(c1, c2), b012 = pn_edge_point(c2, c1);
+        vec3 b102 = pn_edge_point(c2, c0), b201 = pn_edge_point(c0, c2);
+        vec3 e = (1.0 / 6.0) * (((b210 + b120) + (b021 + b012)) + (b102 + b201));
+        vec3 v = (1.0 / 3.0) * ((c0.position + c1.position) + c2.position);
+        vec3 b111 = e + 0.5 * (e - v);
+        float q0 = w0 * w0, q1 = w1 * w1, q2 = w2 * w2;
+        vec3 pn = (q0 * w0) * c0.position + (q1 * w1) * c1.position + (q2 * w2) * c2.position +
+                  (3.0 * q0 * w1) * b210 + (3.0 * q1 * w0) * b120 + (3.0 * q1 * w2) * b021 +
+                  (3.0 * q2 * w1) * b012 + (3.0 * q2 * w0) * b102 + (3.0 * q0 * w2) * b201 +
+                  (6.0 * w0 * w1 * w2) * b111;
+        vec3 nn = q0 * c0.normal + q1 * c1.normal + q2 * c2.normal + (w0 * w1) * pn_edge_normal(c0, c1) +
+                  (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
+        pos = blend(flat_p, pn, alpha);
+        n = blend(flat_n, nn, alpha);
+    } else if (surface == 2u) {
+        vec3 ph = (w0 * w0) * c0.position + (w1 * w1) * c1.position + (w2 * w2) * c2.position +
+                  (w0 * w1) * (phong_project(c1.position, c0) + phong_project(c0.position, c1)) +
+                  (w1 * w2) * (phong_project(c2.position, c1) + phong_project(c1.position, c2)) +
+                  (w2 * w0) * (phong_project(c0.position, c2) + phong_project(c2.position, c0));
+        pos = blend(flat_p, ph, alpha);
+    }
+    o.position = pos;
+    o.normal = normalize_or_zero(n);
+    return o;
+}
+float fixed_weight(uint w) { return float(w) * (1.0 / 16777216.0); }
+SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha) {
+    for (uint k = 0u; k < 3u; ++k) {
+        if (w[k] == FIXED_ONE) {
+            SurfacePoint o;
+            o.position = c[k].position;
+            o.normal = normalize_or_zero(c[k].normal);
+            o.uv = c[k].uv;
+            return o;
+        }
+    }
+    for (uint k = 0u; k < 3u; ++k) {
+        if (w[k] != 0u) continue;
+        uint i = (k + 1u) % 3u, j = (k + 2u) % 3u;
+        bool i_first = c[i].index < c[j].index || (c[i].index == c[j].index && i < j);
+        uint a = i_first ? i : j, b = i_first ? j : i;
+        return edge_surface(c[a], c[b], fixed_weight(w[a]), fixed_weight(w[b]), surface, alpha);
+    }
+    return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
+}
+
+// ---- patch records (PatchRecord) ----
+uint smallest_edge_rotation(float l[3]) {
+    uint smallest = 0u;
+    for (uint k = 1u; k < 3u; ++k) {
+        bool nan_k = (floatBitsToUint(l[k]) & 0x7FFFFFFFu) > 0x7F800000u;
+        bool nan_s = (floatBitsToUint(l[smallest]) & 0x7FFFFFFFu) > 0x7F800000u;
+        if (nan_k) continue;
+        if (nan_s || l[k] < l[smallest]) smallest = k;
+    }
+    return (smallest + 1u) % 3u;
+}
+Patch record_patch(uint rec) {
+    return patch_setup(uvec2(patches[rec + 1u], patches[rec + 4u]), uvec2(patches[rec + 2u], patches[rec + 5u]),
+                       uvec2(patches[rec + 3u], patches[rec + 6u]));
+}
+
+// Pass 1, one invocation per base triangle: factors, rotation, line states, counts.
+void ctess_patch_setup() {
+    uint t = gl_GlobalInvocationID.x;
+    if (t >= patch_count()) return;
+    uint rec = t * PATCH_WORDS;
+    for (uint k = 0u; k < PATCH_WORDS; ++k) patches[rec + k] = 0u;
+    uvec3 w;
+    if (!base_triangle(t, w)) return;
+    uint wv[3] = uint[3](w.x, w.y, w.z);
+    float scale = uintBitsToFloat(params[3]);
+    vec3 eye = vec3(uintBitsToFloat(params[4]), uintBitsToFloat(params[5]), uintBitsToFloat(params[6]));
+    float factor[3], length2[3];
+    for (uint k = 0u; k < 3u; ++k) {
+        uint i = wv[k], j = wv[(k + 1u) % 3u];
+        vec3 a = mesh_position(min(i, j)), b = mesh_position(max(i, j));
+        factor[k] = edge_tess_factor(a, b, eye, scale);
+        precise vec3 d = b - a;
+        length2[k] = dot3(d, d);
+    }
+    uint rot = smallest_edge_rotation(length2);
+    uvec2 s[3];
+    for (uint k = 0u; k < 3u; ++k) s[k] = line_state(factor[(k + rot) % 3u]);
+    Patch p = patch_setup(s[0], s[1], s[2]);
+    patches[rec] = rot;
+    for (uint k = 0u; k < 3u; ++k) {
+        patches[rec + 1u + k] = s[k].x;
+        patches[rec + 4u + k] = s[k].y;
+        patches[rec + 11u + k] = floatBitsToUint(factor[k]);
+    }
+    patches[rec + 7u] = p.vertices;
+    patches[rec + 8u] = p.triangles;
+}
+
+// Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+shared uvec2 scan_sum[128];
+void ctess_prefix_sum() {
+    uint n = patch_count();
+    uint lane = gl_LocalInvocationID.x;
+    uint per = (n + 127u) / 128u;
+    uint begin = min(n, lane * per), end = min(n, begin + per);
+    uvec2 sum = uvec2(0u);
+    for (uint t = begin; t < end; ++t) sum += uvec2(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+    scan_sum[lane] = sum;
+    barrier();
+    for (uint d = 1u; d < 128u; d <<= 1) {
+        uvec2 add = lane >= d ? scan_sum[lane - d] : uvec2(0u);
+        barrier();
+        scan_sum[lane] += add;
+        barrier();
+    }
+    uvec2 base = scan_sum[lane] - sum;
+    for (uint t = begin; t < end; ++t) {
+        uint rec = t * PATCH_WORDS;
+        patches[rec + 9u] = base.x;
+        patches[rec + 10u] = base.y;
+        base += uvec2(patches[rec + 7u], patches[rec + 8u]);
+    }
+    if (lane == 127u) {
+        patches[n * PATCH_WORDS] = scan_sum[127].x;
+        patches[n * PATCH_WORDS + 1u] = scan_sum[127].y;
+    }
+}
+
+// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex.
+void ctess_emit_vertices() {
+    uint end = min(params[9], patch_count());
+    float alpha = uintBitsToFloat(params[2]);
+    uint surface = params[1];
+    for (uint t = params[8] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+        uint rec = t * PATCH_WORDS;
+        uint count = patches[rec + 7u];
+        uvec3 w;
+        if (count == 0u || !base_triangle(t, w)) continue;
+        Patch p = record_patch(rec);
+        uint rot = patches[rec];
+        uint first = patches[rec + 9u];
+        Corner c[3] = Corner[3](mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
+        for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
+            uvec2 d = patch_vertex(p, i);
+            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3
+            uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y);
+            uint bw[3];
+            for (uint k = 0u; k < 3u; ++k) bw[(k + rot) % 3u] = pw[k];
+            SurfacePoint sp = evaluate_surface(c, bw, surface, alpha);
+            uint o = (first + i) * VERTEX_WORDS;
+            out_vertices[o] = bw[1];
+            out_vertices[o + 1u] = bw[2];
+            out_vertices[o + 2u] = floatBitsToUint(sp.position.x);
+            out_vertices[o + 3u] = floatBitsToUint(sp.position.y);
+            out_vertices[o + 4u] = floatBitsToUint(sp.position.z);
+            out_vertices[o + 5u] = floatBitsToUint(sp.normal.x);
+            out_vertices[o + 6u] = floatBitsToUint(sp.normal.y);
+            out_vertices[o + 7u] = floatBitsToUint(sp.normal.z);
+            out_vertices[o + 8u] = floatBitsToUint(sp.uv.x);
+            out_vertices[o + 9u] = floatBitsToUint(sp.uv.y);
+        }
+    }
+}
+
+// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices.
+void ctess_emit_triangles() {
+    uint end = min(params[9], patch_count());
+    for (uint t = params[8] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+        uint rec = t * PATCH_WORDS;
+        uint count = patches[rec + 8u];
+        if (count == 0u) continue;
+        Patch p = record_patch(rec);
+        uint vfirst = patches[rec + 9u];
+        uint tfirst = patches[rec + 10u];
+        for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
+            uvec3 tri = patch_triangle(p, i) + uvec3(vfirst);
+            uint o = 3u * (tfirst + i);
+            out_indices[o] = tri.x;
+            out_indices[o + 1u] = tri.y;
+            out_indices[o + 2u] = tri.z;
+        }
+    }
+}
+
+void main() { {{ENTRY}}(); }

@@ -1,0 +1,708 @@
+// ctess CP mesh pipeline, WGSL compute. Generated from shaders/ctess_cp.wgsl by gen/: the generator fills in the double-brace
+// placeholders (max factor, token counts, table section offsets). Four entry points, the same steps as
+// runtime/include/ctess/runtime/mesh_pipeline.hpp and as shaders/ctess_cp.comp.glsl, operation for operation;
+// the CP lookups mirror runtime/include/ctess/runtime/cp_patch.hpp and cp_search.hpp (docs/shaders.md).
+
+const MAX_FACTOR: u32 = {{MAX_FACTOR}}u;
+const TOKENS: u32 = {{TOKENS}}u;
+const SHAPES: u32 = {{SHAPES}}u;
+const TOKEN_RANGE: u32 = {{TOKEN_RANGE}}u;
+const TOKEN_RECORD: u32 = {{TOKEN_RECORD}}u;
+const POINT: u32 = {{POINT}}u;
+const COLUMN_RECORD: u32 = {{COLUMN_RECORD}}u;
+const COLUMN_POOL: u32 = {{COLUMN_POOL}}u;
+const GAP_OFFSET: u32 = {{GAP_OFFSET}}u;
+const GAP_WORD: u32 = {{GAP_WORD}}u;
+const T1_LAST_FAN: u32 = {{T1_LAST_FAN}}u;
+const SEARCH_WINDOW: u32 = {{SEARCH_WINDOW}}u;
+const FIXED_ONE: u32 = 16777216u; // 2^24
+const LERP_ONE: u32 = 65536u;
+const PATCH_WORDS: u32 = 16u;
+const VERTEX_WORDS: u32 = 10u;
+const MESH_VERTEX_FLOATS: u32 = 8u;
+const GROUP: u32 = 64u;
+
+// params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
+// patch range [first, end) that the emit passes cover (hosts may emit in batches)
+@group(0) @binding(0) var<storage, read> params: array<u32>;
+@group(0) @binding(1) var<storage, read> tables: array<u32>;
+@group(0) @binding(2) var<storage, read> mesh_vertices: array<f32>;
+@group(0) @binding(3) var<storage, read> mesh_indices: array<u32>;
+@group(0) @binding(4) var<storage, read_write> patches: array<u32>;
+@group(0) @binding(5) var<storage, read_write> out_vertices: array<u32>;
+@group(0) @binding(6) var<storage, read_write> out_indices: array<u32>;
+
+fn patch_count() -> u32 { return params[0]; }
+
+// ---- 64-bit helpers: x = (lo, hi) ----
+fn mul_wide(a: u32, b: u32) -> vec2<u32> {
+    let a0 = a & 0xFFFFu; let a1 = a >> 16u; let b0 = b & 0xFFFFu; let b1 = b >> 16u;
+    let p00 = a0 * b0; let p01 = a0 * b1; let p10 = a1 * b0; let p11 = a1 * b1;
+    let mid = (p00 >> 16u) + (p01 & 0xFFFFu) + (p10 & 0xFFFFu);
+    return vec2<u32>((p00 & 0xFFFFu) | (mid << 16u), p11 + (p01 >> 16u) + (p10 >> 16u) + (mid >> 16u));
+}
+fn add_wide(x: vec2<u32>, y: u32) -> vec2<u32> {
+    let lo = x.x + y;
+    return vec2<u32>(lo, x.y + select(0u, 1u, lo < y));
+}
+
+// ---- tables ----
+fn table_u16(base: u32, i: u32) -> u32 { return (tables[base + (i >> 1u)] >> ((i & 1u) * 16u)) & 0xFFFFu; }
+
+// ---- CP line (constexpr/ctess/cp_line.hpp) ----
+fn round_half_even_shift(n: u32, s: u32) -> u32 {
+    if (s == 0u) { return n; }
+    let q = n >> s; let r = n & ((1u << s) - 1u); let half_ = 1u << (s - 1u);
+    return select(q, q + 1u, r > half_ || (r == half_ && (q & 1u) != 0u));
+}
+fn is_nan_bits(f: f32) -> bool { return (bitcast<u32>(f) & 0x7FFFFFFFu) > 0x7F800000u; }
+// Factor -> (token, t16); NaN and f <= 1 give T0, f >= max the last token at t = 1.
+fn line_state(f: f32) -> vec2<u32> {
+    var f16: u32;
+    if (is_nan_bits(f) || f <= 1.0) { f16 = LERP_ONE; }
+    else if (f >= f32(MAX_FACTOR)) { f16 = MAX_FACTOR << 16u; }
+    else { f16 = u32(round(f * 65536.0)); }
+    if (f16 <= LERP_ONE) { return vec2<u32>(0u, 0u); }
+    for (var t = 1u; t < TOKENS; t++) {
+        let range = tables[TOKEN_RANGE + t];
+        let lo = range & 0xFFFFu; let hi = range >> 16u;
+        if (f16 <= (hi << 16u)) { return vec2<u32>(t, round_half_even_shift(f16 - (lo << 16u), firstTrailingBit(hi - lo))); }
+    }
+    return vec2<u32>(TOKENS - 1u, LERP_ONE);
+}
+
+// ---- patch state (CpPatch) ----
+struct Edge {
+    points: u32, // u16 index of interior point 1
+    t16: u32,
+    segments: u32,
+    half_step: u32,
+}
+struct Patch {
+    e: array<Edge, 3>,
+    type_: u32,
+    c0: bool, c1: bool, c2: bool, copies: bool,
+    c: u32,   // u16 index of C_0 in the column pool
+    gap: u32, // word index of the pair's first zipper word
+    head: u32, n0: u32, n1: u32, n2: u32,
+    a: f32, b: f32,
+    copy_bias: u32, clamp_: u32, e1_offset: u32, unique_: u32, strips: u32, zipper: u32, vertices: u32, triangles: u32,
+    tri_skip: array<vec2<u32>, 8>,
+    tri_skips: u32,
+    slot_skip: array<vec2<u32>, 4>,
+    slot_skips: u32,
+}
+
+fn col(p: ptr<function, Patch>, x: i32) -> u32 { return table_u16(COLUMN_POOL, (*p).c + u32(x)); }
+
+fn edge_point(e: Edge, i: u32) -> u32 {
+    if (i == 0u) { return 0u; }
+    if (i >= e.segments) { return FIXED_ONE; }
+    let packed = table_u16(POINT, e.points + i - 1u);
+    let fin = i32(packed & 0xFFu);
+    let slide = packed >> 8u;
+    let half_ = i32(e.half_step);
+    let start = select(select(fin, fin - half_, slide == 2u), fin + half_, slide == 1u);
+    return u32(start * 65536 + (fin - start) * i32(e.t16));
+}
+
+fn add_triangle_skip(p: ptr<function, Patch>, begin: u32, end: u32) {
+    if (end > begin) {
+        (*p).tri_skip[(*p).tri_skips] = vec2<u32>(begin, end - begin);
+        (*p).tri_skips += 1u;
+    }
+}
+fn add_slot_skip(p: ptr<function, Patch>, begin: u32, end: u32) {
+    (*p).slot_skip[(*p).slot_skips] = vec2<u32>(begin, end - begin);
+    (*p).slot_skips += 1u;
+}
+
+fn patch_setup(s0: vec2<u32>, s1: vec2<u32>, s2: vec2<u32>) -> Patch {
+    var p: Patch; // zero-initialised
+    var s = array<vec2<u32>, 3>(s0, s1, s2);
+    for (var k = 0u; k < 3u; k++) {
+        let shape = select(s[k].x, 1u, s[k].x == 0u);
+        let rec = tables[TOKEN_RECORD + 2u * (shape - 1u)];
+        p.e[k].points = rec & 0xFFFFu;
+        p.e[k].segments = rec >> 16u;
+        p.e[k].half_step = tables[TOKEN_RECORD + 2u * (shape - 1u) + 1u];
+        p.e[k].t16 = select(s[k].y, 0u, s[k].x == 0u);
+    }
+    p.c0 = s0.x == 0u;
+    p.c1 = s1.x == 0u;
+    p.c2 = s2.x == 0u;
+    p.n0 = p.e[0].segments;
+    p.n1 = p.e[1].segments;
+    p.n2 = p.e[2].segments;
+    if (p.c0 && p.c1 && p.c2) {
+        p.type_ = 0u;
+        p.vertices = 3u;
+        p.triangles = 1u;
+        return p;
+    }
+    if (s0.x <= 1u && s2.x <= 1u) { // Type 1: n1 + 7 slots, n1 + 6 triangles before the collapse
+        p.type_ = 1u;
+        var dropped_slots = 0u;
+        if (p.c0) { add_slot_skip(&p, 1u, 3u); dropped_slots += 2u; }
+        if (p.c1) { add_slot_skip(&p, 4u, 6u); dropped_slots += 2u; }
+        if (p.c2) {
+            let end = select(6u + p.n1, 7u + p.n1, p.c0);
+            add_slot_skip(&p, 4u + p.n1, end);
+            dropped_slots += end - (4u + p.n1);
+        }
+        if (p.c0 || p.c2) { add_triangle_skip(&p, 0u, 1u); }
+        if (p.c0 || p.c1) { add_triangle_skip(&p, 1u, 2u); }
+        if (p.c1 || p.c2) { add_triangle_skip(&p, 2u, 3u); }
+        if (p.c0 && p.c2) { add_triangle_skip(&p, 3u, 4u); }
+        if (p.c0 && p.c1) { add_triangle_skip(&p, 4u, 5u); }
+        if (p.c1 && p.c2) { add_triangle_skip(&p, p.n1 + 3u, p.n1 + 4u); }
+        if (p.c0 && p.c2) { add_triangle_skip(&p, p.n1 + 4u, p.n1 + 5u); }
+        if (p.c0 && p.c2) { add_triangle_skip(&p, p.n1 + 5u, p.n1 + 6u); }
+        var dropped = 0u;
+        for (var k = 0u; k < p.tri_skips; k++) { dropped += p.tri_skip[k].y; }
+        p.vertices = p.n1 + 7u - dropped_slots;
+        p.triangles = p.n1 + 6u - dropped;
+        return p;
+    }
+    p.type_ = 2u;
+    let sh0 = select(s0.x, 1u, s0.x == 0u);
+    let sh1 = select(s1.x, 1u, s1.x == 0u);
+    let sh2 = select(s2.x, 1u, s2.x == 0u);
+    let rec = COLUMN_RECORD + 4u * ((sh2 - 1u) * SHAPES + sh0 - 1u);
+    p.c = tables[rec];
+    p.head = tables[rec + 1u];
+    p.a = bitcast<f32>(tables[rec + 2u]);
+    p.b = bitcast<f32>(tables[rec + 3u]);
+    p.gap = GAP_WORD + table_u16(GAP_OFFSET, (sh1 - 1u) * SHAPES + sh0 - 1u);
+    let last0 = edge_point(p.e[0], p.n0 - 1u);
+    let v2 = edge_point(p.e[2], select(1u, p.n2 - 1u, sh2 >= 2u));
+    p.clamp_ = min(last0, v2);
+    let ch = col(&p, i32(p.head));
+    p.strips = 2u * ch + 1u - 2u * p.head - p.n2;
+    p.zipper = p.n0 + p.n1 - 1u;
+    p.e1_offset = select(select(ch + p.n0 - p.head, p.n0, p.c2), p.n2, p.c0);
+    p.unique_ = p.e1_offset + select(p.n1 + 1u, 2u, p.c1);
+    p.copies = !p.c0 && !p.c2;
+    let c1v = col(&p, 1);
+    p.copy_bias = p.unique_ + 1u - c1v;
+    let copies = select(0u, ch - c1v - (p.head - 1u), p.copies);
+    let z = p.strips;
+    let t1_fan = select(0u, tables[T1_LAST_FAN + sh0 - 1u], p.c1);
+    if (p.c0) {
+        add_triangle_skip(&p, 0u, 2u * p.n2 - 2u);
+        if (p.c1) {
+            add_triangle_skip(&p, z, z + 2u);
+            add_triangle_skip(&p, z + 3u, z + 5u);
+        } else {
+            add_triangle_skip(&p, z, z + 1u);
+            add_triangle_skip(&p, z + p.n1, z + p.n1 + 1u);
+        }
+    } else if (p.c2) {
+        let r1 = col(&p, 2) - c1v;
+        add_triangle_skip(&p, 0u, r1);
+        add_triangle_skip(&p, r1 + 1u, p.strips);
+        if (p.c1) {
+            add_triangle_skip(&p, z, z + 1u);
+            if (t1_fan == p.zipper - 1u) {
+                add_triangle_skip(&p, z + p.n0, z + p.n0 + 2u);
+            } else {
+                add_triangle_skip(&p, z + t1_fan, z + t1_fan + 1u);
+                add_triangle_skip(&p, z + p.zipper - 1u, z + p.zipper);
+            }
+        } else {
+            add_triangle_skip(&p, z + p.zipper - 1u, z + p.zipper);
+        }
+    } else if (p.c1) {
+        add_triangle_skip(&p, z, z + 1u);
+        add_triangle_skip(&p, z + t1_fan, z + t1_fan + 1u);
+    }
+    var dropped = 0u;
+    for (var k = 0u; k < p.tri_skips; k++) { dropped += p.tri_skip[k].y; }
+    p.vertices = p.unique_ + copies;
+    p.triangles = p.strips + p.zipper - dropped;
+    return p;
+}
+
+// ---- reverse lookups (cp_search.hpp): y = C_x (vertex), C_x - x (copy), PS_x (strip) ----
+const SEARCH_VERTEX: i32 = 0;
+const SEARCH_COPY: i32 = 1;
+const SEARCH_STRIP: i32 = 2;
+fn search_y(p: ptr<function, Patch>, kind: i32, x: i32) -> i32 {
+    if (kind == SEARCH_VERTEX) { return i32(col(p, x)); }
+    if (kind == SEARCH_COPY) { return i32(col(p, x)) - x; }
+    return i32(col(p, x)) + i32(col(p, x + 1)) - 2 * x - i32((*p).n2);
+}
+fn search_first_guess(alpha: f32, beta: f32, e: f32, h: u32) -> i32 {
+    var d = alpha * alpha - 4.0 * beta * e;
+    d = select(0.0, d, d > 0.0);
+    var x = 2.0 * e / (alpha + sqrt(d));
+    let last = f32(h - 1u);
+    x = select(0.0, x, x > 0.0);
+    x = select(last, x, x < last);
+    return i32(x);
+}
+fn search_from(p: ptr<function, Patch>, kind: i32, h: u32, e: i32, x0: i32) -> u32 {
+    let last = i32(h) - 1;
+    var x = select(select(x0, last, x0 > last), 0, x0 < 0);
+    let y0 = search_y(p, kind, x);
+    let ahead = search_y(p, kind, x + 1) - y0;
+    let behind = y0 - search_y(p, kind, select(0, x - 1, x > 0));
+    let forward = e >= y0;
+    let step_ = select(behind, ahead, forward);
+    let den = select(1, step_, step_ > 0);
+    let num = select((y0 - e) + den - 1, e - y0, forward);
+    let q = num / den;
+    let next_ = select(x - q, x + q, forward);
+    x = select(select(next_, last, next_ > last), 0, next_ < 0);
+    var i = u32(x);
+    for (var k = 1u; k <= SEARCH_WINDOW; k++) {
+        let at = x + i32(k);
+        if (at <= last) {
+            if (search_y(p, kind, at) <= e) { i += 1u; }
+        }
+    }
+    return i;
+}
+
+// ---- vertices ----
+fn e1_point(s: u32) -> vec2<u32> { return vec2<u32>(FIXED_ONE - s, s); }
+fn column_point(p: ptr<function, Patch>, i: u32, j: u32) -> vec2<u32> {
+    let v2 = edge_point((*p).e[2], j);
+    if (i == 0u) { return vec2<u32>(0u, v2); }
+    let u = edge_point((*p).e[0], i);
+    let top = select(0u, (*p).clamp_ - u, (*p).clamp_ > u);
+    return vec2<u32>(u, min(v2, top));
+}
+fn type1_center(t0: u32, t2: u32) -> vec2<u32> {
+    let a = min(t0, LERP_ONE); let c = min(t2, LERP_ONE);
+    // x = (a << 32) + (1 - a) c (1 - c);  y = (1 - a)(2^16 (a + c) - a c), all in units of 2^-32
+    var x = mul_wide(LERP_ONE - a, c * (LERP_ONE - c));
+    x.y += a;
+    var y: vec2<u32>;
+    if (a == LERP_ONE || c == LERP_ONE) { y = vec2<u32>(0u, LERP_ONE - a); } // the inner factor is 2^32
+    else { y = mul_wide(LERP_ONE - a, 0u - (LERP_ONE - a) * (LERP_ONE - c)); }
+    x = add_wide(x, 1u << 24u);
+    y = add_wide(y, 1u << 24u);
+    return vec2<u32>((x.y << 7u) | (x.x >> 25u), (y.y << 7u) | (y.x >> 25u));
+}
+fn slot_point(p: ptr<function, Patch>, s: u32) -> vec2<u32> {
+    let n1 = (*p).n1;
+    if (s == 0u) { return vec2<u32>(0u); }
+    if (s <= 2u) { return vec2<u32>(edge_point((*p).e[0], s), 0u); }
+    if (s <= 3u + n1) { return e1_point(edge_point((*p).e[1], s - 3u)); }
+    if (s == 4u + n1) { return vec2<u32>(0u, edge_point((*p).e[2], 2u)); }
+    if (s == 5u + n1) { return vec2<u32>(0u, edge_point((*p).e[2], 1u)); }
+    return type1_center((*p).e[0].t16, (*p).e[2].t16);
+}
+fn col_start(p: ptr<function, Patch>, i: u32) -> u32 {
+    if (i <= (*p).head) { return col(p, i32(i)); }
+    return col(p, i32((*p).head)) + (i - (*p).head);
+}
+fn copy_point(p: ptr<function, Patch>, k: u32) -> vec2<u32> {
+    let t = i32(k + col(p, 1)) - 1;
+    let i = search_from(p, SEARCH_COPY, (*p).head, t, search_first_guess((*p).a - 1.0, (*p).b, f32(t), (*p).head));
+    return column_point(p, i, u32(t - search_y(p, SEARCH_COPY, i32(i))));
+}
+fn type2_vertex(p: ptr<function, Patch>, v: u32) -> vec2<u32> {
+    if (v >= (*p).unique_) { return copy_point(p, v - (*p).unique_); }
+    if (v >= (*p).e1_offset) {
+        let b = v - (*p).e1_offset;
+        return e1_point(edge_point((*p).e[1], select(b, b * (*p).n1, (*p).c1)));
+    }
+    if ((*p).c0) { return column_point(p, 0u, v); }
+    if ((*p).c2) { return column_point(p, v, 0u); }
+    let ch = col(p, i32((*p).head));
+    if (v >= ch) { return column_point(p, (*p).head + (v - ch), 0u); }
+    let i = search_from(p, SEARCH_VERTEX, (*p).head, i32(v), search_first_guess((*p).a, (*p).b, f32(v), (*p).head));
+    return column_point(p, i, v - col(p, i32(i)));
+}
+fn patch_vertex(p: ptr<function, Patch>, index: u32) -> vec2<u32> {
+    var i = index;
+    if (i >= (*p).vertices) { return vec2<u32>(0u); }
+    if ((*p).type_ == 2u) { return type2_vertex(p, i); }
+    if ((*p).type_ == 1u) {
+        for (var k = 0u; k < (*p).slot_skips; k++) {
+            if (i >= (*p).slot_skip[k].x) { i += (*p).slot_skip[k].y; }
+        }
+        return slot_point(p, i);
+    }
+    if (i == 0u) { return vec2<u32>(0u); }
+    if (i == 1u) { return vec2<u32>(FIXED_ONE, 0u); }
+    return vec2<u32>(0u, FIXED_ONE);
+}
+
+// ---- triangles ----
+fn slot_index(p: ptr<function, Patch>, slot: u32) -> u32 {
+    let n1 = (*p).n1;
+    let c0 = (*p).c0; let c1 = (*p).c1; let c2 = (*p).c2;
+    var s = slot;
+    if (c1 && s == 4u) { s = 3u; }
+    if (c1 && s == 5u) { s = 3u + n1; }
+    if (c2 && s == 5u + n1) { s = 0u; }
+    if (c2 && s == 4u + n1) { s = 3u + n1; }
+    if (c0 && s == 1u) { s = 0u; }
+    if (c0 && s == 2u) { s = 3u; }
+    if (c0 && c2 && s == 6u + n1) { s = 0u; }
+    var below = 0u;
+    for (var k = 0u; k < (*p).slot_skips; k++) {
+        if (s > (*p).slot_skip[k].x) { below += (*p).slot_skip[k].y; }
+    }
+    return s - below;
+}
+fn hexagon_slot(p: ptr<function, Patch>, index: u32) -> u32 {
+    let n1 = (*p).n1;
+    let m = n1 + 3u;
+    let k = index % m;
+    if (k == 0u) { return 1u; }
+    if (k == 1u) { return 2u; }
+    if (k < m - 2u) { return 3u + (k - 1u); }
+    return select(5u + n1, 4u + n1, k == m - 2u);
+}
+fn type1_triangle(p: ptr<function, Patch>, r: u32) -> vec3<u32> {
+    let n1 = (*p).n1;
+    var a: u32; var b: u32; var c: u32;
+    if (r == 0u) { a = 0u; b = 1u; c = 5u + n1; }
+    else if (r == 1u) { a = 3u; b = 4u; c = 2u; }
+    else if (r == 2u) { a = 3u + n1; b = 4u + n1; c = 2u + n1; }
+    else { a = hexagon_slot(p, r - 2u); b = 6u + n1; c = hexagon_slot(p, r - 3u); }
+    return vec3<u32>(slot_index(p, a), slot_index(p, b), slot_index(p, c));
+}
+fn e1_index(p: ptr<function, Patch>, b: u32) -> u32 {
+    if ((*p).c1) { return (*p).e1_offset + select(1u, 0u, b <= 1u); }
+    return (*p).e1_offset + b;
+}
+fn col_index(p: ptr<function, Patch>, i: u32, j: u32) -> u32 {
+    if ((*p).c2) {
+        if (i == 0u) { return select(0u, e1_index(p, (*p).n1), j == 2u); }
+        return i;
+    }
+    if ((*p).c0) {
+        if (i == 2u) { return e1_index(p, 0u); }
+        if (i == 1u) { return j; }
+    }
+    return col_start(p, i) + j;
+}
+fn lhs_index(p: ptr<function, Patch>, a: u32) -> u32 {
+    let i = (*p).n0 - 1u - a;
+    return col_index(p, i, col_start(p, i + 1u) - col_start(p, i) - 1u);
+}
+fn type2_triangle(p: ptr<function, Patch>, r: u32) -> vec3<u32> {
+    if (r < (*p).strips) {
+        let alpha = 2.0 * (*p).a - 2.0 * (*p).b - 2.0;
+        let model = f32(r) - ((*p).a - (*p).b - f32((*p).n2));
+        let i = search_from(p, SEARCH_STRIP, (*p).head, i32(r), search_first_guess(alpha, 2.0 * (*p).b, model, (*p).head));
+        let o = r - u32(search_y(p, SEARCH_STRIP, i32(i)));
+        let nb = col(p, i32(i) + 2) - col(p, i32(i) + 1);
+        if ((*p).copies && i >= 1u) {
+            // First vertex A_j of column i >= 1 already provoked a triangle of strip i - 1: use its copy.
+            let a = col(p, i32(i)); let b = col(p, i32(i) + 1);
+            let first = a + (*p).copy_bias - i;
+            if (o < 2u * (nb - 1u)) {
+                let j = o >> 1u;
+                if ((o & 1u) != 0u) { return vec3<u32>(b + j, b + j + 1u, a + j + 1u); }
+                return vec3<u32>(first + j, b + j, a + j + 1u);
+            }
+            let j = o - (nb - 1u);
+            return vec3<u32>(first + j, b + nb - 1u, a + j + 1u);
+        }
+        if (o < 2u * (nb - 1u)) {
+            let j = o >> 1u;
+            if ((o & 1u) != 0u) {
+                return vec3<u32>(col_index(p, i + 1u, j), col_index(p, i + 1u, j + 1u), col_index(p, i, j + 1u));
+            }
+            return vec3<u32>(col_index(p, i, j), col_index(p, i + 1u, j), col_index(p, i, j + 1u));
+        }
+        let j = o - (nb - 1u);
+        return vec3<u32>(col_index(p, i, j), col_index(p, i + 1u, nb - 1u), col_index(p, i, j + 1u));
+    }
+    let q = r - (*p).strips;
+    let w = tables[(*p).gap + q / 16u];
+    let bit = q % 16u;
+    let bits = w & 0xFFFFu;
+    let a = (w >> 16u) + countOneBits(bits & ((1u << bit) - 1u));
+    let b = q - a;
+    if (((bits >> bit) & 1u) != 0u) { return vec3<u32>(lhs_index(p, a + 1u), lhs_index(p, a), e1_index(p, b)); }
+    return vec3<u32>(e1_index(p, b + 1u), lhs_index(p, a), e1_index(p, b));
+}
+fn patch_triangle(p: ptr<function, Patch>, index: u32) -> vec3<u32> {
+    var t = index;
+    if (t >= (*p).triangles) { return vec3<u32>(0u); }
+    for (var k = 0u; k < (*p).tri_skips; k++) {
+        if (t >= (*p).tri_skip[k].x) { t += (*p).tri_skip[k].y; }
+    }
+    if ((*p).type_ == 2u) { return type2_triangle(p, t); }
+    if ((*p).type_ == 1u) { return type1_triangle(p, t); }
+    return vec3<u32>(0u, 1u, 2u);
+}
+
+// ---- mesh input ----
+fn mesh_position(v: u32) -> vec3<f32> {
+    let o = v * MESH_VERTEX_FLOATS;
+    return vec3<f32>(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]);
+}
+struct Corner {
+    position: vec3<f32>,
+    normal: vec3<f32>,
+    uv: vec2<f32>,
+    index: u32,
+}
+fn mesh_corner(v: u32) -> Corner {
+    let o = v * MESH_VERTEX_FLOATS;
+    return Corner(vec3<f32>(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]),
+                  vec3<f32>(mesh_vertices[o + 3u], mesh_vertices[o + 4u], mesh_vertices[o + 5u]),
+                  vec2<f32>(mesh_vertices[o + 6u], mesh_vertices[o + 7u]), v);
+}
+fn base_triangle(t: u32) -> vec3<u32> {
+    return vec3<u32>(mesh_indices[3u * t], mesh_indices[3u * t + 1u], mesh_indices[3u * t + 2u]);
+}
+fn base_triangle_valid(w: vec3<u32>) -> bool {
+    let n = params[7];
+    return w.x < n && w.y < n && w.z < n;
+}
+
+// ---- tess factors (tess_factor.hpp) ----
+fn dot3(a: vec3<f32>, b: vec3<f32>) -> f32 { return a.x * b.x + a.y * b.y + a.z * b.z; }
+fn edge_tess_factor(a: vec3<f32>, b: vec3<f32>, eye: vec3<f32>, factor_scale: f32) -> f32 {
+    let d = b - a;
+    let m = 0.5 * (a + b);
+    let e = m - eye;
+    let len2 = dot3(d, d);
+    let dist2 = dot3(e, e);
+    return sqrt(len2 * (1.0 / dist2)) * factor_scale;
+}
+
+// ---- surface (surface_eval.hpp) ----
+fn normalize_or_zero(a: vec3<f32>) -> vec3<f32> {
+    let len2 = dot3(a, a);
+    if (!(len2 > 0.0)) { return vec3<f32>(0.0); }
+    return (1.0 / sqrt(len2)) * a;
+}
+fn pn_edge_point(i: Corner, j: Corner) -> vec3<f32> {
+    let w = dot3(j.position - i.position, i.normal);
+    return (1.0 / 3.0) * ((2.0 * i.position + j.position) - w * i.normal);
+}
+fn pn_edge_normal(i: Corner, j: Corner) -> vec3<f32> {
+    let d = j.position - i.position;
+    let len2 = dot3(d, d);
+    var v = 0.0;
+    if (len2 > 0.0) { v = 2.0 * dot3(d, i.normal + j.normal) * (1.0 / len2); }
+    return normalize_or_zero((i.normal + j.normal) - v * d);
+}
+fn phong_project(q: vec3<f32>, i: Corner) -> vec3<f32> { return q - dot3(q - i.position, i.normal) * i.normal; }
+fn blend(flat_: vec3<f32>, curved: vec3<f32>, alpha: f32) -> vec3<f32> { return (1.0 - alpha) * flat_ + alpha * curved; }
+
+struct SurfacePoint {
+    position: vec3<f32>,
+    normal: vec3<f32>,
+    uv: vec2<f32>,
+}
+fn edge_surface(a: Corner, b: Corner, s: f32, t: f32, surface: u32, alpha: f32) -> SurfacePoint {
+    let flat_p = s * a.position + t * b.position;
+    let flat_n = s * a.normal + t * b.normal;
+    let uv = vec2<f32>(s * a.uv.x + t * b.uv.x, s * a.uv.y + t * b.uv.y);
+    var pos = flat_p;
+    var n = flat_n;
+    if (surface == 1u) {
+        let bab = pn_edge_point(a, b); let bba = pn_edge_point(b, a);
+        let s2 = s * s; let t2 = t * t;
+        let pn = (s2 * s) * a.position + (3.0 * s2 * t) * bab + (3.0 * s * t2) * bba + (t2 * t) * b.position;
+        let nn = s2 * a.normal + t2 * b.normal + (s * t) * pn_edge_normal(a, b);
+        pos = blend(flat_p, pn, alpha);
+        n = blend(flat_n, nn, alpha);
+    } else if (surface == 2u) {
+        let ph = (s * s) * a.position + (t * t) * b.position +
+                 (s * t) * (phong_project(b.position, a) + phong_project(a.position, b));
+        pos = blend(flat_p, ph, alpha);
+    }
+    return SurfacePoint(pos, normalize_or_zero(n), uv);
+}
+fn interior_surface(c0: Corner, c1: Corner, c2: Corner, w0: f32, w1: f32, w2: f32, surface: u32, alpha: f32) -> SurfacePoint {
+    let flat_p = w0 * c0.position + w1 * c1.position + w2 * c2.position;
+    let flat_n = w0 * c0.normal + w1 * c1.normal + w2 * c2.normal;
+    let uv = vec2<f32>(w0 * c0.uv.x + w1 * c1.uv.x + w2 * c2.uv.x, w0 * c0.uv.y + w1 * c1.uv.y + w2 * c2.uv.y);
+    var pos = flat_p;
+    var n = flat_n;
+    if (surface == 1u) {
+        let b210 = pn_edge_point(c0, c1); let b120 = pn_edge_point(c1, c0);
+        let b021 = pn_edge_point(c1, c2); let b012 = pn_edge_point(c2, c1);
+        let b102 = pn_edge_point(c2, c0); let b201 = pn_edge_point(c0, c2);
+        let e = (1.0 / 6.0) * (((b210 + b120) + (b021 + b012)) + (b102 + b201));
+        let v = (1.0 / 3.0) * ((c0.position + c1.position) + c2.position);
+        let b111 = e + 0.5 * (e - v);
+        let q0 = w0 * w0; let q1 = w1 * w1; let q2 = w2 * w2;
+        let pn = (q0 * w0) * c0.position + (q1 * w1) * c1.position + (q2 * w2) * c2.position +
+                 (3.0 * q0 * w1) * b210 + (3.0 * q1 * w0) * b120 + (3.0 * q1 * w2) * b021 +
+                 (3.0 * q2 * w1) * b012 + (3.0 * q2 * w0) * b102 + (3.0 * q0 * w2) * b201 +
+                 (6.0 * w0 * w1 * w2) * b111;
+        let nn = q0 * c0.normal + q1 * c1.normal + q2 * c2.normal + (w0 * w1) * pn_edge_normal(c0, c1) +
+                 (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
+        pos = blend(flat_p, pn, alpha);
+        n = blend(flat_n, nn, alpha);
+    } else if (surface == 2u) {
+        let ph = (w0 * w0) * c0.position + (w1 * w1) * c1.position + (w2 * w2) * c2.position +
+                 (w0 * w1) * (phong_project(c1.position, c0) + phong_project(c0.position, c1)) +
+                 (w1 * w2) * (phong_project(c2.position, c1) + phong_project(c1.position, c2)) +
+                 (w2 * w0) * (phong_project(c0.position, c2) + phong_project(c2.position, c0));
+        pos = blend(flat_p, ph, alpha);
+    }
+    return SurfacePoint(pos, normalize_or_zero(n), uv);
+}
+fn fixed_weight(w: u32) -> f32 { return f32(w) * (1.0 / 16777216.0); }
+fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: u32, alpha: f32) -> SurfacePoint {
+    var c = corners;
+    var w = weights;
+    for (var k = 0u; k < 3u; k++) {
+        if (w[k] == FIXED_ONE) { return SurfacePoint(c[k].position, normalize_or_zero(c[k].normal), c[k].uv); }
+    }
+    for (var k = 0u; k < 3u; k++) {
+        if (w[k] != 0u) { continue; }
+        let i = (k + 1u) % 3u; let j = (k + 2u) % 3u;
+        let i_first = c[i].index < c[j].index || (c[i].index == c[j].index && i < j);
+        let a = select(j, i, i_first); let b = select(i, j, i_first);
+        return edge_surface(c[a], c[b], fixed_weight(w[a]), fixed_weight(w[b]), surface, alpha);
+    }
+    return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
+}
+
+// ---- patch records (PatchRecord) ----
+fn smallest_edge_rotation(lengths: array<f32, 3>) -> u32 {
+    var l = lengths;
+    var smallest = 0u;
+    for (var k = 1u; k < 3u; k++) {
+        if (is_nan_bits(l[k])) { continue; }
+        if (is_nan_bits(l[smallest]) || l[k] < l[smallest]) { smallest = k; }
+    }
+    return (smallest + 1u) % 3u;
+}
+fn record_patch(rec: u32) -> Patch {
+    return patch_setup(vec2<u32>(patches[rec + 1u], patches[rec + 4u]), vec2<u32>(patches[rec + 2u], patches[rec + 5u]),
+                       vec2<u32>(patches[rec + 3u], patches[rec + 6u]));
+}
+
+// Pass 1, one invocation per base triangle: factors, rotation, line states, counts.
+@compute @workgroup_size(64)
+fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let t = gid.x;
+    if (t >= patch_count()) { return; }
+    let rec = t * PATCH_WORDS;
+    for (var k = 0u; k < PATCH_WORDS; k++) { patches[rec + k] = 0u; }
+    let w = base_triangle(t);
+    if (!base_triangle_valid(w)) { return; }
+    var wv = array<u32, 3>(w.x, w.y, w.z);
+    let scale = bitcast<f32>(params[3]);
+    let eye = vec3<f32>(bitcast<f32>(params[4]), bitcast<f32>(params[5]), bitcast<f32>(params[6]));
+    var factor: array<f32, 3>;
+    var length2: array<f32, 3>;
+    for (var k = 0u; k < 3u; k++) {
+        let i = wv[k]; let j = wv[(k + 1u) % 3u];
+        let a = mesh_position(min(i, j)); let b = mesh_position(max(i, j));
+        factor[k] = edge_tess_factor(a, b, eye, scale);
+        let d = b - a;
+        length2[k] = dot3(d, d);
+    }
+    let rot = smallest_edge_rotation(length2);
+    var s: array<vec2<u32>, 3>;
+    for (var k = 0u; k < 3u; k++) { s[k] = line_state(factor[(k + rot) % 3u]); }
+    let p = patch_setup(s[0], s[1], s[2]);
+    patches[rec] = rot;
+    for (var k = 0u; k < 3u; k++) {
+        patches[rec + 1u + k] = s[k].x;
+        patches[rec + 4u + k] = s[k].y;
+        patches[rec + 11u + k] = bitcast<u32>(factor[k]);
+    }
+    patches[rec + 7u] = p.vertices;
+    patches[rec + 8u] = p.triangles;
+}
+
+// Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+var<workgroup> scan_sum: array<vec2<u32>, 128>;
+@compute @workgroup_size(128)
+fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
+    let n = patch_count();
+    let lane = lid.x;
+    let per = (n + 127u) / 128u;
+    let begin = min(n, lane * per);
+    let end = min(n, begin + per);
+    var sum = vec2<u32>(0u);
+    for (var t = begin; t < end; t++) { sum += vec2<u32>(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]); }
+    scan_sum[lane] = sum;
+    workgroupBarrier();
+    for (var d = 1u; d < 128u; d <<= 1u) {
+        var add = vec2<u32>(0u);
+        if (lane >= d) { add = scan_sum[lane - d]; }
+        workgroupBarrier();
+        scan_sum[lane] += add;
+        workgroupBarrier();
+    }
+    var base = scan_sum[lane] - sum;
+    for (var t = begin; t < end; t++) {
+        let rec = t * PATCH_WORDS;
+        patches[rec + 9u] = base.x;
+        patches[rec + 10u] = base.y;
+        base += vec2<u32>(patches[rec + 7u], patches[rec + 8u]);
+    }
+    if (lane == 127u) {
+        patches[n * PATCH_WORDS] = scan_sum[127].x;
+        patches[n * PATCH_WORDS + 1u] = scan_sum[127].y;
+    }
+}
+
+// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex.
+@compute @workgroup_size(64)
+fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                       @builtin(local_invocation_id) lid: vec3<u32>) {
+    let end = min(params[9], patch_count());
+    let alpha = bitcast<f32>(params[2]);
+    let surface = params[1];
+    for (var t = params[8] + wid.x; t < end; t += groups.x) {
+        let rec = t * PATCH_WORDS;
+        let count = patches[rec + 7u];
+        let w = base_triangle(t);
+        if (count == 0u || !base_triangle_valid(w)) { continue; }
+        var p = record_patch(rec);
+        let rot = patches[rec];
+        let first = patches[rec + 9u];
+        let c = array<Corner, 3>(mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
+        for (var i = lid.x; i < count; i += GROUP) {
+            let d = patch_vertex(&p, i);
+            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3
+            var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
+            var bw: array<u32, 3>;
+            for (var k = 0u; k < 3u; k++) { bw[(k + rot) % 3u] = pw[k]; }
+            let sp = evaluate_surface(c, bw, surface, alpha);
+            let o = (first + i) * VERTEX_WORDS;
+            out_vertices[o] = bw[1];
+            out_vertices[o + 1u] = bw[2];
+            out_vertices[o + 2u] = bitcast<u32>(sp.position.x);
+            out_vertices[o + 3u] = bitcast<u32>(sp.position.y);
+            out_vertices[o + 4u] = bitcast<u32>(sp.position.z);
+            out_vertices[o + 5u] = bitcast<u32>(sp.normal.x);
+            out_vertices[o + 6u] = bitcast<u32>(sp.normal.y);
+            out_vertices[o + 7u] = bitcast<u32>(sp.normal.z);
+            out_vertices[o + 8u] = bitcast<u32>(sp.uv.x);
+            out_vertices[o + 9u] = bitcast<u32>(sp.uv.y);
+        }
+    }
+}
+
+// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices.
+@compute @workgroup_size(64)
+fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                        @builtin(local_invocation_id) lid: vec3<u32>) {
+    let end = min(params[9], patch_count());
+    for (var t = params[8] + wid.x; t < end; t += groups.x) {
+        let rec = t * PATCH_WORDS;
+        let count = patches[rec + 8u];
+        if (count == 0u) { continue; }
+        var p = record_patch(rec);
+        let vfirst = patches[rec + 9u];
+        let tfirst = patches[rec + 10u];
+        for (var i = lid.x; i < count; i += GROUP) {
+            let tri = patch_triangle(&p, i) + vec3<u32>(vfirst);
+            let o = 3u * (tfirst + i);
+            out_indices[o] = tri.x;
+            out_indices[o + 1u] = tri.y;
+            out_indices[o + 2u] = tri.z;
+        }
+    }
+}

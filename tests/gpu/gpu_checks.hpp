@@ -1,0 +1,89 @@
+// Checks on pipeline outputs shared by the CPU and GPU tests: watertightness across shared edges, and the
+// spread of the edge factors over [1, max].
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <set>
+#include <tuple>
+#include <vector>
+
+#include "pipeline_output.hpp"
+
+namespace ctess::gpu_test {
+
+struct CrackReport {
+    std::size_t shared_edges = 0;        // base edges used by exactly two patches
+    std::size_t edge_points = 0;         // edge points compared across them (corners included)
+    std::size_t position_mismatches = 0; // same edge point, different position bits
+    std::size_t unmatched_points = 0;    // an edge point that the other side of the edge does not have
+};
+
+// Every vertex with a zero base weight lies on a base edge: key it by (lower mesh index, higher mesh index,
+// parameter from the lower one) and require both patches of the edge to produce the same keys with the same
+// position bits.
+inline CrackReport crack_check(const Scene& scene, const PipelineOutput& out) {
+    using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
+    using Position = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
+    std::map<Key, std::vector<std::pair<std::uint32_t, Position>>> points; // key -> (patch, position bits)
+    std::map<std::pair<std::uint32_t, std::uint32_t>, unsigned> edge_users;
+    CrackReport r;
+    const std::uint32_t n = scene.patch_count();
+    for (std::uint32_t t = 0; t < n; ++t) {
+        const std::uint32_t* rec = &out.patches[std::size_t{t} * 16];
+        const std::uint32_t w[3] = {scene.indices[3 * t], scene.indices[3 * t + 1], scene.indices[3 * t + 2]};
+        for (unsigned k = 0; k < 3; ++k) ++edge_users[std::minmax(w[k], w[(k + 1) % 3])];
+        std::map<Key, Position> mine; // the provoking-layout copies repeat points within a patch
+        for (std::uint32_t i = 0; i < rec[7]; ++i) {
+            const std::uint32_t* v = &out.vertices[(std::size_t{rec[9]} + i) * 10];
+            const std::uint32_t bw[3] = {(1u << 24) - v[0] - v[1], v[0], v[1]};
+            for (unsigned k = 0; k < 3; ++k) {
+                if (bw[k] != 0) continue;
+                const unsigned a = (k + 1) % 3, b = (k + 2) % 3;
+                const bool a_low = w[a] < w[b];
+                const Key key{a_low ? w[a] : w[b], a_low ? w[b] : w[a], a_low ? bw[b] : bw[a]};
+                const Position pos{v[2], v[3], v[4]};
+                const auto [it, fresh] = mine.try_emplace(key, pos);
+                if (!fresh && it->second != pos) ++r.position_mismatches; // copies must agree too
+            }
+        }
+        for (const auto& [key, pos] : mine) points[key].emplace_back(t, pos);
+    }
+    for (const auto& [edge, users] : edge_users)
+        if (users == 2) ++r.shared_edges;
+    for (const auto& [key, seen] : points) {
+        if (edge_users[{std::get<0>(key), std::get<1>(key)}] != 2) continue;
+        ++r.edge_points;
+        if (seen.size() != 2) {
+            ++r.unmatched_points;
+            continue;
+        }
+        if (seen[0].second != seen[1].second) ++r.position_mismatches;
+    }
+    return r;
+}
+
+// Base edge factors (from the patch records) per octave: [0] below 1, [k] in [2^(k-1), 2^k), last: >= max.
+inline std::vector<std::size_t> factor_octaves(const PipelineOutput& out, std::uint32_t patches,
+                                               unsigned max_factor) {
+    unsigned octaves = 0;
+    while ((1u << octaves) < max_factor) ++octaves;
+    std::vector<std::size_t> bins(octaves + 2, 0);
+    for (std::uint32_t t = 0; t < patches; ++t) {
+        for (unsigned k = 0; k < 3; ++k) {
+            float f;
+            std::memcpy(&f, &out.patches[std::size_t{t} * 16 + 11 + k], 4);
+            std::size_t bin = 0;
+            if (f >= static_cast<float>(max_factor))
+                bin = octaves + 1;
+            else if (f >= 1.0f)
+                bin = 1 + static_cast<std::size_t>(std::floor(std::log2(f)));
+            ++bins[bin];
+        }
+    }
+    return bins;
+}
+
+} // namespace ctess::gpu_test

@@ -1,0 +1,136 @@
+#include "gpu_pipeline.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include <ctess/runtime/mesh_pipeline.hpp>
+
+namespace ctess::gpu_test {
+
+namespace {
+
+std::vector<std::uint32_t> read_words(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) {
+        std::string why = "cannot read ";
+        why += path;
+        throw std::runtime_error(why);
+    }
+    std::vector<std::uint32_t> w(static_cast<std::size_t>(in.tellg()) / 4);
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(w.data()), static_cast<std::streamsize>(w.size() * 4));
+    return w;
+}
+
+std::string shader_file(const std::string& dir, unsigned max_factor, const char* suffix) {
+    std::string path = dir;
+    path += "/ctess_cp_";
+    path += std::to_string(max_factor);
+    path += suffix;
+    return path;
+}
+
+} // namespace
+
+PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_factor, const Scene& scene) {
+    static_assert(sizeof(rt::PatchRecord) == patch_words * 4 && sizeof(rt::TessVertex) == 40);
+    const std::array<std::uint32_t, 10> params = pipeline_params(scene);
+    const std::vector<std::uint32_t> tables = read_words(shader_file(dir, max_factor, ".tables.bin"));
+    const std::uint32_t n = scene.patch_count();
+    const std::size_t b_params = vk.create_buffer(sizeof params);
+    vk.upload(b_params, params.data(), sizeof params);
+    const std::size_t b_tables = vk.create_buffer(tables.size() * 4);
+    vk.upload(b_tables, tables.data(), tables.size() * 4);
+    const std::size_t b_mesh = vk.create_buffer(scene.vertices.size() * 4);
+    vk.upload(b_mesh, scene.vertices.data(), scene.vertices.size() * 4);
+    const std::size_t b_indices = vk.create_buffer(scene.indices.size() * 4);
+    vk.upload(b_indices, scene.indices.data(), scene.indices.size() * 4);
+    const std::size_t b_patches = vk.create_buffer((std::size_t{n} * patch_words + 2) * 4);
+    const std::size_t b_none = vk.create_buffer(16);
+
+    const std::size_t setup = vk.create_pipeline(shader_file(dir, max_factor, "_patch_setup.spv"));
+    const std::size_t scan = vk.create_pipeline(shader_file(dir, max_factor, "_prefix_sum.spv"));
+    const std::size_t emit_v = vk.create_pipeline(shader_file(dir, max_factor, "_emit_vertices.spv"));
+    const std::size_t emit_t = vk.create_pipeline(shader_file(dir, max_factor, "_emit_triangles.spv"));
+
+    PipelineOutput out;
+    const std::size_t first[] = {b_params, b_tables, b_mesh, b_indices, b_patches, b_none, b_none};
+    const VkCompute::Dispatch counts[] = {{setup, (n + 63) / 64}, {scan, 1}};
+    out.milliseconds = vk.run(first, counts);
+    const auto* p = static_cast<const std::uint32_t*>(vk.mapped(b_patches));
+    out.patches.assign(p, p + std::size_t{n} * patch_words + 2);
+    const std::uint32_t total_v = out.patches[std::size_t{n} * patch_words];
+    const std::uint32_t total_t = out.patches[std::size_t{n} * patch_words + 1];
+
+    const std::size_t b_vertices = vk.create_buffer(std::size_t{total_v} * 40);
+    const std::size_t b_out_indices = vk.create_buffer(std::size_t{total_t} * 12);
+    const std::size_t second[] = {b_params,  b_tables,   b_mesh,       b_indices,
+                                  b_patches, b_vertices, b_out_indices};
+    const std::uint32_t groups = n < 65535 ? n : 65535;
+    const VkCompute::Dispatch emits[] = {{emit_v, groups}, {emit_t, groups}};
+    out.milliseconds += vk.run(second, emits);
+    const auto* v = static_cast<const std::uint32_t*>(vk.mapped(b_vertices));
+    out.vertices.assign(v, v + std::size_t{total_v} * 10);
+    const auto* i = static_cast<const std::uint32_t*>(vk.mapped(b_out_indices));
+    out.indices.assign(i, i + std::size_t{total_t} * 3);
+    return out;
+}
+
+// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 2, params[10], vertex floats, index count, then the
+// vertex floats and the indices. Result file: "CTGO", patch words, vertex words, index words, milliseconds
+// (float bits), then the three arrays.
+PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
+                        unsigned max_factor, const Scene& scene, const std::string& work_file) {
+    const std::array<std::uint32_t, 10> params = pipeline_params(scene);
+    const std::string scene_path = work_file + ".scene";
+    const std::string result_path = work_file + ".result";
+    {
+        std::ofstream f(scene_path, std::ios::binary);
+        const std::uint32_t head[] = {0x43535443u, 2u};
+        f.write(reinterpret_cast<const char*>(head), sizeof head);
+        f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
+        const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
+                                       static_cast<std::uint32_t>(scene.indices.size())};
+        f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);
+        f.write(reinterpret_cast<const char*>(scene.vertices.data()),
+                static_cast<std::streamsize>(scene.vertices.size() * 4));
+        f.write(reinterpret_cast<const char*>(scene.indices.data()),
+                static_cast<std::streamsize>(scene.indices.size() * 4));
+        if (!f) throw std::runtime_error("cannot write the scene file");
+    }
+    std::remove(result_path.c_str());
+    std::string cmd = node;
+    cmd += " ";
+    cmd += script;
+    cmd += " ";
+    cmd += shader_dir;
+    cmd += " ";
+    cmd += std::to_string(max_factor);
+    cmd += " ";
+    cmd += scene_path;
+    cmd += " ";
+    cmd += result_path;
+    if (std::system(cmd.c_str()) != 0) {
+        std::string why = "the Dawn run failed: ";
+        why += cmd;
+        throw std::runtime_error(why);
+    }
+    const std::vector<std::uint32_t> r = read_words(result_path);
+    if (r.size() < 5 || r[0] != 0x4F475443u) throw std::runtime_error("bad Dawn result file");
+    const std::size_t np = r[1], nv = r[2], ni = r[3];
+    if (r.size() != 5 + np + nv + ni) throw std::runtime_error("truncated Dawn result file");
+    PipelineOutput out;
+    out.milliseconds = bits_float(r[4]);
+    out.patches.assign(r.begin() + 5, r.begin() + 5 + static_cast<std::ptrdiff_t>(np));
+    out.vertices.assign(r.begin() + 5 + static_cast<std::ptrdiff_t>(np),
+                        r.begin() + 5 + static_cast<std::ptrdiff_t>(np + nv));
+    out.indices.assign(r.begin() + 5 + static_cast<std::ptrdiff_t>(np + nv), r.end());
+    return out;
+}
+
+} // namespace ctess::gpu_test

@@ -1,0 +1,133 @@
+// Test meshes for the GPU pipeline tests, in the mesh pipeline's vertex layout (8 floats: position, normal,
+// uv).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <ctess/runtime/mesh_pipeline.hpp>
+
+namespace ctess::gpu_test {
+
+struct Scene {
+    std::vector<float> vertices;
+    std::vector<std::uint32_t> indices;
+    rt::PipelineOptions options;
+
+    rt::MeshView view() const {
+        return {vertices.data(), static_cast<std::uint32_t>(vertices.size() / rt::mesh_vertex_floats),
+                indices.data(), static_cast<std::uint32_t>(indices.size() / 3)};
+    }
+    std::uint32_t patch_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+};
+
+namespace detail {
+inline std::uint32_t hash(std::uint32_t x) { // small integer hash for deterministic jitter
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+inline float unit(std::uint32_t x) {
+    return static_cast<float>(hash(x) >> 8) * (1.0f / 16777216.0f);
+}
+inline void push_vertex(Scene& s, rt::Vec3 p, rt::Vec3 n, float u, float v) {
+    s.vertices.insert(s.vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z, u, v});
+}
+} // namespace detail
+
+// A wavy height field over a grid whose column widths grow geometrically by 3 * max_factor overall and whose
+// row heights grow by 16, seen from above at a distance: the edge factors cover every octave of [1, max] and
+// both clamps (below 1, above max), over cells x cells x 2 patches, while the long thin patches of the wide
+// columns keep the output near a million vertices at max 256.
+inline Scene factor_sweep_grid(unsigned max_factor, unsigned cells, rt::Surface surface) {
+    Scene s;
+    const auto axis = [cells](float growth, std::uint32_t seed) {
+        const float ratio = std::pow(growth, 1.0f / static_cast<float>(cells - 1));
+        std::vector<float> coord(cells + 1, 0.0f);
+        float width = 1.0f;
+        for (unsigned i = 0; i < cells; ++i) {
+            coord[i + 1] = coord[i] + width * (0.75f + 0.5f * detail::unit(seed + i));
+            width *= ratio;
+        }
+        return coord;
+    };
+    const std::vector<float> xs = axis(3.0f * static_cast<float>(max_factor), 0);
+    const std::vector<float> ys = axis(16.0f, 1000);
+    const float extent = xs[cells];
+    for (unsigned j = 0; j <= cells; ++j) {
+        for (unsigned i = 0; i <= cells; ++i) {
+            const float x = xs[i] / extent, y = ys[j] / extent;
+            const float h = 0.02f * std::sin(9.0f * x) * std::cos(7.0f * y);
+            const rt::Vec3 n = rt::normalize_or_zero({-0.18f * std::cos(9.0f * x) * std::cos(7.0f * y),
+                                                      0.14f * std::sin(9.0f * x) * std::sin(7.0f * y), 1.0f});
+            detail::push_vertex(s, {x, y, h}, n, x, y);
+        }
+    }
+    for (unsigned j = 0; j < cells; ++j) {
+        for (unsigned i = 0; i < cells; ++i) {
+            const std::uint32_t a = j * (cells + 1) + i, b = a + 1, c = a + cells + 1, d = c + 1;
+            if ((i + j) % 2 == 0)
+                s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
+            else
+                s.indices.insert(s.indices.end(), {a, b, c, b, d, c});
+        }
+    }
+    // Seen from above at distance about 1.5: the smallest cells (width 1/extent) give factors near 0.5.
+    s.options.dice.eye = {0.5f, 0.5f * ys[cells] / extent, 1.5f};
+    s.options.dice.dice_rate = 2.0f;
+    s.options.dice.projection_scale = 1.0f * 1.5f * extent;
+    s.options.surface = {surface, 0.75f};
+    return s;
+}
+
+// A subdivided icosahedron (closed, every edge shared by two triangles) around the origin, with per-vertex
+// normals tilted away from the sphere's so that PN and Phong bend the surface; the eye sits outside it.
+inline Scene icosphere(unsigned subdivisions, rt::Surface surface, float dice_rate) {
+    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    std::vector<rt::Vec3> p = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                               {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& v : p) v = rt::normalize_or_zero(v);
+    std::vector<std::uint32_t> tri = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                      4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                      6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
+    for (unsigned level = 0; level < subdivisions; ++level) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+        auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = std::minmax(a, b);
+            const auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            p.push_back(rt::normalize_or_zero(0.5f * (p[a] + p[b])));
+            const auto index = static_cast<std::uint32_t>(p.size() - 1);
+            mid.emplace(key, index);
+            return index;
+        };
+        std::vector<std::uint32_t> next;
+        for (std::size_t k = 0; k < tri.size(); k += 3) {
+            const std::uint32_t a = tri[k], b = tri[k + 1], c = tri[k + 2];
+            const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+            next.insert(next.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
+        }
+        tri = std::move(next);
+    }
+    Scene s;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+        const rt::Vec3 tilt = {detail::unit(3 * i) - 0.5f, detail::unit(3 * i + 1) - 0.5f,
+                               detail::unit(3 * i + 2) - 0.5f};
+        const rt::Vec3 n = rt::normalize_or_zero(p[i] + 0.6f * tilt);
+        detail::push_vertex(s, p[i], n, 0.5f + 0.5f * p[i].x, 0.5f + 0.5f * p[i].y);
+    }
+    s.indices = std::move(tri);
+    s.options.dice.eye = {0.3f, 0.4f, 2.2f};
+    s.options.dice.dice_rate = dice_rate;
+    s.options.dice.projection_scale = 800.0f;
+    s.options.surface = {surface, 1.0f};
+    return s;
+}
+
+} // namespace ctess::gpu_test

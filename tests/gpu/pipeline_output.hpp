@@ -1,0 +1,141 @@
+// The CP mesh pipeline's outputs as the GPU buffers lay them out, the CPU reference run that fills them
+// (runtime/include/ctess/runtime/mesh_pipeline.hpp), and their comparison. No GPU API here: the CPU tests use
+// it too.
+#pragma once
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <ctess/runtime/mesh_pipeline.hpp>
+
+#include "gpu_scenes.hpp"
+
+namespace ctess::gpu_test {
+
+inline std::uint32_t float_bits(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, 4);
+    return u;
+}
+inline float bits_float(std::uint32_t u) {
+    float f;
+    std::memcpy(&f, &u, 4);
+    return f;
+}
+inline constexpr std::uint32_t patch_words = 16;
+
+struct PipelineOutput {
+    std::vector<std::uint32_t> patches;  // PatchRecord words per patch, then the two totals
+    std::vector<std::uint32_t> vertices; // TessVertex words
+    std::vector<std::uint32_t> indices;
+    double milliseconds = 0.0; // GPU: submit to completion of all four passes; CPU: the whole pipeline
+    std::uint32_t total_vertices() const { return static_cast<std::uint32_t>(vertices.size() / 10); }
+    std::uint32_t total_triangles() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+};
+
+// The params buffer: patch count, surface, alpha bits, factor scale bits, eye xyz bits, mesh vertex count,
+// and the patch range [first, end) of the emit passes (all of them here).
+inline std::array<std::uint32_t, 10> pipeline_params(const Scene& scene) {
+    const rt::PipelineOptions& o = scene.options;
+    return {scene.patch_count(),
+            static_cast<std::uint32_t>(o.surface.surface),
+            float_bits(o.surface.alpha),
+            float_bits(o.dice.factor_scale()),
+            float_bits(o.dice.eye.x),
+            float_bits(o.dice.eye.y),
+            float_bits(o.dice.eye.z),
+            static_cast<std::uint32_t>(scene.vertices.size() / rt::mesh_vertex_floats),
+            0u,
+            scene.patch_count()};
+}
+
+inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) {
+    PipelineOutput out;
+    const auto start = std::chrono::steady_clock::now();
+    const rt::MeshView mesh = scene.view();
+    std::vector<rt::PatchRecord> patches(mesh.triangle_count);
+    rt::PipelineTotals totals;
+    if (!rt::setup_patches(tables, mesh, scene.options, patches, totals))
+        throw std::runtime_error("setup_patches");
+    std::vector<rt::TessVertex> vertices(totals.vertices);
+    out.indices.resize(std::size_t{totals.triangles} * 3);
+    if (!rt::emit_mesh(tables, mesh, scene.options, patches, vertices, out.indices))
+        throw std::runtime_error("emit_mesh");
+    out.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    out.patches.resize(patches.size() * patch_words + 2);
+    std::memcpy(out.patches.data(), patches.data(), patches.size() * sizeof(rt::PatchRecord));
+    out.patches[patches.size() * patch_words] = totals.vertices;
+    out.patches[patches.size() * patch_words + 1] = totals.triangles;
+    out.vertices.resize(vertices.size() * 10);
+    std::memcpy(out.vertices.data(), vertices.data(), vertices.size() * sizeof(rt::TessVertex));
+    return out;
+}
+
+struct Comparison {
+    std::size_t patch_mismatches = 0; // words of the patch records and totals
+    std::size_t barycentric_mismatches = 0;
+    std::size_t index_mismatches = 0;
+    std::size_t position_outside = 0;  // |gpu - cpu| > 1e-5 * max(1, |cpu|), per component
+    std::size_t attribute_outside = 0; // normals and uvs, same bound
+    double max_position_error = 0.0;   // relative, as above
+    bool sizes_match = false;
+    std::string first_difference;
+    bool equal() const {
+        return sizes_match && patch_mismatches == 0 && barycentric_mismatches == 0 && index_mismatches == 0 &&
+               position_outside == 0 && attribute_outside == 0;
+    }
+};
+inline Comparison compare(const PipelineOutput& cpu, const PipelineOutput& gpu) {
+    Comparison c;
+    c.sizes_match = cpu.patches.size() == gpu.patches.size() && cpu.vertices.size() == gpu.vertices.size() &&
+                    cpu.indices.size() == gpu.indices.size();
+    auto note = [&c](const char* what, std::size_t at, double a, double b) {
+        if (!c.first_difference.empty()) return;
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s at word %zu: cpu %.9g, gpu %.9g", what, at, a, b);
+        c.first_difference = buf;
+    };
+    if (!c.sizes_match) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "sizes differ: patches %zu/%zu vertices %zu/%zu indices %zu/%zu",
+                      cpu.patches.size(), gpu.patches.size(), cpu.vertices.size() / 10,
+                      gpu.vertices.size() / 10, cpu.indices.size(), gpu.indices.size());
+        c.first_difference = buf;
+    }
+    for (std::size_t k = 0; k < cpu.patches.size() && k < gpu.patches.size(); ++k)
+        if (cpu.patches[k] != gpu.patches[k]) {
+            ++c.patch_mismatches;
+            note("patch record", k, cpu.patches[k], gpu.patches[k]);
+        }
+    for (std::size_t k = 0; k < cpu.indices.size() && k < gpu.indices.size(); ++k)
+        if (cpu.indices[k] != gpu.indices[k]) {
+            ++c.index_mismatches;
+            note("index", k, cpu.indices[k], gpu.indices[k]);
+        }
+    for (std::size_t v = 0; v + 10 <= cpu.vertices.size() && v + 10 <= gpu.vertices.size(); v += 10) {
+        for (std::size_t k = 0; k < 2; ++k)
+            if (cpu.vertices[v + k] != gpu.vertices[v + k]) {
+                ++c.barycentric_mismatches;
+                note("barycentric", v + k, cpu.vertices[v + k], gpu.vertices[v + k]);
+            }
+        for (std::size_t k = 2; k < 10; ++k) {
+            const double a = bits_float(cpu.vertices[v + k]), b = bits_float(gpu.vertices[v + k]);
+            const double err = std::fabs(a - b) / std::fmax(1.0, std::fabs(a));
+            if (k < 5) c.max_position_error = std::fmax(c.max_position_error, err);
+            if (!(err <= 1e-5)) {
+                ++(k < 5 ? c.position_outside : c.attribute_outside);
+                note(k < 5 ? "position" : "normal/uv", v + k, a, b);
+            }
+        }
+    }
+    return c;
+}
+
+} // namespace ctess::gpu_test

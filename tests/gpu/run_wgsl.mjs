@@ -1,0 +1,129 @@
+// Runs the generated WGSL CP mesh pipeline on Dawn (npm `webgpu`) and writes every output buffer to a file.
+//   node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE
+// Backend: Dawn's OpenGL ES backend on Mesa's llvmpipe in compatibility mode, with EGL_PLATFORM=surfaceless
+// (shared/notes/tooling.md §5: Dawn's Vulkan backend rejects bookworm's lavapipe). CTESS_DAWN_BACKEND
+// overrides the backend flag (e.g. "vulkan" on a machine with a newer driver).
+// File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message.
+import { readFileSync, writeFileSync } from 'node:fs';
+import { create, globals } from 'webgpu';
+
+Object.assign(globalThis, globals);
+const fail = (msg) => { console.error(`run_wgsl: ${msg}`); process.exit(1); };
+const [dir, max, scenePath, resultPath] = process.argv.slice(2);
+if (!resultPath) fail('usage: node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE');
+process.env.EGL_PLATFORM ??= 'surfaceless';
+const backend = process.env.CTESS_DAWN_BACKEND ?? 'opengles';
+const adapter = await create([`backend=${backend}`]).requestAdapter({ featureLevel: 'compatibility' });
+if (!adapter) fail(`no Dawn adapter for backend=${backend} (Mesa's EGL/GLES on llvmpipe are needed)`);
+const limits = adapter.limits;
+const device = await adapter.requestDevice({
+    requiredLimits: {
+        maxStorageBuffersPerShaderStage: limits.maxStorageBuffersPerShaderStage,
+        maxStorageBufferBindingSize: limits.maxStorageBufferBindingSize,
+        maxBufferSize: limits.maxBufferSize,
+    },
+});
+let deviceError = null;
+device.addEventListener('uncapturederror', (e) => { deviceError ??= e.error.message; });
+
+const scene = new Uint32Array(readFileSync(scenePath).buffer.slice(0));
+if (scene[0] !== 0x43535443 || scene[1] !== 2) fail('bad scene file');
+const params = scene.slice(2, 12);
+const vertexFloats = scene[12], indexCount = scene[13];
+const meshVertices = scene.slice(14, 14 + vertexFloats);
+const meshIndices = scene.slice(14 + vertexFloats, 14 + vertexFloats + indexCount);
+const n = params[0];
+const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}.tables.bin`).buffer.slice(0));
+
+device.pushErrorScope('validation');
+const module = device.createShaderModule({ code: readFileSync(`${dir}/ctess_cp_${max}.wgsl`, 'utf8') });
+for (const m of (await module.getCompilationInfo()).messages) if (m.type === 'error') fail(`WGSL ${m.lineNum}:${m.linePos}: ${m.message}`);
+const entries = [];
+for (let i = 0; i < 7; i++) {
+    entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < 4 ? 'read-only-storage' : 'storage' } });
+}
+const layout = device.createBindGroupLayout({ entries });
+const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
+const pipeline = (entryPoint) => device.createComputePipeline({ layout: pipelineLayout, compute: { module, entryPoint } });
+const setup = pipeline('ctess_patch_setup'), scan = pipeline('ctess_prefix_sum');
+const emitV = pipeline('ctess_emit_vertices'), emitT = pipeline('ctess_emit_triangles');
+const creationError = await device.popErrorScope();
+if (creationError) fail(creationError.message);
+
+const storage = (words, data) => {
+    const buffer = device.createBuffer({
+        size: Math.max(16, words * 4),
+        usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST,
+    });
+    if (data) device.queue.writeBuffer(buffer, 0, data);
+    return buffer;
+};
+const read = async (buffer, words) => {
+    const staging = device.createBuffer({ size: Math.max(16, words * 4), usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+    const enc = device.createCommandEncoder();
+    enc.copyBufferToBuffer(buffer, 0, staging, 0, Math.max(16, words * 4));
+    device.queue.submit([enc.finish()]);
+    await staging.mapAsync(GPUMapMode.READ);
+    const out = new Uint32Array(staging.getMappedRange().slice(0, words * 4));
+    staging.unmap();
+    staging.destroy();
+    return out;
+};
+const run = async (buffers, dispatches) => {
+    const bindGroup = device.createBindGroup({ layout, entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })) });
+    const enc = device.createCommandEncoder();
+    for (const [p, groups] of dispatches) {
+        const pass = enc.beginComputePass();
+        pass.setPipeline(p);
+        pass.setBindGroup(0, bindGroup);
+        pass.dispatchWorkgroups(groups);
+        pass.end();
+    }
+    const start = performance.now();
+    device.queue.submit([enc.finish()]);
+    await device.queue.onSubmittedWorkDone();
+    return performance.now() - start;
+};
+
+const bParams = storage(params.length, params), bTables = storage(tables.length, tables);
+const bMesh = storage(meshVertices.length, meshVertices), bIndices = storage(meshIndices.length, meshIndices);
+const patchWords = n * 16 + 2;
+const bPatches = storage(patchWords), bNone = storage(4), bNone2 = storage(4);
+let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.ceil(n / 64)], [scan, 1]]);
+const patches = await read(bPatches, patchWords);
+const totalV = patches[n * 16], totalT = patches[n * 16 + 1];
+// Dawn's GLES backend on bookworm's llvmpipe aborts the process (std::system_error in a futex) once a storage
+// binding passes about 32 MiB, below the advertised maxStorageBufferBindingSize: refuse clearly instead.
+const maxBinding = Math.min(limits.maxStorageBufferBindingSize, 32 << 20);
+if (totalV * 40 > maxBinding || totalT * 12 > maxBinding) {
+    fail(`${totalV} vertices / ${totalT} triangles need more than ${maxBinding} bytes in one storage binding`);
+}
+const bVertices = storage(totalV * 10), bOut = storage(totalT * 3);
+// Emit in batches of about 128k vertices, one submit each: Dawn's GL backend aborts on one very long submit.
+const batchVertices = 1 << 17;
+for (let first = 0; first < n;) {
+    let end = first, vertices = 0;
+    while (end < n && (end === first || vertices + patches[end * 16 + 7] <= batchVertices)) vertices += patches[16 * end++ + 7];
+    params[8] = first;
+    params[9] = end;
+    device.queue.writeBuffer(bParams, 0, params);
+    const groups = Math.min(end - first, 65535);
+    ms += await run([bParams, bTables, bMesh, bIndices, bPatches, bVertices, bOut], [[emitV, groups], [emitT, groups]]);
+    first = end;
+}
+const vertices = await read(bVertices, totalV * 10);
+const indices = await read(bOut, totalT * 3);
+if (deviceError) fail(deviceError);
+
+const header = new Uint32Array([0x4F475443, patches.length, vertices.length, indices.length, 0]);
+new Float32Array(header.buffer, 16, 1)[0] = ms;
+const result = new Uint32Array(header.length + patches.length + vertices.length + indices.length);
+result.set(header, 0);
+result.set(patches, header.length);
+result.set(vertices, header.length + patches.length);
+result.set(indices, header.length + patches.length + vertices.length);
+writeFileSync(resultPath, result);
+const info = adapter.info ?? {};
+console.log(`run_wgsl: ${info.description ?? backend}: ${n} patches, ${totalV} vertices, ${totalT} triangles, ${ms.toFixed(2)} ms`);
+device.destroy();
+process.exit(0);

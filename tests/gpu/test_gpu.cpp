@@ -1,0 +1,111 @@
+// The generated shaders against the CPU mesh pipeline, on one backend per build of this file:
+// CTESS_GPU_VULKAN (GLSL -> SPIR-V on lavapipe) or CTESS_GPU_DAWN (WGSL on Dawn's GLES backend, llvmpipe).
+// Both maximum factors run in every build. No test skips: a missing driver or node module is a failure.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <ctess/runtime/cp_table_set.hpp>
+
+#include "gpu_checks.hpp"
+#include "gpu_pipeline.hpp"
+
+using namespace ctess;
+using namespace ctess::gpu_test;
+
+namespace {
+
+const rt::CpTableSet& tables_for(unsigned max_factor) {
+    return max_factor == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
+}
+
+#if defined(CTESS_GPU_VULKAN)
+const char* const backend_name = "Vulkan (lavapipe)";
+VkCompute& device() {
+    static std::unique_ptr<VkCompute> vk = std::make_unique<VkCompute>();
+    return *vk;
+}
+PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char*) {
+    return run_vulkan(device(), CTESS_SHADER_DIR, max_factor, scene);
+}
+#elif defined(CTESS_GPU_DAWN)
+const char* const backend_name = "Dawn (OpenGL ES on llvmpipe)";
+PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name) {
+    std::string work = CTESS_WORK_DIR;
+    work += "/dawn_";
+    work += name;
+    work += "_";
+    work += std::to_string(max_factor);
+    return run_dawn(CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work);
+}
+#else
+#error "define CTESS_GPU_VULKAN or CTESS_GPU_DAWN"
+#endif
+
+const char* surface_name(rt::Surface s) {
+    return s == rt::Surface::flat ? "flat" : s == rt::Surface::pn_triangles ? "PN" : "Phong";
+}
+
+void check_parity(unsigned max_factor, rt::Surface surface) {
+    const Scene scene = factor_sweep_grid(max_factor, 24, surface);
+    REQUIRE(scene.patch_count() >= 1000);
+    const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
+    const PipelineOutput gpu = run_gpu(max_factor, scene, "parity");
+    const Comparison c = compare(cpu, gpu);
+    std::printf(
+        "%s, max %u, %s: %u patches, %u vertices, %u triangles; GPU %.1f ms, CPU %.1f ms; max position "
+        "error %.2g\n",
+        backend_name, max_factor, surface_name(surface), scene.patch_count(), cpu.total_vertices(),
+        cpu.total_triangles(), gpu.milliseconds, cpu.milliseconds, c.max_position_error);
+    INFO(c.first_difference);
+    CHECK(c.sizes_match);
+    CHECK(c.patch_mismatches == 0);
+    CHECK(c.barycentric_mismatches == 0);
+    CHECK(c.index_mismatches == 0);
+    CHECK(c.position_outside == 0);
+    CHECK(c.attribute_outside == 0);
+    // The factors cover [1, max]: every octave has edges, and so do both clamps.
+    const std::vector<std::size_t> octaves = factor_octaves(cpu, scene.patch_count(), max_factor);
+    for (std::size_t k = 0; k < octaves.size(); ++k) {
+        INFO("octave bin " << k);
+        CHECK(octaves[k] > 0);
+    }
+}
+
+void check_watertight(unsigned max_factor, rt::Surface surface) {
+    const Scene scene = icosphere(3, surface, max_factor == 64 ? 4.0f : 3.0f);
+    const PipelineOutput gpu = run_gpu(max_factor, scene, "crack");
+    const CrackReport r = crack_check(scene, gpu);
+    std::printf("%s, max %u, %s icosphere: %u patches, %zu shared edges, %zu edge points, %zu mismatches\n",
+                backend_name, max_factor, surface_name(surface), scene.patch_count(), r.shared_edges,
+                r.edge_points, r.position_mismatches);
+    CHECK(r.shared_edges == scene.patch_count() * 3 / 2); // closed: every edge has two patches
+    CHECK(r.edge_points > 3 * r.shared_edges);
+    CHECK(r.unmatched_points == 0);
+    CHECK(r.position_mismatches == 0);
+    // The GPU's icosphere equals the CPU's as well.
+    const Comparison c = compare(run_cpu(tables_for(max_factor), scene), gpu);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+}
+
+} // namespace
+
+TEST_CASE("GPU parity: 1152-patch factor sweep, max 64, flat, PN and Phong") {
+    check_parity(64, rt::Surface::flat);
+    check_parity(64, rt::Surface::pn_triangles);
+    check_parity(64, rt::Surface::phong);
+}
+
+TEST_CASE("GPU parity: 1152-patch factor sweep, max 256, PN") {
+    check_parity(256, rt::Surface::pn_triangles);
+}
+
+TEST_CASE("GPU crack test: icosphere with PN and Phong is watertight, max 64 and 256") {
+    for (unsigned max_factor : {64u, 256u}) {
+        check_watertight(max_factor, rt::Surface::pn_triangles);
+        check_watertight(max_factor, rt::Surface::phong);
+    }
+}

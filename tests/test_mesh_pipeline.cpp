@@ -1,0 +1,195 @@
+// The CPU mesh pipeline (runtime/include/ctess/runtime/mesh_pipeline.hpp): tess factors, orientation, counts
+// and prefix sums, vertices and triangles, and its documented results for bad input. The GPU tests compare
+// the shaders with this pipeline; here it is checked on its own.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <ctess/cp_pattern.hpp>
+#include <ctess/runtime/mesh_pipeline.hpp>
+
+#include "gpu_checks.hpp"
+#include "pipeline_output.hpp"
+
+using namespace ctess;
+using namespace ctess::gpu_test;
+
+namespace {
+const rt::CpTableSet& tables_for(unsigned max_factor) {
+    return max_factor == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
+}
+} // namespace
+
+TEST_CASE("edge factor: projected length over DiceRate, symmetric in the endpoints") {
+    const rt::Vec3 eye{0.0f, 0.0f, 0.0f};
+    // An edge of length 1 at distance 10, 1000 px per unit at distance 1, DiceRate 2: 1 * 1000 / 10 / 2 = 50.
+    const rt::DiceOptions dice{eye, 1000.0f, 2.0f};
+    const rt::Vec3 a{-0.5f, 0.0f, 10.0f}, b{0.5f, 0.0f, 10.0f};
+    CHECK(rt::edge_tess_factor(a, b, eye, dice.factor_scale()) == Approx(50.0f).epsilon(1e-6));
+    CHECK(rt::edge_tess_factor(a, b, eye, dice.factor_scale()) ==
+          rt::edge_tess_factor(b, a, eye, dice.factor_scale()));
+    // Twice as far, half the factor; DiceRate 1 doubles it.
+    const rt::Vec3 a2{-0.5f, 0.0f, 20.0f}, b2{0.5f, 0.0f, 20.0f};
+    CHECK(rt::edge_tess_factor(a2, b2, eye, dice.factor_scale()) == Approx(25.0f).epsilon(1e-6));
+    CHECK(rt::edge_tess_factor(a, b, eye, rt::DiceOptions{eye, 1000.0f, 1.0f}.factor_scale()) ==
+          Approx(100.0f).epsilon(1e-6));
+}
+
+TEST_CASE("edge factor bad input: eye on the midpoint gives +inf (max), a point edge at the eye NaN (T0)") {
+    const rt::Vec3 a{-1.0f, 0.0f, 0.0f}, b{1.0f, 0.0f, 0.0f}, eye{0.0f, 0.0f, 0.0f};
+    const float f = rt::edge_tess_factor(a, b, eye, 500.0f);
+    CHECK(std::isinf(f));
+    CHECK(cp::line_state(f, 64) == cp::LineState{cp::token_count(64) - 1, cp::lerp_one});
+    const float g = rt::edge_tess_factor(eye, eye, eye, 500.0f);
+    CHECK(std::isnan(g));
+    CHECK(cp::line_state(g, 64) == cp::LineState{0, 0});
+}
+
+TEST_CASE("mesh pipeline: records, prefix sums and emitted patches match CpPatch and cp::tessellate") {
+    for (unsigned max_factor : {64u, 256u}) {
+        const Scene scene = factor_sweep_grid(max_factor, 6, rt::Surface::flat);
+        const rt::MeshView mesh = scene.view();
+        std::vector<rt::PatchRecord> rec(mesh.triangle_count);
+        rt::PipelineTotals totals;
+        REQUIRE(rt::setup_patches(tables_for(max_factor), mesh, scene.options, rec, totals));
+        std::uint32_t v = 0, t = 0;
+        for (std::uint32_t p = 0; p < mesh.triangle_count; ++p) {
+            CHECK(rec[p].first_vertex == v);
+            CHECK(rec[p].first_triangle == t);
+            v += rec[p].vertex_count;
+            t += rec[p].triangle_count;
+            // The smallest base edge is the pattern's e2.
+            float len2[3];
+            for (unsigned k = 0; k < 3; ++k) {
+                const float* a = &scene.vertices[scene.indices[3 * p + k] * 8];
+                const float* b = &scene.vertices[scene.indices[3 * p + (k + 1) % 3] * 8];
+                len2[k] = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                          (b[2] - a[2]) * (b[2] - a[2]);
+            }
+            const unsigned e2 = (rec[p].rotation + 2) % 3;
+            CHECK(len2[e2] <= len2[(e2 + 1) % 3]);
+            CHECK(len2[e2] <= len2[(e2 + 2) % 3]);
+        }
+        CHECK(totals.vertices == v);
+        CHECK(totals.triangles == t);
+        std::vector<rt::TessVertex> vertices(totals.vertices);
+        std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
+        REQUIRE(rt::emit_mesh(tables_for(max_factor), mesh, scene.options, rec, vertices, indices));
+        // Each patch equals the procedural generator's pattern, rotated onto the base triangle.
+        const cp::PatternCounts most = cp::max_pattern_counts(max_factor);
+        std::vector<DomainPoint> pv(most.vertices);
+        std::vector<std::uint32_t> pi(3 * std::size_t{most.triangles});
+        for (std::uint32_t p = 0; p < mesh.triangle_count; ++p) {
+            const cp::PatternOptions opt{max_factor};
+            const cp::PatternCounts n = cp::tessellate(
+                cp::LineState{rec[p].token[0], rec[p].t16[0]}, cp::LineState{rec[p].token[1], rec[p].t16[1]},
+                cp::LineState{rec[p].token[2], rec[p].t16[2]}, opt, pv.data(), pi.data());
+            REQUIRE(n.vertices == rec[p].vertex_count);
+            REQUIRE(n.triangles == rec[p].triangle_count);
+            const cp::Rotation rot{static_cast<std::uint8_t>(rec[p].rotation)};
+            for (std::uint32_t i = 0; i < n.vertices; ++i) {
+                const DomainPoint base = cp::to_base_point(rot, pv[i]);
+                const rt::TessVertex& out = vertices[rec[p].first_vertex + i];
+                REQUIRE(out.u == base.u);
+                REQUIRE(out.v == base.v);
+            }
+            for (std::uint32_t k = 0; k < 3 * n.triangles; ++k)
+                REQUIRE(indices[3 * std::size_t{rec[p].first_triangle} + k] == rec[p].first_vertex + pi[k]);
+        }
+    }
+}
+
+TEST_CASE("mesh pipeline: flat vertices lie on the base triangle; corners are copied exactly") {
+    const Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
+    const PipelineOutput out = run_cpu(rt::cp_tables_64, scene);
+    for (std::uint32_t p = 0; p < scene.patch_count(); ++p) {
+        const std::uint32_t* rec = &out.patches[std::size_t{p} * 16];
+        for (std::uint32_t i = 0; i < rec[7]; ++i) {
+            const std::uint32_t* v = &out.vertices[(std::size_t{rec[9]} + i) * 10];
+            const double w[3] = {((1u << 24) - v[0] - v[1]) / 16777216.0, v[0] / 16777216.0,
+                                 v[1] / 16777216.0};
+            for (unsigned c = 0; c < 3; ++c) {
+                double expect = 0.0;
+                for (unsigned k = 0; k < 3; ++k)
+                    expect += w[k] * scene.vertices[scene.indices[3 * p + k] * 8 + c];
+                REQUIRE(bits_float(v[2 + c]) == Approx(expect).margin(1e-6));
+                for (unsigned k = 0; k < 3; ++k)
+                    if (w[k] == 1.0)
+                        REQUIRE(bits_float(v[2 + c]) == scene.vertices[scene.indices[3 * p + k] * 8 + c]);
+            }
+        }
+    }
+}
+
+TEST_CASE("mesh pipeline: a closed icosphere is watertight on the CPU with flat, PN and Phong") {
+    for (unsigned max_factor : {64u, 256u}) {
+        for (rt::Surface s : {rt::Surface::flat, rt::Surface::pn_triangles, rt::Surface::phong}) {
+            const Scene scene = icosphere(2, s, max_factor == 64 ? 4.0f : 2.0f);
+            const CrackReport r = crack_check(scene, run_cpu(tables_for(max_factor), scene));
+            CHECK(r.shared_edges == scene.patch_count() * 3 / 2);
+            CHECK(r.edge_points > 3 * r.shared_edges);
+            CHECK(r.unmatched_points == 0);
+            CHECK(r.position_mismatches == 0);
+        }
+    }
+}
+
+TEST_CASE("mesh pipeline: PN and Phong leave the flat plane and keep unit normals") {
+    const Scene flat = icosphere(1, rt::Surface::flat, 4.0f);
+    Scene pn = flat, phong = flat;
+    pn.options.surface.surface = rt::Surface::pn_triangles;
+    phong.options.surface.surface = rt::Surface::phong;
+    const PipelineOutput a = run_cpu(rt::cp_tables_64, flat), b = run_cpu(rt::cp_tables_64, pn),
+                         c = run_cpu(rt::cp_tables_64, phong);
+    REQUIRE(a.vertices.size() == b.vertices.size());
+    REQUIRE(a.vertices.size() == c.vertices.size());
+    std::size_t moved_pn = 0, moved_phong = 0;
+    for (std::size_t v = 0; v < a.vertices.size(); v += 10) {
+        moved_pn += a.vertices[v + 2] != b.vertices[v + 2];
+        moved_phong += a.vertices[v + 2] != c.vertices[v + 2];
+        for (const PipelineOutput* o : {&a, &b, &c}) {
+            const double nx = bits_float(o->vertices[v + 5]), ny = bits_float(o->vertices[v + 6]),
+                         nz = bits_float(o->vertices[v + 7]);
+            REQUIRE(std::sqrt(nx * nx + ny * ny + nz * nz) == Approx(1.0).margin(1e-5));
+        }
+    }
+    CHECK(moved_pn > a.vertices.size() / 20);
+    CHECK(moved_phong > a.vertices.size() / 20);
+}
+
+TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small spans write nothing") {
+    Scene scene = factor_sweep_grid(64, 3, rt::Surface::flat);
+    const std::uint32_t vertices = static_cast<std::uint32_t>(scene.vertices.size() / 8);
+    scene.indices[4] = vertices;    // patch 1
+    scene.indices[8] = 0xFFFFFFFFu; // patch 2
+    const rt::MeshView mesh = scene.view();
+    std::vector<rt::PatchRecord> rec(mesh.triangle_count);
+    rt::PipelineTotals totals;
+    REQUIRE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, rec, totals));
+    CHECK(rec[1].vertex_count == 0);
+    CHECK(rec[1].triangle_count == 0);
+    CHECK(rec[2].vertex_count == 0);
+    CHECK(rec[0].vertex_count > 0);
+    CHECK(rec[3].first_vertex == rec[0].vertex_count);
+    std::vector<rt::PatchRecord> too_few(mesh.triangle_count - 1);
+    CHECK_FALSE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, too_few, totals));
+    std::vector<rt::TessVertex> v(totals.vertices);
+    std::vector<std::uint32_t> idx(3 * std::size_t{totals.triangles});
+    std::vector<rt::TessVertex> v_short(totals.vertices - 1);
+    std::vector<std::uint32_t> idx_short(idx.size() - 1, 7u);
+    CHECK_FALSE(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v_short, idx));
+    CHECK_FALSE(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx_short));
+    CHECK(idx_short[0] == 7u);
+    CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx));
+    // NaN positions: factors become NaN, the CP line maps them to T0; nothing is undefined.
+    Scene nan_scene = factor_sweep_grid(64, 2, rt::Surface::pn_triangles);
+    for (std::size_t k = 0; k < nan_scene.vertices.size(); k += 8)
+        nan_scene.vertices[k] = std::numeric_limits<float>::quiet_NaN();
+    const PipelineOutput nan_out = run_cpu(rt::cp_tables_64, nan_scene);
+    for (std::uint32_t p = 0; p < nan_scene.patch_count(); ++p) {
+        CHECK(nan_out.patches[std::size_t{p} * 16 + 7] == 3); // T0 on every edge: the base triangle itself
+        CHECK(nan_out.patches[std::size_t{p} * 16 + 8] == 1);
+    }
+}
