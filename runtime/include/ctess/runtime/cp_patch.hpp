@@ -2,9 +2,10 @@
 // O(1), and a bulk emit into caller spans. Bit-identical to cp::tessellate with the default PatternOptions
 // (rule (b) columns, T0 collapse, provoking layout): same vertices, same triangles, same order.
 //
-// Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value (about
-// 400 bytes). The constructor precomputes a per-patch bucket table of the strips (O(h + 128) work), so
-// that triangle(p) is a bucket load plus a few branchless steps: build a patch once, query it many times.
+// Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value (560
+// bytes on LP64, 256 of them the strip buckets). The constructor precomputes a per-patch bucket table of the
+// strips (O(h + 256) work), so that triangle(p) is a bucket load plus one branchless step, and a copy's
+// vertex(i) reuses it: build a patch once, query it many times.
 //
 //   ctess::rt::CpPatch patch(ctess::rt::cp_tables_64, 5.0f, 9.0f, 3.0f);
 //   std::uint32_t n = patch.triangle_count();
@@ -18,7 +19,6 @@
 //   {0, 0, 0}; emit() returns false and writes nothing when a span is too small.
 #pragma once
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <span>
 
@@ -68,25 +68,35 @@ class CpPatch {
         std::uint32_t segments = 0;
         std::uint32_t half_step = 0;
         unsigned token = 0;
+        std::int32_t slide = 0; // half_step * (65536 - t16): a sliding point's offset from its final position
     };
     struct Skip { // a run of dropped raw triangles or slots
         std::uint32_t begin = 0;
         std::uint32_t length = 0;
     };
 
+    // Point i of edge e. start * 65536 + (fin - start) * t16 with start = fin + d (d = +half, -half or 0 by
+    // the slide) is fin * 65536 + d * (65536 - t16): one multiply by the slide's sign, no branch on it. The
+    // end points are selects too; every shape has at least 3 segments, so points[0] exists.
     static std::uint32_t point(const Edge& e, std::uint32_t i) noexcept {
-        if (i == 0) return 0;
-        if (i >= e.segments) return cp::fixed_one;
-        const std::uint32_t packed = e.points[i - 1];
-        const int fin = static_cast<int>(packed & cp::tables::point_final_mask);
+        const bool inside = i - 1u < e.segments - 1u;
+        const std::uint32_t packed = e.points[inside ? i - 1u : 0u];
         const std::uint32_t slide = packed >> cp::tables::point_slide_shift;
-        const int half = static_cast<int>(e.half_step);
-        const int start = slide == cp::tables::slide_down ? fin + half
-                          : slide == cp::tables::slide_up ? fin - half
-                                                          : fin;
-        return static_cast<std::uint32_t>(start * 65536 + (fin - start) * static_cast<int>(e.t16));
+        const int sign = static_cast<int>(slide & 1u) - static_cast<int>(slide >> 1); // none 0, down 1, up -1
+        const std::uint32_t value = static_cast<std::uint32_t>(
+            static_cast<int>(packed & cp::tables::point_final_mask) * 65536 + sign * e.slide);
+        const std::uint32_t end = i == 0 ? 0u : cp::fixed_one;
+        return inside ? value : end;
     }
     static DomainPoint e1_point(std::uint32_t s) noexcept { return {cp::fixed_one - s, s}; }
+    // Set bits of a 16-bit word, inline: without a popcount instruction in the baseline ISA (x86-64,
+    // Cortex-M), std::popcount becomes a library call.
+    static std::uint32_t popcount16(std::uint32_t x) noexcept {
+        x -= (x >> 1) & 0x5555u;
+        x = (x & 0x3333u) + ((x >> 2) & 0x3333u);
+        x = (x + (x >> 4)) & 0x0F0Fu;
+        return (x + (x >> 8)) & 0x1Fu;
+    }
     static std::uint32_t skip_forward(const Skip* skip, unsigned count, std::uint32_t i) noexcept {
         for (unsigned k = 0; k < count; ++k) i += i >= skip[k].begin ? skip[k].length : 0u;
         return i;
@@ -119,36 +129,34 @@ class CpPatch {
         const std::uint32_t i = n0_ - 1 - a;
         return col_index(i, col_rows(i) - 1);
     }
+    // Row j of column i: column 0 (u = 0) is never clamped, column i >= 1 is clamped to K - u.
     DomainPoint column_point(std::uint32_t i, std::uint32_t j) const noexcept {
         const std::uint32_t v2 = point(e_[2], j);
-        if (i == 0) return {0, v2};
         const std::uint32_t u = point(e_[0], i);
-        const std::uint32_t top = clamp_ > u ? clamp_ - u : 0u;
+        const std::uint32_t top = i == 0 ? ~0u : clamp_ > u ? clamp_ - u : 0u;
         return {u, v2 < top ? v2 : top};
     }
-    // Copy k of the provoking layout: column i >= 1, row j, k = D_i + j with D_i = (C_i - i) - (C_1 - 1).
-    DomainPoint copy_point(std::uint32_t k) const noexcept {
-        const std::uint16_t* c = c_;
-        const int t = static_cast<int>(k + c[1]) - 1;
-        auto y = [c](int x) { return static_cast<int>(c[x]) - x; };
-        const std::uint32_t i =
-            search_from(y, head_, t, search_first_guess(a_ - 1.0f, b_, static_cast<float>(t), head_));
-        return column_point(i, static_cast<std::uint32_t>(t - y(static_cast<int>(i))));
-    }
     DomainPoint type2_vertex(std::uint32_t v) const noexcept;
-    // Strip of raw triangle r < strips_: the largest i with PS_i = C_i + C_{i+1} - 2i - R_0 <= r. The bucket
-    // of r bounds it to [lo, hi]; a branchless search of the patch's fixed step count finishes.
-    std::uint32_t strip_of(std::uint32_t r) const noexcept {
-        const std::uint16_t* c = c_;
-        const std::uint32_t b = r >> bucket_shift_;
-        std::uint32_t lo = strip_bucket_[b];
-        const std::uint32_t hi = strip_bucket_[b + 1];
-        const std::uint32_t target = r + n2_; // PS_k <= r  <=>  C_k + C_{k+1} - 2k <= r + R_0
-        for (std::uint32_t half = bucket_half_; half != 0; half >>= 1) {
-            const std::uint32_t k = lo + half < hi ? lo + half : hi;
-            lo = c[k] + c[k + 1] - 2 * k <= target ? k : lo;
+    // Strip of raw triangle r < strips_: the largest i with PS_i = C_i + C_{i+1} - 2i - R_0 <= r. Bucket
+    // r >> bucket_shift_ holds the strip lo of its first triangle; most buckets hold at most one more strip
+    // start, which one branchless step settles. Strips get shorter towards the end, so the buckets that hold
+    // two or more lie at r >= wide_from_: a loop finishes those, a branch rarely taken (0.4 % of the strip
+    // triangles at (64, 64, 64), none at 8 or 32). Returns i; col points at C_i.
+    std::uint32_t strip_of(std::uint32_t r, const std::uint16_t*& col) const noexcept {
+        std::uint32_t i = strip_bucket_[r >> bucket_shift_];
+        const std::uint32_t target = r + n2_ + 2; // PS_{i+1} <= r  <=>  C_{i+1} + C_{i+2} <= r + R_0 + 2 + 2i
+        col = c_ + i;
+        const std::uint32_t step = col[1] + col[2] <= target + 2 * i ? 1u : 0u;
+        i += step;
+        col += step;
+        if (r >= wide_from_) [[unlikely]] {
+            while (col[1] + col[2] <= target + 2 * i) ++i, ++col; // PS_h = strips_ > r stops it
         }
-        return lo;
+        return i;
+    }
+    std::uint32_t strip_of(std::uint32_t r) const noexcept {
+        const std::uint16_t* col = nullptr;
+        return strip_of(r, col);
     }
     void build_strip_buckets() noexcept;
     CpTriangle strip_triangle(std::uint32_t r) const noexcept;
@@ -177,14 +185,15 @@ class CpPatch {
     const std::uint32_t* gap_ = nullptr;        // zipper words
     std::uint32_t head_ = 0, n0_ = 0, n1_ = 0, n2_ = 0;
     float a_ = 0.0f, b_ = 0.0f;
-    std::uint32_t copy_bias_ = 0; // copy of A_j in column i >= 1: C_i - i + j + copy_bias_
-    bool plain_ = false;          // Type 2 without a T0 edge: the fast paths, no skips
+    std::uint32_t copy_bias_ = 0;   // copy of A_j in column i >= 1: C_i - i + j + copy_bias_
+    bool plain_ = false;            // Type 2 without a T0 edge: the fast paths, no skips
+    std::uint32_t fast_strips_ = 0; // strips_ when triangle p < strips_ is strip_triangle(p), else 0
     // Strip buckets: bucket b holds the raw strip triangles [b, b + 1) << bucket_shift_; strip_bucket_[b] is
-    // the strip of its first one (strip_bucket_[used] = h - 1), so that the strip of any r lies in
-    // [strip_bucket_[b], strip_bucket_[b + 1]]; bucket_half_ = 2^(steps - 1) covers the widest such range.
-    static constexpr unsigned strip_buckets = 128;
+    // the strip of its first one. From wide_from_ on, a bucket may hold two or more later strip starts. The
+    // extra entry is scratch for the constructor's count.
+    static constexpr unsigned strip_buckets = 256;
     std::array<std::uint8_t, strip_buckets + 1> strip_bucket_{};
-    std::uint32_t bucket_shift_ = 0, bucket_half_ = 0;
+    std::uint32_t bucket_shift_ = 0, wide_from_ = ~0u;
     std::uint32_t clamp_ = 0; // K
     std::uint32_t e1_offset_ = 0, unique_ = 0, strips_ = 0, zipper_ = 0;
     std::uint32_t vertices_ = 0, triangles_ = 0;
@@ -202,8 +211,13 @@ inline CpPatch::CpPatch(const CpTableSet& tables, cp::LineState s0, cp::LineStat
     for (unsigned k = 0; k < 3; ++k) {
         const unsigned shape = s[k].token == 0 ? 1u : s[k].token;
         const cp::tables::TokenRecord& rec = tables.tokens[shape - 1];
-        e_[k] = {tables.points + rec.first_point, s[k].token == 0 ? 0u : s[k].t16, rec.segments,
-                 rec.half_step, s[k].token};
+        const std::uint32_t t16 = s[k].token == 0 ? 0u : s[k].t16;
+        e_[k] = {tables.points + rec.first_point,
+                 t16,
+                 rec.segments,
+                 rec.half_step,
+                 s[k].token,
+                 static_cast<std::int32_t>(rec.half_step * (65536u - t16))};
     }
     c0_ = s[0].token == 0;
     c1_ = s[1].token == 0;
@@ -303,32 +317,39 @@ inline CpPatch::CpPatch(const CpTableSet& tables, cp::LineState s0, cp::LineStat
     vertices_ = unique_ + copies;
     triangles_ = strips_ + zipper_ - dropped;
     plain_ = !c0_ && !c1_ && !c2_;
+    // Without a T0 edge on e0 or e2 the strips have copies and nothing before the zipper is dropped.
+    fast_strips_ = copies_ && head_ != 0 ? strips_ : 0u;
     build_strip_buckets();
 }
 
 // Bucket b's strip is the number of strips k in [1, h-1] with PS_k <= b << shift: each strip adds one to
-// the buckets from ceil(PS_k / width) on. Counting, then a prefix sum: both loops have fixed trip counts,
-// so the constructor pays no misprediction per bucket.
+// the buckets from ceil(PS_k / width) on. Counting, then a prefix sum: both loops have fixed trip counts and
+// selects only, so the constructor pays no misprediction per bucket. A strip start inside a bucket (not on
+// its first triangle) is one step of strip_of; two in the same bucket make the patch's buckets wide.
 inline void CpPatch::build_strip_buckets() noexcept {
     static_assert(cp::max_segments <= 256, "strip indices (< h < n0) must fit the u8 buckets");
     if (strips_ == 0 || head_ == 0) return;
     while (((strips_ - 1) >> bucket_shift_) >= strip_buckets) ++bucket_shift_;
     const std::uint32_t used = ((strips_ - 1) >> bucket_shift_) + 1;
-    const std::uint32_t round_up = (1u << bucket_shift_) - 1u;
+    const std::uint32_t inside = (1u << bucket_shift_) - 1u;
     const std::uint16_t* c = c_;
     std::uint8_t* count = strip_bucket_.data();
-    for (std::uint32_t k = 1; k < head_; ++k)
-        ++count[(c[k] + c[k + 1] - 2 * k - n2_ + round_up) >> bucket_shift_];
-    std::uint32_t i = 0, widest = 0;
+    std::uint32_t last_inner = ~0u; // bucket of the last strip start inside a bucket
+    std::uint32_t wide = ~0u;       // first bucket with two
+    for (std::uint32_t k = 1; k < head_; ++k) {
+        const std::uint32_t ps = c[k] + c[k + 1] - 2 * k - n2_;
+        ++count[(ps + inside) >> bucket_shift_];
+        const std::uint32_t bucket = (ps & inside) != 0 ? ps >> bucket_shift_ : ~1u;
+        wide = bucket == last_inner && bucket < wide ? bucket : wide;
+        last_inner = bucket != ~1u ? bucket : last_inner;
+    }
+    std::uint32_t i = 0;
     for (std::uint32_t b = 0; b < used; ++b) {
-        const std::uint32_t step = count[b];
-        widest = step > widest ? step : widest; // the span of bucket b - 1 (count[0] = 0)
-        i += step;
+        i += count[b];
         count[b] = static_cast<std::uint8_t>(i);
     }
-    count[used] = static_cast<std::uint8_t>(head_ - 1);
-    widest = head_ - 1 - i > widest ? head_ - 1 - i : widest;
-    bucket_half_ = widest == 0 ? 0u : std::bit_floor(widest);
+    count[used] = 0;
+    wide_from_ = wide == ~0u ? ~0u : wide << bucket_shift_;
 }
 
 inline DomainPoint CpPatch::slot_point(std::uint32_t s) const noexcept {
@@ -367,38 +388,55 @@ inline CpTriangle CpPatch::type1_triangle(std::uint32_t r) const noexcept {
     return {slot_index(a), slot_index(b), slot_index(c)};
 }
 
+// Copy k = v - unique_ of the provoking layout is column i >= 1, row j, with k = D_i + j and
+// D_i = Y_i - Y_1, Y_x = C_x - x: i is the largest with Y_i <= t = k + Y_1. As PS_i = Y_i + Y_{i+1} + 1 - R_0
+// and Y does not decrease, the strip of r = 2t + 1 - R_0 is i - 1 or i: the strip buckets and one step find
+// it. The columns' own points keep the float first guess of cp_search.hpp.
 inline DomainPoint CpPatch::type2_vertex(std::uint32_t v) const noexcept {
-    if (v >= unique_) return copy_point(v - unique_);
-    if (v >= e1_offset_) {
+    if (v - e1_offset_ < unique_ - e1_offset_) { // e1's points
         const std::uint32_t b = v - e1_offset_;
         return e1_point(point(e_[1], c1_ ? b * n1_ : b));
     }
     if (c0_) return column_point(0, v);
     if (c2_) return column_point(v, 0);
-    const std::uint32_t ch = c_[head_];
-    if (v >= ch) return column_point(head_ + (v - ch), 0);
     const std::uint16_t* c = c_;
+    const std::uint32_t ch = c[head_];
+    if (v - ch < e1_offset_ - ch) return column_point(head_ + (v - ch), 0); // the tail: one row per column
+    if (v >= unique_) {
+        const std::uint32_t t = v - unique_ + c[1] - 1u;
+        const int r = 2 * static_cast<int>(t) + 1 - static_cast<int>(n2_);
+        const std::uint32_t last = strips_ - 1u;
+        const std::uint32_t rc = r < 0                                  ? 0u
+                                 : static_cast<std::uint32_t>(r) < last ? static_cast<std::uint32_t>(r)
+                                                                        : last;
+        const std::uint16_t* col = nullptr;
+        std::uint32_t i = strip_of(rc, col);
+        i += col[1] - i - 1u <= t ? 1u : 0u;
+        return column_point(i, t - (c[i] - i));
+    }
     auto y = [c](int x) { return static_cast<int>(c[x]); };
-    const int e = static_cast<int>(v);
     const std::uint32_t i =
-        search_from(y, head_, e, search_first_guess(a_, b_, static_cast<float>(v), head_));
+        search_from(y, head_, static_cast<int>(v), search_first_guess(a_, b_, static_cast<float>(v), head_));
     return column_point(i, v - c[i]);
 }
 
 // Strip triangle r of a patch without a T0 edge on e0 or e2 (so col_index(i, j) = C_i + j and every column
-// i >= 1 has copies): the strip search, then cell (even, odd) or fan chosen by selects.
+// i >= 1 has copies). Strip i joins column i (A, a = C_i) and column i + 1 (B, b = C_{i+1}, nb rows): cells
+// (A_j, B_j, A_{j+1}) and (B_j, B_{j+1}, A_{j+1}) for j < nb - 1, then the fan (A_j, B_{nb-1}, A_{j+1}).
+// With o = r - PS_i and m = min(o, 2 (nb - 1)), triangle o has taken s = ceil(m / 2) steps on B and o - s
+// on A, and it is an odd cell when m is odd: one formula for all three kinds, no branch.
 inline CpTriangle CpPatch::strip_triangle(std::uint32_t r) const noexcept {
-    const std::uint16_t* c = c_;
-    const std::uint32_t i = strip_of(r);
-    const std::uint32_t a = c[i], b = c[i + 1], nb = c[i + 2] - b;
-    const std::uint32_t o = r - (a + b - 2 * i - n2_);
-    // Selects as masks: the compilers turn ternaries into branches, and odd/even is a coin toss.
-    const std::uint32_t cell = 0u - static_cast<std::uint32_t>(o < 2 * (nb - 1)); // all ones in a cell
-    const std::uint32_t odd = cell & (0u - (o & 1u));                             // all ones: odd cell
-    const std::uint32_t j = ((o >> 1) & cell) | ((o - (nb - 1)) & ~cell);
+    const std::uint16_t* col = nullptr;
+    const std::uint32_t i = strip_of(r, col);
+    const std::uint32_t a = col[0], b = col[1], cells = 2 * (col[2] - b - 1u);
+    const std::uint32_t o = r + n2_ + 2 * i - a - b;
+    const std::uint32_t m = o < cells ? o : cells;
+    const std::uint32_t s = (m + 1) >> 1, j = o - s;
     // First vertex A_j of column i >= 1 already provoked a triangle of strip i - 1: use its copy.
-    const std::uint32_t first = a + ((copy_bias_ - i) & (0u - static_cast<std::uint32_t>(i >= 1)));
-    return {first + j + ((b - first) & odd), b + (((j + (odd & 1u)) & cell) | ((nb - 1) & ~cell)), a + j + 1};
+    // A mask, not a ternary: GCC branches on the ternary, and strip 0 holds a large share of the triangles.
+    const std::uint32_t first = a + j + ((copy_bias_ - i) & (0u - static_cast<std::uint32_t>(i != 0)));
+    const std::uint32_t odd = 0u - (m & 1u); // all ones: odd cell, whose first vertex is B_j
+    return {first + ((b + s - 1 - first) & odd), b + s, a + j + 1};
 }
 
 // Zipper triangle q of a patch without a T0 edge: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point
@@ -407,16 +445,16 @@ inline CpTriangle CpPatch::zipper_triangle(std::uint32_t q) const noexcept {
     const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
     const std::uint32_t bit = q % cp::tables::gap_bits_per_word;
     const std::uint32_t bits = w & 0xFFFFu;
-    const std::uint32_t a = (w >> 16) + static_cast<std::uint32_t>(std::popcount(bits & ((1u << bit) - 1u)));
+    const std::uint32_t a = (w >> 16) + popcount16(bits & ((1u << bit) - 1u));
     const std::uint32_t b = q - a;
-    const bool lhs = (bits >> bit) & 1u;
-    auto top = [this](std::uint32_t col) { // C_col - 1 for col in [1, n0]; the tail has one row per column
+    const std::uint32_t lhs = 0u - ((bits >> bit) & 1u); // all ones: a step on L; a mask, see strip_triangle
+    auto top = [this](std::uint32_t col) { // C_col - 1 for col in [0, n0]; the tail has one row per column
         const std::uint32_t k = col < head_ ? col : head_;
         return c_[k] + (col - k) - 1u;
     };
     const std::uint32_t la = top(n0_ - a);
     const std::uint32_t rb = e1_offset_ + b;
-    return {lhs ? top(n0_ - a - 1) : rb + 1, la, rb};
+    return {rb + 1 + ((top(n0_ - a - 1) - rb - 1) & lhs), la, rb};
 }
 
 inline CpTriangle CpPatch::type2_triangle(std::uint32_t r) const noexcept {
@@ -439,7 +477,7 @@ inline CpTriangle CpPatch::type2_triangle(std::uint32_t r) const noexcept {
     const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
     const std::uint32_t bit = q % cp::tables::gap_bits_per_word;
     const std::uint32_t bits = w & 0xFFFFu;
-    const std::uint32_t a = (w >> 16) + static_cast<std::uint32_t>(std::popcount(bits & ((1u << bit) - 1u)));
+    const std::uint32_t a = (w >> 16) + popcount16(bits & ((1u << bit) - 1u));
     const std::uint32_t b = q - a;
     if ((bits >> bit) & 1u) return {lhs_index(a + 1), lhs_index(a), e1_index(b)};
     return {e1_index(b + 1), lhs_index(a), e1_index(b)};
@@ -456,7 +494,8 @@ inline DomainPoint CpPatch::vertex(std::uint32_t i) const noexcept {
 
 inline CpTriangle CpPatch::triangle(std::uint32_t p) const noexcept {
     if (p >= triangles_) return {0, 0, 0};
-    if (plain_) return p < strips_ ? strip_triangle(p) : zipper_triangle(p - strips_);
+    if (p < fast_strips_) return strip_triangle(p);
+    if (plain_) return zipper_triangle(p - strips_);
     const std::uint32_t r = skip_forward(tri_skip_.data(), tri_skips_, p);
     if (type_ == 2) return type2_triangle(r);
     if (type_ == 1) return type1_triangle(r);
