@@ -14,19 +14,6 @@ namespace ctess::gpu_test {
 
 namespace {
 
-std::vector<std::uint32_t> read_words(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) {
-        std::string why = "cannot read ";
-        why += path;
-        throw std::runtime_error(why);
-    }
-    std::vector<std::uint32_t> w(static_cast<std::size_t>(in.tellg()) / 4);
-    in.seekg(0);
-    in.read(reinterpret_cast<char*>(w.data()), static_cast<std::streamsize>(w.size() * 4));
-    return w;
-}
-
 std::string shader_file(const std::string& dir, unsigned max_factor, const char* suffix) {
     std::string path = dir;
     path += "/ctess_cp_";

@@ -18,20 +18,6 @@ void check(VkResult r, const char* what) {
     }
 }
 
-std::vector<std::uint32_t> read_spirv(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) {
-        std::string why = "cannot open SPIR-V file ";
-        why += path;
-        throw std::runtime_error(why);
-    }
-    const auto size = static_cast<std::size_t>(in.tellg());
-    std::vector<std::uint32_t> words(size / 4);
-    in.seekg(0);
-    in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
-    return words;
-}
-
 // A zeroed Vulkan create-info struct with its type set (aggregate init would trip
 // -Wmissing-field-initializers).
 template <class T>
@@ -42,6 +28,19 @@ T vk_struct(VkStructureType type) {
 }
 
 } // namespace
+
+std::vector<std::uint32_t> read_words(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) {
+        std::string why = "cannot read ";
+        why += path;
+        throw std::runtime_error(why);
+    }
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(in.tellg()) / 4);
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+    return words;
+}
 
 VkCompute::VkCompute() {
     auto app = vk_struct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
@@ -161,7 +160,7 @@ void VkCompute::upload(std::size_t buffer, const void* data, std::size_t bytes) 
 }
 
 std::size_t VkCompute::create_pipeline(const std::string& spirv_path) {
-    const std::vector<std::uint32_t> code = read_spirv(spirv_path);
+    const std::vector<std::uint32_t> code = read_words(spirv_path);
     auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
     smci.codeSize = code.size() * 4;
     smci.pCode = code.data();

@@ -13,6 +13,9 @@
 
 namespace ctess::gpu_test {
 
+// A whole file as little-endian u32 words (SPIR-V, table blobs, results); throws if it cannot be read.
+std::vector<std::uint32_t> read_words(const std::string& path);
+
 class VkCompute {
   public:
     static constexpr std::uint32_t bindings = 7;
