@@ -3,10 +3,10 @@
 //   ctess_gen_shaders --max 64 --shaders <repo>/shaders --out <dir>
 //
 // Output (docs/shaders.md):
-//   ctess_cp_<max>.tables.bin                 the table blob (u32 little-endian; gen/table_blob.hpp)
-//   ctess_cp_<max>_<pass>.comp                GLSL 4.50, one file per entry point (Vulkan wants one per
-//   module) ctess_cp_<max>.wgsl                       WGSL, all four entry points in one module
-//   ctess_cp_<max>.layout.json                the blob's section offsets, sizes and the entry points
+//   ctess_cp_<max>.tables.bin     the table blob (u32 little-endian; gen/table_blob.hpp)
+//   ctess_cp_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
+//   ctess_cp_<max>.wgsl           WGSL, all four entry points in one module
+//   ctess_cp_<max>.layout.json    the blob's section offsets and size, and the entry points
 // Exit status: 0, or 2 with a message for bad arguments, 1 when a file cannot be read or written.
 #include <cstdio>
 #include <cstring>
