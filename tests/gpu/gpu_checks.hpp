@@ -32,12 +32,12 @@ inline CrackReport crack_check(const Scene& scene, const PipelineOutput& out) {
     CrackReport r;
     const std::uint32_t n = scene.patch_count();
     for (std::uint32_t t = 0; t < n; ++t) {
-        const std::uint32_t* rec = &out.patches[std::size_t{t} * 16];
+        const std::uint32_t* rec = &out.patches[std::size_t{t} * patch_words];
         const std::uint32_t w[3] = {scene.indices[3 * t], scene.indices[3 * t + 1], scene.indices[3 * t + 2]};
         for (unsigned k = 0; k < 3; ++k) ++edge_users[std::minmax(w[k], w[(k + 1) % 3])];
         std::map<Key, Position> mine; // the provoking-layout copies repeat points within a patch
         for (std::uint32_t i = 0; i < rec[7]; ++i) {
-            const std::uint32_t* v = &out.vertices[(std::size_t{rec[9]} + i) * 10];
+            const std::uint32_t* v = &out.vertices[(std::size_t{rec[9]} + i) * vertex_words];
             const std::uint32_t bw[3] = {(1u << 24) - v[0] - v[1], v[0], v[1]};
             for (unsigned k = 0; k < 3; ++k) {
                 if (bw[k] != 0) continue;
@@ -74,7 +74,7 @@ inline std::vector<std::size_t> factor_octaves(const PipelineOutput& out, std::u
     for (std::uint32_t t = 0; t < patches; ++t) {
         for (unsigned k = 0; k < 3; ++k) {
             float f;
-            std::memcpy(&f, &out.patches[std::size_t{t} * 16 + 11 + k], 4);
+            std::memcpy(&f, &out.patches[std::size_t{t} * patch_words + 11 + k], 4);
             std::size_t bin = 0;
             if (f >= static_cast<float>(max_factor))
                 bin = octaves + 1;

@@ -28,7 +28,9 @@ inline float bits_float(std::uint32_t u) {
     std::memcpy(&f, &u, 4);
     return f;
 }
-inline constexpr std::uint32_t patch_words = 16;
+// Record sizes in words, from the CPU structs the GPU layouts copy.
+inline constexpr std::uint32_t patch_words = sizeof(rt::PatchRecord) / 4;
+inline constexpr std::uint32_t vertex_words = sizeof(rt::TessVertex) / 4;
 
 struct PipelineOutput {
     std::vector<std::uint32_t> patches;  // PatchRecord words per patch, then the two totals
