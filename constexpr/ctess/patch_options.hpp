@@ -1,0 +1,24 @@
+// Options every pattern family shares (docs/api.md): the output winding and the vertex layout.
+//
+// * Layout::provoking: every triangle's first index is unique within the patch, so flat shading and
+//   per-primitive data can use the provoking vertex; vertices that would provoke twice are appended as
+//   copies after the distinct positions. The default where it matters (CP).
+// * Layout::shared: one vertex per distinct position, for smooth shading, welding-free meshes and the
+//   smallest vertex buffers.
+//
+// Argument order everywhere: outputs first, then inputs, then options (as meshoptimizer).
+#pragma once
+#include <cstdint>
+
+namespace ctess {
+
+enum class Winding : std::uint8_t { cw, ccw };
+enum class Layout : std::uint8_t { provoking, shared };
+
+struct PatchOptions {
+    Layout layout = Layout::provoking;
+    Winding winding = Winding::ccw;
+    friend constexpr bool operator==(const PatchOptions&, const PatchOptions&) = default;
+};
+
+} // namespace ctess
