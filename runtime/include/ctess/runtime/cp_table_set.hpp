@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 
+#include <ctess/config.hpp>
 #include <ctess/cp_tables_layout.hpp>
 
 namespace ctess::rt {
@@ -28,5 +29,13 @@ struct CpTableSet {
 
 extern const CpTableSet cp_tables_64;  // ctess_runtime_64
 extern const CpTableSet cp_tables_256; // ctess_runtime_256
+
+// The configured table set (CMake option CTESS_MAX_TESS_FACTOR, linked by ctess::runtime): code written
+// against cp_tables compiles and links in both builds.
+#if CTESS_MAX_TESS_FACTOR == 256
+inline constexpr const CpTableSet& cp_tables = cp_tables_256;
+#else
+inline constexpr const CpTableSet& cp_tables = cp_tables_64;
+#endif
 
 } // namespace ctess::rt

@@ -1,0 +1,17 @@
+// ctess's front door for the embedded runtime: O(1) patches over the compile-time tables, the CPU mesh
+// pipeline and crack-free surface evaluation. Link ctess::runtime (the configured tables, named
+// ctess::rt::cp_tables in code) or ctess::runtime_64 / ctess::runtime_256 (cp_tables_64 / cp_tables_256).
+//
+//   ctess::rt::CpPatch patch(ctess::rt::cp_tables, 10.3f, 6.0f, 3.0f);
+//   ctess::Counts n = patch.counts();                  // size the buffers, then fill
+//   patch.emit(vertices, indices);                      // or vertex(i) / triangle(p) in O(1)
+//   ctess::rt::SurfacePoint s = ctess::rt::evaluate_surface(corners, weights, options);
+#pragma once
+
+#include <ctess/ctess.hpp>
+
+#include "runtime/cp_patch.hpp"
+#include "runtime/cp_table_set.hpp"
+#include "runtime/mesh_pipeline.hpp"
+#include "runtime/surface_eval.hpp"
+#include "runtime/tess_factor.hpp"

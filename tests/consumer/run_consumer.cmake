@@ -1,0 +1,16 @@
+# Configures, builds and runs one consumer project (ctest drives this script; see tests/CMakeLists.txt).
+# -DSOURCE=<consumer dir> -DBINARY=<build dir> -DGENERATOR=... -DCXX=<compiler> [-DARGS=<more cache args>]
+file(REMOVE_RECURSE ${BINARY})
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${BINARY} -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX}
+                        -DCMAKE_BUILD_TYPE=Release ${ARGS} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "configuring ${SOURCE} failed")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${BINARY} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "building ${SOURCE} failed")
+endif()
+execute_process(COMMAND ${BINARY}/watertight_mesh RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the consumer's mesh is not watertight")
+endif()
