@@ -4,6 +4,11 @@
 
 #include "efficiency.hpp"
 
+#include <ctess/cp_pattern.hpp>
+
+#include <cstdint>
+#include <vector>
+
 TEST_CASE("mean CP / D3D11 fractional_even ratio meets the targets", "[cp_efficiency]") {
     for (unsigned max : {64u, 256u}) {
         for (std::uint32_t seed : {2026u, 7u, 123456u}) {
@@ -13,12 +18,48 @@ TEST_CASE("mean CP / D3D11 fractional_even ratio meets the targets", "[cp_effici
             REQUIRE(s.random_count == 40);
             CHECK(s.mean_ratio_max <= 0.35);
             CHECK(s.mean_ratio_avg <= 0.65);
-            CHECK(s.mean_nondegenerate_ratio_max <= s.mean_ratio_max);
+            CHECK(s.mean_nondegenerate_ratio_max <= 0.35);
         }
     }
 }
 
+TEST_CASE("efficiency rows count CP's zero-area triangles as the pattern has them", "[cp_efficiency]") {
+    // The CLI's counts against the procedural pattern, tessellated and measured here: exact integer areas.
+    std::size_t degenerate_rows = 0;
+    for (const auto& r : ctess::cli::efficiency_rows(64, 40, 2026)) {
+        ctess::cp::PatternOptions opt;
+        opt.provoking_layout = false;
+        const auto n = ctess::cp::pattern_counts(r.factors[0], r.factors[1], r.factors[2], opt);
+        std::vector<ctess::DomainPoint> v(n.vertices);
+        std::vector<std::uint32_t> t(3 * std::size_t{n.triangles});
+        ctess::cp::tessellate(r.factors[0], r.factors[1], r.factors[2], opt, v.data(), t.data());
+        std::uint32_t zero_area = 0;
+        for (std::size_t k = 0; k < t.size(); k += 3) {
+            const ctess::DomainPoint a = v[t[k]], b = v[t[k + 1]], c = v[t[k + 2]];
+            const std::int64_t cross = (std::int64_t{b.u} - a.u) * (std::int64_t{c.v} - a.v) -
+                                       (std::int64_t{b.v} - a.v) * (std::int64_t{c.u} - a.u);
+            zero_area += cross == 0;
+            CHECK(cross >= 0); // counter-clockwise or degenerate, never folded
+        }
+        INFO(r.group << " " << r.factors[0] << "," << r.factors[1] << "," << r.factors[2]);
+        CHECK(r.cp_triangles == n.triangles);
+        CHECK(r.cp_nondegenerate == n.triangles - zero_area);
+        degenerate_rows += zero_area != 0;
+    }
+    CHECK(degenerate_rows > 0); // the set includes factors whose patterns have zero-area triangles
+}
+
+TEST_CASE("efficiency orients with the library's rule: factors 5,2,2 become 2,5,2", "[cp_efficiency]") {
+    // smallest_edge_rotation: ties go to the lowest edge index, so E1 (2) goes to e2, and e0 gets E2.
+    const ctess::cp::PatternOptions opt;
+    const auto oriented = ctess::cp::pattern_counts(2, 5, 2, opt).triangles;
+    const auto unoriented = ctess::cp::pattern_counts(5, 2, 2, opt).triangles;
+    REQUIRE(oriented != unoriented);
+    REQUIRE(ctess::cli::efficiency_row({5, 2, 2}, 64).cp_rotated_triangles == oriented);
+}
+
 TEST_CASE("equal powers of two: CP is exactly 2/3 of D3D11 fractional_even", "[cp_efficiency]") {
+    unsigned checked = 0;
     for (const auto& r : ctess::cli::efficiency_rows(64, 1, 1)) {
         if (r.group != "equal") continue;
         const float f = r.factors[0];
@@ -28,5 +69,7 @@ TEST_CASE("equal powers of two: CP is exactly 2/3 of D3D11 fractional_even", "[c
         CHECK(r.cp_nondegenerate == n * n);
         CHECK(r.d3d_max == 3 * n * n / 2); // spec 4.6: floor(3 S^2 / 2) for uniform even S
         CHECK(3 * r.cp_triangles == 2 * r.d3d_max);
+        ++checked;
     }
+    REQUIRE(checked == 5); // 4, 8, 16, 32, 64
 }

@@ -1,7 +1,7 @@
 // Runs the generated WGSL CP mesh pipeline on Dawn (npm `webgpu`) and writes every output buffer to a file.
 //   node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE
 // Backend: Dawn's OpenGL ES backend on Mesa's llvmpipe in compatibility mode, with EGL_PLATFORM=surfaceless
-// (shared/notes/tooling.md §5: Dawn's Vulkan backend rejects bookworm's lavapipe). CTESS_DAWN_BACKEND
+// (Dawn's Vulkan backend rejects bookworm's lavapipe 22.3, docs/shaders.md). CTESS_DAWN_BACKEND
 // overrides the backend flag (e.g. "vulkan" on a machine with a newer driver).
 // File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message.
 import { readFileSync, writeFileSync } from 'node:fs';

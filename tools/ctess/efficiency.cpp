@@ -2,6 +2,7 @@
 
 #include "mesh.hpp"
 
+#include <ctess/cp_orientation.hpp>
 #include <ctess/cp_pattern.hpp>
 #include <ctess/d3d11_tessellator.hpp>
 
@@ -19,7 +20,9 @@ std::uint32_t d3d_even_triangles(const std::array<float, 3>& f, float inside) {
     return d3d11::tessellate_tri(opt, {f[0], f[1], f[2], inside}, nullptr, nullptr).indices / 3;
 }
 
-EfficiencyRow measure(const std::string& group, const std::array<float, 3>& f, unsigned max) {
+} // namespace
+
+EfficiencyRow efficiency_row(const std::array<float, 3>& f, unsigned max, const std::string& group) {
     EfficiencyRow row;
     row.group = group;
     row.factors = f;
@@ -33,21 +36,18 @@ EfficiencyRow measure(const std::string& group, const std::array<float, 3>& f, u
     row.cp_nondegenerate = static_cast<std::uint32_t>(mesh.primitive_count() - degenerate_triangles(mesh));
     cp::PatternOptions opt;
     opt.max_factor = max;
-    // The orientation rule: rotate cyclically (winding kept) so that the smallest factor is on e2.
-    std::array<float, 3> r = f;
-    while (!(r[2] <= r[0] && r[2] <= r[1])) r = {r[1], r[2], r[0]};
+    // The orientation rule (docs/algorithm.md §2.13) with the factors as the measure: the smallest on e2.
+    const std::array<float, 3> r = cp::rotate_factors(cp::smallest_edge_rotation(f[0], f[1], f[2]), f);
     row.cp_rotated_triangles = cp::pattern_counts(r[0], r[1], r[2], opt).triangles;
     row.d3d_max = d3d_even_triangles(f, std::max({f[0], f[1], f[2]}));
     row.d3d_avg = d3d_even_triangles(f, (f[0] + f[1] + f[2]) / 3.0f);
     return row;
 }
 
-} // namespace
-
 std::vector<EfficiencyRow> efficiency_rows(unsigned max, unsigned random_count, std::uint32_t seed) {
     std::vector<EfficiencyRow> rows;
     for (float f : {2.0f, 4.0f, 5.0f, 8.0f, 10.3f, 16.0f, 24.0f, 32.0f, 48.0f, 64.0f})
-        rows.push_back(measure("equal", {f, f, f}, max));
+        rows.push_back(efficiency_row({f, f, f}, max, "equal"));
     const std::array<std::array<float, 3>, 8> two_high = {{{64, 64, 2},
                                                            {64, 2, 64},
                                                            {2, 64, 64},
@@ -56,13 +56,13 @@ std::vector<EfficiencyRow> efficiency_rows(unsigned max, unsigned random_count, 
                                                            {48, 40, 3},
                                                            {20, 24, 1.5f},
                                                            {16, 16, 4}}};
-    for (const auto& f : two_high) rows.push_back(measure("two high, one low", f, max));
+    for (const auto& f : two_high) rows.push_back(efficiency_row(f, max, "two high, one low"));
     std::mt19937 rng(seed);
     for (unsigned i = 0; i < random_count; ++i) {
         std::array<float, 3> f{};
         // 2 + 62 * k / 2^24 with a 24-bit k: the same triples on every standard library.
         for (float& x : f) x = 2.0f + 62.0f * static_cast<float>(rng() >> 8) / 16777216.0f;
-        rows.push_back(measure("random", f, max));
+        rows.push_back(efficiency_row(f, max, "random"));
     }
     return rows;
 }

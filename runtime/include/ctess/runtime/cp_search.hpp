@@ -1,6 +1,6 @@
 // O(1) reverse lookup in a concave prefix sequence Y_0 = 0 <= Y_1 <= ... (column starts, strip starts):
 // the largest k in [0, h-1] with Y_k <= e, from a float first guess on a stored quadratic, one integer Newton
-// step and a fixed window of compares (shared/notes/table_encoding.md §3). No loop depends on the data, and
+// step and a fixed window of compares (docs/algorithm.md §3.4). No loop depends on the data, and
 // the Newton step's two directions are written as selects. CpPatch uses it for vertices; its strip lookup
 // is a per-patch bucket search (cp_patch.hpp), which costs fewer instructions on a CPU.
 //
