@@ -37,10 +37,10 @@ static_assert([] {
     tables::ShapeTracks st{};
     tables::fill_shape_tracks(64, st);
     std::array<std::uint16_t, 257> rows{};
-    const auto g = tables::reach_gaps(st, 4, 4); // T4 = f in (6, 8]: n = 8
+    const auto g = tables::pair_reach_gaps(st, 4, 4); // T4 = f in (6, 8]: n = 8, last final 7/8 = 224/256
     // Triforce at a power of two: R = 8, 7, ..., 1 (h = 7).
     const unsigned h = tables::head_column_counts(st, 4, 4, rows.data());
-    return g.ss >= 0 && h == 7 && tables::column_head(st, 4, 4) == 7 && rows[0] == 8 && rows[1] == 7 &&
+    return g.ff == 256 - 224 && h == 7 && tables::column_head(st, 4, 4) == 7 && rows[0] == 8 && rows[1] == 7 &&
            rows[7] == 1;
 }());
 static_assert([] {

@@ -26,26 +26,32 @@ constexpr PointTrack clamp_track_e2(unsigned shape_token2, const PointTrack* tra
 }
 } // namespace detail
 
-// Rule (b) for column i >= 1: R_i = 1 + min{k : for all a, b in {start, final}:
-//   v_k^b + max(G0^a, G2^b) + u_i^a >= 256}, on the 256 grid. Positions are linear in each lerp and the
-// condition is convex, so the four extreme lerp combinations decide it (cp_resolution §4.3).
+// Rule (b)'s gaps, max(G0, G2) at the four extreme lerp pairs: ss = (e0 at start, e2 at start), sf = (start,
+// final), fs = (final, start), ff = (final, final).
+struct ReachGaps {
+    int ss = 0, sf = 0, fs = 0, ff = 0;
+};
+
+constexpr ReachGaps reach_gaps(PointTrack end0, PointTrack end2) {
+    const int g0s = 256 - end0.start, g0f = 256 - end0.final;
+    const int g2s = 256 - end2.start, g2f = 256 - end2.final;
+    return {g0s > g2s ? g0s : g2s, g0s > g2f ? g0s : g2f, g0f > g2s ? g0f : g2s, g0f > g2f ? g0f : g2f};
+}
+
+// Rule (b)'s test: row (an e2 track) reaches the clamp of the column whose e0 point is at us (start) and uf
+// (final), at all four extreme lerp pairs: v^b + max(G0^a, G2^b) + u^a >= 256 on the 256 grid.
+constexpr bool row_reaches(PointTrack row, const ReachGaps& g, int us, int uf) {
+    return row.start + g.ss + us >= 256 && row.final + g.sf + us >= 256 && row.start + g.fs + uf >= 256 &&
+           row.final + g.ff + uf >= 256;
+}
+
+// Rule (b) for column i >= 1: R_i = 1 + min{k : row k reaches the clamp}. Positions are linear in each lerp
+// and the condition is convex, so the four extreme lerp combinations decide it (docs/algorithm.md §2.4).
 constexpr unsigned minimal_rows(const PointTrack* tracks0, unsigned n0, const PointTrack* tracks2,
                                 unsigned n2, unsigned shape_token2, unsigned i) {
-    const PointTrack end0 = tracks0[n0 - 1];
-    const PointTrack end2 = detail::clamp_track_e2(shape_token2, tracks2, n2);
-    const int u_at[2] = {tracks0[i].start, tracks0[i].final};
-    const int g0_at[2] = {256 - end0.start, 256 - end0.final};
-    const int g2_at[2] = {256 - end2.start, 256 - end2.final};
+    const ReachGaps g = reach_gaps(tracks0[n0 - 1], detail::clamp_track_e2(shape_token2, tracks2, n2));
     for (unsigned k = 0; k < n2; ++k) {
-        const int v_at[2] = {tracks2[k].start, tracks2[k].final};
-        bool reaches = true;
-        for (int a = 0; a < 2; ++a) {
-            for (int b = 0; b < 2; ++b) {
-                const int gap = g0_at[a] > g2_at[b] ? g0_at[a] : g2_at[b];
-                if (v_at[b] + gap + u_at[a] < 256) reaches = false;
-            }
-        }
-        if (reaches) return k + 1;
+        if (row_reaches(tracks2[k], g, tracks0[i].start, tracks0[i].final)) return k + 1;
     }
     return n2; // not reached: k = n2-1 always satisfies the condition
 }

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 
+#include "cp_columns.hpp"
 #include "cp_line.hpp"
 #include "cp_tables_layout.hpp"
 
@@ -25,35 +26,22 @@ constexpr void fill_shape_tracks(unsigned max_factor, ShapeTracks& out) {
         out.segments[t] = token_points(t, out.track[t].data()) - 1;
 }
 
-// Rule (b) for column i >= 1 and row k, as cp::minimal_rows states it: row k reaches the clamp of column i
-// at all four extreme lerp pairs (start/final of e0 and of e2). The gaps are precomputed per pair; the test
-// itself is written out in the loops, because the constant evaluators are slow at small calls.
-struct ReachGaps {
-    int ss = 0, sf = 0, fs = 0, ff = 0; // max(G0, G2) for (e0 at start/final, e2 at start/final)
-};
-
-constexpr ReachGaps reach_gaps(const ShapeTracks& st, unsigned s0, unsigned s2) {
-    const PointTrack end0 = st.track[s0][st.segments[s0] - 1];
-    const PointTrack end2 = s2 >= 2 ? st.track[s2][st.segments[s2] - 1] : st.track[s2][1];
-    const int g0s = 256 - end0.start, g0f = 256 - end0.final;
-    const int g2s = 256 - end2.start, g2f = 256 - end2.final;
-    return {g0s > g2s ? g0s : g2s, g0s > g2f ? g0s : g2f, g0f > g2s ? g0f : g2s, g0f > g2f ? g0f : g2f};
+// Rule (b) through cp::reach_gaps and cp::row_reaches, the procedural rule's own test (cp_columns.hpp).
+constexpr ReachGaps pair_reach_gaps(const ShapeTracks& st, unsigned s0, unsigned s2) {
+    return reach_gaps(st.track[s0][st.segments[s0] - 1],
+                      cp::detail::clamp_track_e2(s2, st.track[s2].data(), st.segments[s2]));
 }
-
-#define CTESS_CP_ROW_REACHES(row, us, uf)                                                                    \
-    ((row).start + g.ss + (us) >= 256 && (row).final + g.sf + (us) >= 256 &&                                 \
-     (row).start + g.fs + (uf) >= 256 && (row).final + g.ff + (uf) >= 256)
 
 // h: the first column i >= 1 with one point (row 0 already reaches the clamp). R is non-increasing, so every
 // later column has one point too.
 constexpr unsigned column_head(const ShapeTracks& st, unsigned s0, unsigned s2) {
-    const ReachGaps g = reach_gaps(st, s0, s2);
+    const ReachGaps g = pair_reach_gaps(st, s0, s2);
     const unsigned n0 = st.segments[s0];
     const PointTrack* t0 = st.track[s0].data();
     const PointTrack row0 = st.track[s2][0];
     for (unsigned i = 1; i < n0; ++i) {
         const int us = t0[i].start, uf = t0[i].final;
-        if (CTESS_CP_ROW_REACHES(row0, us, uf)) return i;
+        if (row_reaches(row0, g, us, uf)) return i;
     }
     return n0 - 1;
 }
@@ -62,7 +50,7 @@ constexpr unsigned column_head(const ShapeTracks& st, unsigned s0, unsigned s2) 
 // rows only shrink with i, and reaching is monotone in k. Returns h. Checked against cp::column_counts for
 // every pair by the tests.
 constexpr unsigned head_column_counts(const ShapeTracks& st, unsigned s0, unsigned s2, std::uint16_t* rows) {
-    const ReachGaps g = reach_gaps(st, s0, s2);
+    const ReachGaps g = pair_reach_gaps(st, s0, s2);
     const unsigned n0 = st.segments[s0];
     const unsigned n2 = st.segments[s2];
     const PointTrack* t0 = st.track[s0].data();
@@ -71,14 +59,12 @@ constexpr unsigned head_column_counts(const ShapeTracks& st, unsigned s0, unsign
     unsigned k = n2 - 1;
     for (unsigned i = 1; i < n0; ++i) {
         const int us = t0[i].start, uf = t0[i].final;
-        while (k > 0 && CTESS_CP_ROW_REACHES(t2[k - 1], us, uf)) --k;
+        while (k > 0 && row_reaches(t2[k - 1], g, us, uf)) --k;
         rows[i] = static_cast<std::uint16_t>(k + 1);
         if (k == 0) return i;
     }
     return n0 - 1;
 }
-
-#undef CTESS_CP_ROW_REACHES
 
 // Chunk plan: chunk c holds the pairs with shape2 in [first_shape2(c), first_shape2(c+1)), balanced by the
 // number of e2 points (the work and the pool grow with n2).

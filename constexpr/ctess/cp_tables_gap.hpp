@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdint>
 
+#include "cp_gap.hpp"
 #include "cp_line.hpp"
 #include "cp_tables_columns.hpp"
 #include "cp_tables_layout.hpp"
@@ -37,46 +38,13 @@ struct GapTable {
     std::array<std::uint16_t, shapes> t1_last_fan{};
 };
 
-// M(0..nL), exactly as cp::gap_merge computes it, in one pass: both searches move forward only, because the
-// lhs coordinates grow with a and the rhs coordinates with b. Returns nL. Checked against cp::gap_merge.
+// M(0..nL) of pair (s0, s1): cp::gap_merge over cp::gap_lhs_coords and cp::gap_rhs_coords. Returns nL.
 constexpr unsigned zipper_merge(const ShapeTracks& st, unsigned s0, unsigned s1, std::uint16_t* merge) {
-    const unsigned nl = st.segments[s0];
-    const unsigned n1 = st.segments[s1];
-    // lambda_a (lhs) and sigma_b (rhs), docs/algorithm.md §2.6; T1 sides have fixed coordinates.
-    std::uint16_t la[max_segments + 1]{};
-    std::uint16_t si[max_segments + 1]{};
-    const PointTrack* t0 = st.track[s0].data();
-    const PointTrack* t1 = st.track[s1].data();
-    if (s0 < 2) {
-        la[0] = 0, la[1] = 256, la[2] = 256;
-    } else {
-        for (unsigned a = 0; a < nl; ++a) la[a] = t0[a + 1].final;
-    }
-    if (s1 < 2) {
-        si[0] = 0, si[1] = 0, si[2] = 128, si[3] = 256;
-    } else {
-        for (unsigned b = 0; b <= n1; ++b) si[b] = t1[b].final;
-    }
-    merge[0] = 0;
-    merge[nl] = static_cast<std::uint16_t>(n1);
-    unsigned ceil_b = 0;  // min{b : sigma_b >= lambda_a}
-    unsigned floor_b = 0; // max{b : sigma_b < lambda_{a+1}}
-    for (unsigned a = 0; a + 1 < nl; ++a) {
-        unsigned m = 0;
-        if (la[a] + la[a + 1] <= 256) {
-            while (ceil_b < n1 && si[ceil_b] < la[a]) ++ceil_b;
-            m = ceil_b;
-        } else {
-            while (floor_b + 1 <= n1 && si[floor_b + 1] < la[a + 1]) ++floor_b;
-            m = floor_b;
-        }
-        merge[a + 1] = static_cast<std::uint16_t>(m);
-    }
-    if (nl > 1 && merge[1] < 1) merge[1] = 1;
-    for (unsigned a = 1; a < nl; ++a) {
-        const unsigned m = merge[a] > merge[a - 1] ? merge[a] : merge[a - 1];
-        merge[a] = static_cast<std::uint16_t>(m < n1 ? m : n1);
-    }
+    std::uint16_t lambda[max_segments + 1]{};
+    std::uint16_t sigma[max_segments + 1]{};
+    const unsigned nl = gap_lhs_coords(s0, st.track[s0].data(), st.segments[s0], lambda);
+    const unsigned n1 = gap_rhs_coords(s1, st.track[s1].data(), st.segments[s1], sigma);
+    gap_merge(lambda, nl, sigma, n1, merge);
     return nl;
 }
 
