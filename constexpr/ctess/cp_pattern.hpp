@@ -233,7 +233,7 @@ constexpr Counts parallelogram_pattern(const EdgeLine& e0, const EdgeLine& e1, c
 
 } // namespace detail
 
-// Writes the pattern of three line states. Outputs first, then inputs, then options (docs/algorithm.md).
+// Writes the pattern of three line states. Outputs first, then inputs, then options (patch_options.hpp).
 // vertices: Counts::vertices entries, indices: 3 per triangle, counter-clockwise in (u, v) (opt.winding),
 // provoking vertex first. Null pointers = count only (call first to size).
 // Vertex order: Type 0: v0, v1, v2. Type 1: v0, A0, B0, e1 points from v1 to v2, B2, A2, P. Type 2: column 0

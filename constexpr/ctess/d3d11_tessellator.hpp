@@ -3,9 +3,9 @@
 //
 // Points are (u, v) in 16.16 (for triangles w = 1 - u - v) in the reference's output order; indices are in
 // the reference's order, 3 per triangle (TRIANGLE_CW or TRIANGLE_CCW) or 2 per isoline segment. Arguments:
-// outputs, then factors, then options (docs/algorithm.md). Pass null output pointers to get the counts only
-// (ctess::Counts for triangles, IsolineCounts for segments); otherwise size the buffers with the returned
-// counts or the max_*_counts.
+// outputs, then factors, then options, as everywhere (patch_options.hpp). Pass null outputs to get the counts
+// only (ctess::Counts for triangles, IsolineCounts for segments); otherwise size the buffers with the
+// returned counts or the max_*_counts.
 //
 // Bad factors (see d3d11_factors.hpp): an edge factor (isoline: density or detail) that is NaN, zero,
 // negative or -inf culls the patch, which returns {0, 0}; every other value, including +inf, huge and
