@@ -20,7 +20,7 @@ namespace cp = ctess::cp;
 
 struct ProceduralPatch {
     cp::PatternOptions options;
-    cp::PatternCounts counts;
+    ctess::Counts counts;
     std::vector<DomainPoint> vertices;
     std::vector<std::uint32_t> indices;
 
@@ -34,8 +34,8 @@ struct ProceduralPatch {
     void generate(const benchmark::State& state) {
         float f0 = bench::factor(state, 0);
         benchmark::DoNotOptimize(f0);
-        cp::tessellate(f0, bench::factor(state, 1), bench::factor(state, 2), options, vertices.data(),
-                       indices.data());
+        cp::tessellate(vertices.data(), indices.data(), f0, bench::factor(state, 1), bench::factor(state, 2),
+                       options);
     }
 };
 

@@ -22,7 +22,7 @@ namespace d3d11 = ctess::d3d11;
 struct D3D11Patch {
     d3d11::TessOptions options;
     std::array<float, 4> factors{};
-    d3d11::MeshCounts counts;
+    ctess::Counts counts;
     std::vector<DomainPoint> points;
     std::vector<std::uint32_t> indices;
 
@@ -30,15 +30,15 @@ struct D3D11Patch {
         options.partitioning = partitioning;
         const float f0 = bench::factor(state, 0), f1 = bench::factor(state, 1), f2 = bench::factor(state, 2);
         factors = {f2, f0, f1, (f0 + f1 + f2) / 3.0f};
-        counts = d3d11::tessellate_tri(options, factors, nullptr, nullptr);
-        points.resize(counts.points);
-        indices.resize(counts.indices);
+        counts = d3d11::tessellate_tri(nullptr, nullptr, factors, options);
+        points.resize(counts.vertices);
+        indices.resize(counts.index_count());
     }
-    std::uint32_t triangles() const { return counts.indices / 3; }
+    std::uint32_t triangles() const { return counts.triangles; }
     void generate() {
         std::array<float, 4> f = factors;
         benchmark::DoNotOptimize(f);
-        d3d11::tessellate_tri(options, f, points.data(), indices.data());
+        d3d11::tessellate_tri(points.data(), indices.data(), f, options);
     }
 };
 

@@ -94,13 +94,13 @@ TEST_CASE("pattern JSON carries the library's exact vertices", "[cli]") {
     using namespace ctess;
     const Run r = ctess_cli("pattern --mode d3d11-even --factors 2.5,3.7,5.1,4.2 --format json");
     REQUIRE(r.exit_code == 0);
-    std::vector<DomainPoint> pts(d3d11::max_tri_counts.points);
-    std::vector<std::uint32_t> idx(d3d11::max_tri_counts.indices);
-    const auto counts = d3d11::tessellate_tri({d3d11::Partitioning::fractional_even, d3d11::Winding::cw},
-                                              {2.5f, 3.7f, 5.1f, 4.2f}, pts.data(), idx.data());
+    std::vector<DomainPoint> pts(d3d11::max_tri_counts.vertices);
+    std::vector<std::uint32_t> idx(d3d11::max_tri_counts.index_count());
+    const auto counts = d3d11::tessellate_tri(pts.data(), idx.data(), {2.5f, 3.7f, 5.1f, 4.2f},
+                                              {d3d11::Partitioning::fractional_even, Winding::cw});
     const auto v = json_vertices(r.out);
-    REQUIRE(v.size() == 2 * counts.points);
-    for (std::uint32_t i = 0; i < counts.points; ++i) {
+    REQUIRE(v.size() == 2 * counts.vertices);
+    for (std::uint32_t i = 0; i < counts.vertices; ++i) {
         CHECK(v[2 * i] == pts[i].u);
         CHECK(v[2 * i + 1] == pts[i].v);
     }
@@ -109,7 +109,7 @@ TEST_CASE("pattern JSON carries the library's exact vertices", "[cli]") {
     REQUIRE(c.exit_code == 0);
     CHECK(json_number(c.out, "fixed_one") == (1 << 24));
     cp::PatternOptions opt;
-    opt.provoking_layout = false;
+    opt.layout = Layout::shared;
     const auto cc = cp::pattern_counts(16, 8, 4, opt);
     CHECK(json_number(c.out, "vertex_count") == cc.vertices);
     CHECK(json_number(c.out, "triangle_count") == cc.triangles);

@@ -28,11 +28,11 @@ TEST_CASE("efficiency rows count CP's zero-area triangles as the pattern has the
     std::size_t degenerate_rows = 0;
     for (const auto& r : ctess::cli::efficiency_rows(64, 40, 2026)) {
         ctess::cp::PatternOptions opt;
-        opt.provoking_layout = false;
+        opt.layout = ctess::Layout::shared;
         const auto n = ctess::cp::pattern_counts(r.factors[0], r.factors[1], r.factors[2], opt);
         std::vector<ctess::DomainPoint> v(n.vertices);
         std::vector<std::uint32_t> t(3 * std::size_t{n.triangles});
-        ctess::cp::tessellate(r.factors[0], r.factors[1], r.factors[2], opt, v.data(), t.data());
+        ctess::cp::tessellate(v.data(), t.data(), r.factors[0], r.factors[1], r.factors[2], opt);
         std::uint32_t zero_area = 0;
         for (std::size_t k = 0; k < t.size(); k += 3) {
             const ctess::DomainPoint a = v[t[k]], b = v[t[k + 1]], c = v[t[k + 2]];

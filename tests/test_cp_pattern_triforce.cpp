@@ -22,18 +22,18 @@ cp::PatternOptions options(unsigned max_factor, cp::ColumnRule rule, bool collap
     o.max_factor = max_factor;
     o.column_rule = rule;
     o.collapse_t0 = collapse;
-    o.provoking_layout = provoking;
+    o.layout = provoking ? Layout::provoking : Layout::shared;
     return o;
 }
 
 constexpr cp::PatternOptions flat64() {
     cp::PatternOptions o;
     o.max_factor = 64;
-    o.provoking_layout = false;
+    o.layout = Layout::shared;
     return o;
 }
-static_assert(cp::pattern_counts(8.0f, 8.0f, 8.0f, flat64()) == cp::PatternCounts{45, 64});
-static_assert(cp::pattern_counts(1.5f, 1.5f, 1.5f, flat64()) == cp::PatternCounts{10, 9});
+static_assert(cp::pattern_counts(8.0f, 8.0f, 8.0f, flat64()) == Counts{45, 64});
+static_assert(cp::pattern_counts(1.5f, 1.5f, 1.5f, flat64()) == Counts{10, 9});
 
 constexpr std::uint32_t triforce_vertices(std::uint32_t n) {
     return (n + 1) * (n + 2) / 2;
@@ -59,7 +59,7 @@ TEST_CASE("cp triforce: equal powers of two are exactly the uniform triforce gri
                                 << (collapse ? " collapse" : " no-collapse"));
                     CpRunner run(options(max_factor, rule, collapse));
                     const MeshView m = run.run(f, f, f);
-                    REQUIRE(run.counts() == cp::PatternCounts{triforce_vertices(n), n * n});
+                    REQUIRE(run.counts() == Counts{triforce_vertices(n), n * n});
                     REQUIRE(area_stats(m).degenerate == 0);
                     REQUIRE(all_triangles(m) ==
                             grid); // positions are exactly (i/N, j/N), cells as the grid's
@@ -102,9 +102,9 @@ TEST_CASE("cp triforce: the equal-factor table of cp_resolution §7.3", "[cp_pat
             CpRunner a(options(max_factor, cp::ColumnRule::staircase));
             const MeshView mb = b.run(r.f, r.f, r.f);
             const MeshView ma = a.run(r.f, r.f, r.f);
-            CHECK(b.counts() == cp::PatternCounts{r.vertices_b, r.triangles_b});
+            CHECK(b.counts() == Counts{r.vertices_b, r.triangles_b});
             CHECK(area_stats(mb).degenerate == r.degenerate_b);
-            CHECK(a.counts() == cp::PatternCounts{r.vertices_a, r.triangles_a});
+            CHECK(a.counts() == Counts{r.vertices_a, r.triangles_a});
             CHECK(area_stats(ma).degenerate == r.degenerate_a);
             CHECK(surface_triangles(ma) == surface_triangles(mb));
         }
@@ -117,7 +117,7 @@ TEST_CASE("cp triforce: Type 1 at f = 2 is the n = 2 triforce, at f = 1.5 the N 
         const TriforceGrid g2 = triforce_grid(2, cp::fixed_one);
         REQUIRE(surface_triangles(run.run(2.0f, 2.0f, 2.0f)) == surface_triangles({g2.vertices, g2.indices}));
         const MeshView m = run.run(1.5f, 1.5f, 1.5f);
-        REQUIRE(run.counts() == cp::PatternCounts{10, 9});
+        REQUIRE(run.counts() == Counts{10, 9});
         REQUIRE(area_stats(m).degenerate == 0);
         REQUIRE(index_topology(m).euler == 1);
     }
@@ -142,7 +142,7 @@ TEST_CASE("cp triforce: equal tokens give N^2 with rule (a) and N^2 - d_T with r
                 const MeshView mb = b.run(s, s, s);
                 const MeshView ma = a.run(s, s, s);
                 CHECK(b.counts().triangles == n * n - d);
-                CHECK(a.counts() == cp::PatternCounts{triforce_vertices(n), n * n});
+                CHECK(a.counts() == Counts{triforce_vertices(n), n * n});
                 CHECK(area_stats(ma).degenerate == area_stats(mb).degenerate + d);
                 CHECK(surface_triangles(ma) == surface_triangles(mb));
             }
@@ -153,7 +153,7 @@ TEST_CASE("cp triforce: equal tokens give N^2 with rule (a) and N^2 - d_T with r
                 b.run(s0, s1, s2);
                 a.run(s0, s1, s2);
                 CHECK(b.counts().triangles == n * n - d);
-                CHECK(a.counts() == cp::PatternCounts{triforce_vertices(n), n * n});
+                CHECK(a.counts() == Counts{triforce_vertices(n), n * n});
             }
         }
     }

@@ -21,7 +21,7 @@ namespace {
 constexpr cp::PatternOptions flat_options(unsigned max_factor) {
     cp::PatternOptions o;
     o.max_factor = max_factor;
-    o.provoking_layout = false;
+    o.layout = Layout::shared;
     return o;
 }
 
@@ -29,12 +29,12 @@ constexpr cp::PatternOptions flat_options(unsigned max_factor) {
 static_assert(cp::pattern_type(state(0, 0), state(0, 0), state(0, 0)) == cp::PatternType::single);
 static_assert(cp::pattern_type(state(1, 5), state(16, 7), state(0, 0)) == cp::PatternType::fan);
 static_assert(cp::pattern_type(state(2, 0), state(0, 0), state(1, 0)) == cp::PatternType::parallelogram);
-static_assert(cp::pattern_counts(1.0f, 1.0f, 1.0f, flat_options(64)) == cp::PatternCounts{3, 1});
-static_assert(cp::pattern_counts(64.0f, 1.0f, 1.0f, flat_options(64)) == cp::PatternCounts{66, 64}); // §7.4
-static_assert(cp::pattern_counts(4.0f, 8.0f, 16.0f, flat_options(64)) == cp::PatternCounts{40, 50}); // §7.4
+static_assert(cp::pattern_counts(1.0f, 1.0f, 1.0f, flat_options(64)) == Counts{3, 1});
+static_assert(cp::pattern_counts(64.0f, 1.0f, 1.0f, flat_options(64)) == Counts{66, 64}); // §7.4
+static_assert(cp::pattern_counts(4.0f, 8.0f, 16.0f, flat_options(64)) == Counts{40, 50}); // §7.4
 constexpr bool max_counts_bound_the_largest_pattern() {
-    const cp::PatternCounts big = cp::pattern_counts(16.0f, 16.0f, 16.0f, default_options(64));
-    const cp::PatternCounts cap = cp::max_pattern_counts(64);
+    const Counts big = cp::pattern_counts(16.0f, 16.0f, 16.0f, default_options(64));
+    const Counts cap = cp::max_pattern_counts(64);
     return big.vertices <= cap.vertices && big.triangles <= cap.triangles && cap.triangles >= 64 * 64;
 }
 static_assert(max_counts_bound_the_largest_pattern());
@@ -42,19 +42,19 @@ static_assert(max_counts_bound_the_largest_pattern());
 constexpr bool fills_triforce_4() {
     std::array<DomainPoint, 15> v{};
     std::array<std::uint32_t, 48> i{};
-    const cp::PatternCounts c = cp::tessellate(4.0f, 4.0f, 4.0f, flat_options(64), v.data(), i.data());
+    const Counts c = cp::tessellate(v.data(), i.data(), 4.0f, 4.0f, 4.0f, flat_options(64));
     bool has_v1 = false;
     for (DomainPoint p : v) has_v1 = has_v1 || (p.u == cp::fixed_one && p.v == 0);
-    return c == cp::PatternCounts{15, 16} && has_v1;
+    return c == Counts{15, 16} && has_v1;
 }
 static_assert(fills_triforce_4());
 constexpr bool fills_from_states() {
     std::array<DomainPoint, 3> v{};
     std::array<std::uint32_t, 3> i{};
-    const cp::PatternCounts c =
-        cp::tessellate(state(0, 0), state(0, 0), state(0, 0), flat_options(64), v.data(), i.data());
-    return c == cp::PatternCounts{3, 1} && v[i[0]] == DomainPoint{0, 0} &&
-           v[i[1]] == DomainPoint{cp::fixed_one, 0} && v[i[2]] == DomainPoint{0, cp::fixed_one};
+    const Counts c =
+        cp::tessellate(v.data(), i.data(), state(0, 0), state(0, 0), state(0, 0), flat_options(64));
+    return c == Counts{3, 1} && v[i[0]] == DomainPoint{0, 0} && v[i[1]] == DomainPoint{cp::fixed_one, 0} &&
+           v[i[2]] == DomainPoint{0, cp::fixed_one};
 }
 static_assert(fills_from_states());
 
@@ -65,13 +65,14 @@ std::string check_state_triple(CpRunner& run, cp::LineState s0, cp::LineState s1
     const MeshView m = run.run(s0, s1, s2);
     if (!run.within_capacity()) return "counts exceed max_pattern_counts";
     std::string out;
-    const cp::PatternCounts counted = cp::tessellate(s0, s1, s2, run.options(), nullptr, nullptr);
+    const Counts counted = cp::tessellate(nullptr, nullptr, s0, s1, s2, run.options());
     if (!(counted == run.counts())) out += "count-only call differs; ";
     const ValidityReport r = check_valid_tessellation(m, cp::fixed_one, p0, p1, p2);
     out += r.failures;
     degenerate += r.area.degenerate;
-    if (run.options().provoking_layout && !unique_first_index(m)) out += "first index not unique; ";
-    if (!run.options().provoking_layout) {
+    if (run.options().layout == Layout::provoking && !unique_first_index(m))
+        out += "first index not unique; ";
+    if (run.options().layout == Layout::shared) {
         const IndexTopology t = index_topology(m);
         if (!t.no_repeated_index) out += "a triangle repeats an index; ";
         if (!t.edges_unique) out += "a directed index edge is used twice; ";
@@ -220,23 +221,23 @@ TEST_CASE("cp pattern: max_pattern_counts bounds every pattern under every optio
     // Count-only calls over token triples (all at max 64, T18..T24 at max 256: the largest), all 8 options.
     // Counts depend on tokens only (the index buffer is fixed inside a token triple, test_cp_pattern_pops).
     for (unsigned max_factor : {64u, 256u}) {
-        const cp::PatternCounts cap = cp::max_pattern_counts(max_factor);
+        const Counts cap = cp::max_pattern_counts(max_factor);
         const unsigned tokens = cp::token_count(max_factor);
         const unsigned first = max_factor == 64 ? 0 : 18;
-        cp::PatternCounts worst{};
+        Counts worst{};
         FailureLog log;
         for (int variant = 0; variant < 8; ++variant) {
             cp::PatternOptions o;
             o.max_factor = max_factor;
             o.column_rule = (variant & 1) ? cp::ColumnRule::staircase : cp::ColumnRule::minimal;
             o.collapse_t0 = (variant & 2) == 0;
-            o.provoking_layout = (variant & 4) == 0;
+            o.layout = (variant & 4) == 0 ? Layout::provoking : Layout::shared;
             for (unsigned a = first; a < tokens; ++a)
                 for (unsigned b = first; b < tokens; ++b)
                     for (unsigned c = first; c < tokens; ++c)
                         for (std::uint32_t t : {cp::lerp_one}) {
-                            const cp::PatternCounts n =
-                                cp::tessellate(state(a, t), state(b, t), state(c, t), o, nullptr, nullptr);
+                            const Counts n =
+                                cp::tessellate(nullptr, nullptr, state(a, t), state(b, t), state(c, t), o);
                             worst.vertices = std::max(worst.vertices, n.vertices);
                             worst.triangles = std::max(worst.triangles, n.triangles);
                             if (n.vertices > cap.vertices || n.triangles > cap.triangles)
@@ -273,10 +274,10 @@ TEST_CASE("cp pattern: Type 0 is the single domain triangle", "[cp_pattern]") {
             for (float f : {1.0f, 0.5f, 0.0f}) {
                 cp::PatternOptions o;
                 o.max_factor = max_factor;
-                o.provoking_layout = provoking;
+                o.layout = provoking ? Layout::provoking : Layout::shared;
                 CpRunner run(o);
                 const MeshView m = run.run(f, f, 1.0f);
-                REQUIRE(run.counts() == cp::PatternCounts{3, 1});
+                REQUIRE(run.counts() == Counts{3, 1});
                 REQUIRE(all_triangles(m) == std::vector<PositionTriangle>{
                                                 {DomainPoint{0, 0}, {cp::fixed_one, 0}, {0, cp::fixed_one}}});
             }
@@ -303,7 +304,7 @@ TEST_CASE("cp pattern: Type 1 over a dense lerp grid of e0 and e2, every e1 toke
     const std::vector<cp::LineState> e1_states = token_states(64, zero_half_one);
     for (bool provoking : {true, false}) {
         cp::PatternOptions o = default_options(64);
-        o.provoking_layout = provoking;
+        o.layout = provoking ? Layout::provoking : Layout::shared;
         CpRunner run(o);
         FailureLog log;
         std::size_t degenerate = 0, meshes = 0;
@@ -359,7 +360,7 @@ TEST_CASE("cp pattern: non-default options tile exactly and keep the surface", "
                 o.max_factor = max_factor;
                 o.column_rule = (variant & 1) ? cp::ColumnRule::staircase : cp::ColumnRule::minimal;
                 o.collapse_t0 = (variant & 2) == 0;
-                o.provoking_layout = (variant & 4) == 0;
+                o.layout = (variant & 4) == 0 ? Layout::provoking : Layout::shared;
                 CpRunner run(o);
                 std::size_t degenerate = 0;
                 std::string f = check_state_triple(run, s[0], s[1], s[2], line_points(s[0]),
@@ -413,7 +414,7 @@ TEST_CASE("cp pattern: unequal-factor counts of cp_resolution §7.4", "[cp_patte
             const MeshView m = run.run(r.f0, r.f1, r.f2);
             CHECK(cp::pattern_type(cp::line_state(r.f0, max_factor), cp::line_state(r.f1, max_factor),
                                    cp::line_state(r.f2, max_factor)) == r.type);
-            CHECK(run.counts() == cp::PatternCounts{r.vertices, r.triangles});
+            CHECK(run.counts() == Counts{r.vertices, r.triangles});
             CHECK(surface_triangles(m).size() == r.non_degenerate);
             CHECK(check_cp_mesh(m, cp::line_state(r.f0, max_factor), cp::line_state(r.f1, max_factor),
                                 cp::line_state(r.f2, max_factor))

@@ -17,7 +17,10 @@
 
 #include <catch2/catch.hpp>
 
+using ctess::Counts;
 using ctess::DomainPoint;
+using ctess::Layout;
+using ctess::Winding;
 using namespace ctess::cp;
 
 namespace {
@@ -25,17 +28,17 @@ namespace {
 constexpr std::int64_t one = fixed_one;
 
 struct Mesh {
-    PatternCounts counts;
+    Counts counts;
     std::vector<DomainPoint> vertices;
     std::vector<std::uint32_t> indices;
 };
 
 Mesh build(LineState s0, LineState s1, LineState s2, const PatternOptions& opt) {
     Mesh m;
-    m.counts = tessellate(s0, s1, s2, opt, nullptr, nullptr);
+    m.counts = tessellate(nullptr, nullptr, s0, s1, s2, opt);
     m.vertices.resize(m.counts.vertices);
     m.indices.resize(3 * std::size_t{m.counts.triangles});
-    const PatternCounts filled = tessellate(s0, s1, s2, opt, m.vertices.data(), m.indices.data());
+    const Counts filled = tessellate(m.vertices.data(), m.indices.data(), s0, s1, s2, opt);
     REQUIRE(filled == m.counts);
     return m;
 }
@@ -76,7 +79,7 @@ PatternOptions options(unsigned max_factor, ColumnRule rule = ColumnRule::minima
     o.max_factor = max_factor;
     o.column_rule = rule;
     o.collapse_t0 = collapse;
-    o.provoking_layout = provoking;
+    o.layout = provoking ? Layout::provoking : Layout::shared;
     return o;
 }
 
@@ -97,9 +100,9 @@ Tracks tracks_of(unsigned token) {
 TEST_CASE("equal factors: counts of cp_resolution 7.3, both rules, max 64 and 256", "[cp][counts]") {
     struct Row {
         float f;
-        PatternCounts b;
+        Counts b;
         unsigned degenerate_b;
-        PatternCounts a;
+        Counts a;
         unsigned degenerate_a;
     };
     const Row rows[] = {
@@ -133,7 +136,7 @@ TEST_CASE("equal factors: counts of cp_resolution 7.3, both rules, max 64 and 25
     }
     for (std::uint32_t n : {128u, 256u}) {
         const Mesh m = build(float(n), float(n), float(n), options(256));
-        CHECK(m.counts == PatternCounts{(n + 1) * (n + 2) / 2, n * n});
+        CHECK(m.counts == Counts{(n + 1) * (n + 2) / 2, n * n});
         CHECK(validity(m).degenerate == 0);
     }
 }
@@ -147,10 +150,10 @@ TEST_CASE("equal tokens: rule (b) emits N^2 - d_T, rule (a) N^2 (cp_resolution 7
             const std::uint32_t n = token_info(tok).segments;
             const LineState s{tok, 12345};
             CAPTURE(max_factor, tok);
-            CHECK(tessellate(s, s, s, options(max_factor, ColumnRule::minimal), nullptr, nullptr).triangles ==
+            CHECK(tessellate(nullptr, nullptr, s, s, s, options(max_factor, ColumnRule::minimal)).triangles ==
                   n * n - d[tok]);
-            CHECK(tessellate(s, s, s, options(max_factor, ColumnRule::staircase), nullptr, nullptr) ==
-                  PatternCounts{(n + 1) * (n + 2) / 2, n * n});
+            CHECK(tessellate(nullptr, nullptr, s, s, s, options(max_factor, ColumnRule::staircase)) ==
+                  Counts{(n + 1) * (n + 2) / 2, n * n});
         }
     }
 }
@@ -159,7 +162,7 @@ TEST_CASE("unequal factors: counts of cp_resolution 7.4", "[cp][counts]") {
     struct Row {
         float f0, f1, f2;
         PatternType type;
-        PatternCounts counts;
+        Counts counts;
         unsigned nondegenerate;
     };
     const auto T2 = PatternType::parallelogram, T1 = PatternType::fan;
@@ -212,13 +215,13 @@ TEST_CASE("Type 2 counts follow the closed form of cp_resolution 4.7 without the
                 for (unsigned i = 0; i < n0; ++i) vertices += r[i];
                 for (unsigned i = 0; i + 1 < n0; ++i) triangles += r[i] + r[i + 1] - 2u;
                 CAPTURE(s0.token, s1.token, s2.token);
-                CHECK(tessellate(s0, s1, s2, options(max_factor, rule, false), nullptr, nullptr) ==
-                      PatternCounts{vertices, triangles});
+                CHECK(tessellate(nullptr, nullptr, s0, s1, s2, options(max_factor, rule, false)) ==
+                      Counts{vertices, triangles});
                 // Provoking layout: one copy of each non-top point of columns 1..n0-2 (interior doubled up).
                 std::uint32_t copies = 0;
                 for (unsigned i = 1; i + 2 <= n0; ++i) copies += r[i] - 1u;
-                CHECK(tessellate(s0, s1, s2, options(max_factor, rule, false, true), nullptr, nullptr) ==
-                      PatternCounts{vertices + copies, triangles});
+                CHECK(tessellate(nullptr, nullptr, s0, s1, s2, options(max_factor, rule, false, true)) ==
+                      Counts{vertices + copies, triangles});
             }
         }
     }
@@ -227,8 +230,8 @@ TEST_CASE("Type 2 counts follow the closed form of cp_resolution 4.7 without the
 TEST_CASE("max_pattern_counts bounds every token triple and every option", "[cp][counts]") {
     for (unsigned max_factor : {8u, 16u, 64u, 256u}) {
         const unsigned tokens = token_count(max_factor);
-        const PatternCounts bound = max_pattern_counts(max_factor);
-        PatternCounts seen{};
+        const Counts bound = max_pattern_counts(max_factor);
+        Counts seen{};
         for (unsigned a = 0; a < tokens; ++a) {
             for (unsigned b = 0; b < tokens; ++b) {
                 // Counts depend on tokens only; at 256, e1 only adds gap triangles and points, so its
@@ -239,8 +242,8 @@ TEST_CASE("max_pattern_counts bounds every token triple and every option", "[cp]
                         const PatternOptions opt =
                             options(max_factor, (o & 1) ? ColumnRule::staircase : ColumnRule::minimal,
                                     (o & 2) != 0, (o & 4) != 0);
-                        const PatternCounts k = tessellate(LineState{a, 7}, LineState{b, 7}, LineState{c, 7},
-                                                           opt, nullptr, nullptr);
+                        const Counts k = tessellate(nullptr, nullptr, LineState{a, 7}, LineState{b, 7},
+                                                    LineState{c, 7}, opt);
                         seen.vertices = std::max(seen.vertices, k.vertices);
                         seen.triangles = std::max(seen.triangles, k.triangles);
                     }
@@ -548,6 +551,34 @@ TEST_CASE("provoking layout: unique first index, same triangles, interior double
     }
 }
 
+// --- winding -----------------------------------------------------------------------------------------------
+
+TEST_CASE("winding: cw is ccw with the last two indices of each triangle swapped", "[cp][winding]") {
+    STATIC_REQUIRE(PatternOptions{}.winding == Winding::ccw);
+    // Type 0, Type 1 (with a T0 collapse), the Type 1 / Type 2 join, Type 2 equal and unequal, the maximum.
+    const float triples[][3] = {{1, 1, 1},   {1.5f, 20, 1.2f}, {2, 2, 2},  {2.6f, 2.6f, 2.6f},
+                                {16, 8, 4},  {5, 2, 2},        {64, 1, 1}, {37.3f, 11.9f, 53.1f},
+                                {64, 64, 64}};
+    for (const bool provoking : {false, true}) {
+        for (const auto& f : triples) {
+            CAPTURE(provoking, f[0], f[1], f[2]);
+            PatternOptions opt = options(64, ColumnRule::minimal, true, provoking);
+            const Mesh ccw = build(f[0], f[1], f[2], opt);
+            opt.winding = Winding::cw;
+            const Mesh cw = build(f[0], f[1], f[2], opt);
+            REQUIRE(cw.counts == ccw.counts);
+            REQUIRE(cw.vertices == ccw.vertices);
+            std::vector<std::uint32_t> swapped = ccw.indices;
+            for (std::size_t k = 0; k + 2 < swapped.size(); k += 3) std::swap(swapped[k + 1], swapped[k + 2]);
+            REQUIRE(cw.indices == swapped);
+            // The signed areas flip: the domain's doubled area, negated, and no triangle turns positive.
+            const Validity v = validity(cw);
+            REQUIRE(v.area2 == -one * one);
+            REQUIRE(v.inverted + v.degenerate == cw.counts.triangles);
+        }
+    }
+}
+
 // --- bad input ---------------------------------------------------------------------------------------------
 
 TEST_CASE("bad input is clamped to [1, max_factor]", "[cp][input]") {
@@ -574,9 +605,9 @@ TEST_CASE("bad input is clamped to [1, max_factor]", "[cp][input]") {
     CHECK(clamp_line_state({99, 5}, 256) == LineState{24, lerp_one});
     CHECK(clamp_line_state({5, 70000}, 64) == LineState{5, lerp_one});
     CHECK(clamp_line_state({0, 777}, 64) == LineState{0, 0});
-    CHECK(tessellate(LineState{99, 5}, LineState{0, 777}, LineState{3, 1u << 31}, options(64), nullptr,
-                     nullptr) == tessellate(LineState{16, lerp_one}, LineState{0, 0}, LineState{3, lerp_one},
-                                            options(64), nullptr, nullptr));
+    CHECK(tessellate(nullptr, nullptr, LineState{99, 5}, LineState{0, 777}, LineState{3, 1u << 31},
+                     options(64)) == tessellate(nullptr, nullptr, LineState{16, lerp_one}, LineState{0, 0},
+                                                LineState{3, lerp_one}, options(64)));
     // max_factor: clamped to [8, 256], rounded down to a power of two.
     CHECK(pattern_max_factor(0) == 8);
     CHECK(pattern_max_factor(64) == 64);
@@ -676,27 +707,27 @@ TEST_CASE("orientation: smallest edge on e2, winding kept, deterministic ties", 
 // --- constant evaluation -----------------------------------------------------------------------------------
 
 namespace {
-constexpr PatternCounts constexpr_mesh_area_ok() {
+constexpr Counts constexpr_mesh_area_ok() {
     std::array<DomainPoint, 64> v{};
     std::array<std::uint32_t, 3 * 68> idx{};
     PatternOptions opt;
     opt.max_factor = 64;
-    opt.provoking_layout = false;
-    const PatternCounts c = tessellate(16.0f, 8.0f, 4.0f, opt, v.data(), idx.data());
+    opt.layout = Layout::shared;
+    const Counts c = tessellate(v.data(), idx.data(), 16.0f, 8.0f, 4.0f, opt);
     std::int64_t area2 = 0;
     for (std::uint32_t t = 0; t < c.triangles; ++t) {
         const DomainPoint a = v[idx[3 * t]], b = v[idx[3 * t + 1]], d = v[idx[3 * t + 2]];
         area2 += (std::int64_t{b.u} - a.u) * (std::int64_t{d.v} - a.v) -
                  (std::int64_t{b.v} - a.v) * (std::int64_t{d.u} - a.u);
     }
-    return area2 == std::int64_t{fixed_one} * fixed_one ? c : PatternCounts{};
+    return area2 == std::int64_t{fixed_one} * fixed_one ? c : Counts{};
 }
 constexpr bool constexpr_provoking_unique() {
     std::array<DomainPoint, 66> v{};
     std::array<std::uint32_t, 3 * 64> idx{};
-    const PatternCounts c = tessellate(8.0f, 8.0f, 8.0f, PatternOptions{64, ColumnRule::minimal, true, true},
-                                       v.data(), idx.data());
-    if (!(c == PatternCounts{66, 64})) return false; // 45 unique + one copy per non-top point of columns 1..6
+    const Counts c = tessellate(v.data(), idx.data(), 8.0f, 8.0f, 8.0f,
+                                PatternOptions{64, ColumnRule::minimal, true, Layout::provoking});
+    if (!(c == Counts{66, 64})) return false; // 45 unique + one copy per non-top point of columns 1..6
     for (std::uint32_t a = 0; a < c.triangles; ++a) {
         for (std::uint32_t b = a + 1; b < c.triangles; ++b) {
             if (idx[3 * a] == idx[3 * b]) return false;
@@ -734,16 +765,17 @@ constexpr std::array<unsigned, 2> constexpr_rows() {
 } // namespace
 
 TEST_CASE("constant evaluation of every public function", "[cp][constexpr]") {
-    STATIC_REQUIRE(constexpr_mesh_area_ok() == PatternCounts{49, 68});
-    STATIC_REQUIRE(tessellate(LineState{4, lerp_one}, LineState{4, lerp_one}, LineState{4, lerp_one},
-                              PatternOptions{64, ColumnRule::minimal, true, false}, nullptr,
-                              nullptr) == PatternCounts{45, 64});
-    STATIC_REQUIRE(pattern_counts(1.5f, 20.0f, 1.2f, PatternOptions{64, ColumnRule::minimal, true, false}) ==
-                   PatternCounts{27, 26});
-    STATIC_REQUIRE(pattern_counts(5, 5, 5, PatternOptions{64, ColumnRule::staircase, true, false}) ==
-                   PatternCounts{28, 36});
-    STATIC_REQUIRE(pattern_counts(1, 1, 1) == PatternCounts{3, 1});
-    STATIC_REQUIRE(max_pattern_counts(64) == PatternCounts{4098, 4096});
+    STATIC_REQUIRE(constexpr_mesh_area_ok() == Counts{49, 68});
+    STATIC_REQUIRE(
+        tessellate(nullptr, nullptr, LineState{4, lerp_one}, LineState{4, lerp_one}, LineState{4, lerp_one},
+                   PatternOptions{64, ColumnRule::minimal, true, Layout::shared}) == Counts{45, 64});
+    STATIC_REQUIRE(
+        pattern_counts(1.5f, 20.0f, 1.2f, PatternOptions{64, ColumnRule::minimal, true, Layout::shared}) ==
+        Counts{27, 26});
+    STATIC_REQUIRE(pattern_counts(5, 5, 5, PatternOptions{64, ColumnRule::staircase, true, Layout::shared}) ==
+                   Counts{28, 36});
+    STATIC_REQUIRE(pattern_counts(1, 1, 1) == Counts{3, 1});
+    STATIC_REQUIRE(max_pattern_counts(64) == Counts{4098, 4096});
     STATIC_REQUIRE(pattern_type(LineState{0, 0}, LineState{9, 0}, LineState{1, 5}) == PatternType::fan);
     STATIC_REQUIRE(constexpr_provoking_unique());
     STATIC_REQUIRE(constexpr_gap_count() == 15);

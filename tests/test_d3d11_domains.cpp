@@ -15,6 +15,7 @@
 namespace {
 
 using namespace ctess::d3d11;
+using ctess::Counts;
 using ctess::DomainPoint;
 
 constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
@@ -26,58 +27,66 @@ constexpr Partitioning all_modes[] = {Partitioning::integer, Partitioning::pow2,
 
 // ---- constant evaluation ----
 constexpr TessOptions odd_cw{Partitioning::fractional_odd, Winding::cw};
-static_assert(tessellate_tri(odd_cw, {2.5f, 3.7f, 5.1f, 4.2f}, nullptr, nullptr) == MeshCounts{27, 37 * 3});
-static_assert(tessellate_tri({Partitioning::fractional_even, Winding::cw}, {64, 64, 64, 64}, nullptr,
-                             nullptr) == MeshCounts{3169, 6144 * 3});
-static_assert(tessellate_quad({Partitioning::integer, Winding::cw}, {3, 3, 3, 3, 3, 3}, nullptr, nullptr) ==
-              MeshCounts{16, 18 * 3});
-static_assert(tessellate_isoline({Partitioning::fractional_even, Winding::cw}, {4.5f, 2.5f}, nullptr,
-                                 nullptr) == MeshCounts{5 * 5, 5 * 4 * 2});
+static_assert(tessellate_tri(nullptr, nullptr, {2.5f, 3.7f, 5.1f, 4.2f}, odd_cw) == Counts{27, 37});
+static_assert(tessellate_tri(nullptr, nullptr, {64, 64, 64, 64},
+                             {Partitioning::fractional_even, Winding::cw}) == Counts{3169, 6144});
+static_assert(tessellate_quad(nullptr, nullptr, {3, 3, 3, 3, 3, 3}, {Partitioning::integer, Winding::cw}) ==
+              Counts{16, 18});
+static_assert(tessellate_isoline(nullptr, nullptr, {4.5f, 2.5f},
+                                 {Partitioning::fractional_even, Winding::cw}) ==
+              IsolineCounts{5 * 5, 5 * 4});
+// The default options are integer partitioning, clockwise (the reference's defaults).
+static_assert(tessellate_tri(nullptr, nullptr, {3, 3, 3, 3}) ==
+              tessellate_tri(nullptr, nullptr, {3, 3, 3, 3}, {Partitioning::integer, Winding::cw}));
 
 // Filled in a constant expression: the minimum triangle, a 2x2 quad, and a small isoline.
 constexpr bool tri_minimum_ok = [] {
     std::array<DomainPoint, 3> p{};
     std::array<std::uint32_t, 3> i{};
-    const MeshCounts c =
-        tessellate_tri({Partitioning::integer, Winding::ccw}, {1, 1, 1, 1}, p.data(), i.data());
-    return c == MeshCounts{3, 3} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 0} &&
+    const Counts c = tessellate_tri(p.data(), i.data(), {1, 1, 1, 1}, {Partitioning::integer, Winding::ccw});
+    return c == Counts{3, 1} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 0} &&
            p[2] == DomainPoint{65536, 0} && i == std::array<std::uint32_t, 3>{0, 2, 1};
 }();
 static_assert(tri_minimum_ok);
 constexpr bool quad_2x2_ok = [] {
     std::array<DomainPoint, 9> p{};
     std::array<std::uint32_t, 24> i{};
-    const MeshCounts c =
-        tessellate_quad({Partitioning::integer, Winding::cw}, {2, 2, 2, 2, 2, 2}, p.data(), i.data());
+    const Counts c =
+        tessellate_quad(p.data(), i.data(), {2, 2, 2, 2, 2, 2}, {Partitioning::integer, Winding::cw});
     // Outer ring clockwise from (0, 1), then the centre.
-    return c == MeshCounts{9, 24} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 32768} &&
+    return c == Counts{9, 8} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 32768} &&
            p[2] == DomainPoint{0, 0} && p[4] == DomainPoint{65536, 0} && p[8] == DomainPoint{32768, 32768};
 }();
 static_assert(quad_2x2_ok);
 constexpr bool isoline_ok = [] {
     std::array<DomainPoint, 6> p{};
     std::array<std::uint32_t, 8> i{};
-    const MeshCounts c = tessellate_isoline({Partitioning::integer, Winding::cw}, {2, 2}, p.data(), i.data());
-    return c == MeshCounts{6, 8} && p[4] == DomainPoint{32768, 32768} &&
+    const IsolineCounts c =
+        tessellate_isoline(p.data(), i.data(), {2, 2}, {Partitioning::integer, Winding::cw});
+    return c == IsolineCounts{6, 4} && p[4] == DomainPoint{32768, 32768} &&
            i == std::array<std::uint32_t, 8>{0, 1, 1, 2, 3, 4, 4, 5};
 }();
 static_assert(isoline_ok);
 
 // ---- helpers ----
-struct Mesh {
-    MeshCounts counts;
+// CountsT: Counts for triangles, IsolineCounts for segments.
+template <class CountsT>
+struct MeshOf {
+    CountsT counts;
     std::vector<DomainPoint> points;
     std::vector<std::uint32_t> indices;
 };
+using Mesh = MeshOf<Counts>;
+using IsoMesh = MeshOf<IsolineCounts>;
 
 template <std::size_t N, class Tessellate>
-Mesh run(Tessellate tessellate, Partitioning mode, Winding winding, const std::array<float, N>& f) {
+auto run(Tessellate tessellate, Partitioning mode, Winding winding, const std::array<float, N>& f) {
     const TessOptions options{mode, winding};
-    Mesh m;
-    m.counts = tessellate(options, f, nullptr, nullptr);
-    m.points.assign(m.counts.points + 1, DomainPoint{0xdeadbeef, 0xdeadbeef});
-    m.indices.assign(m.counts.indices + 1, 0xdeadbeef);
-    const MeshCounts filled = tessellate(options, f, m.points.data(), m.indices.data());
+    MeshOf<decltype(tessellate(nullptr, nullptr, f, options))> m;
+    m.counts = tessellate(nullptr, nullptr, f, options);
+    m.points.assign(m.counts.vertices + 1, DomainPoint{0xdeadbeef, 0xdeadbeef});
+    m.indices.assign(m.counts.index_count() + 1, 0xdeadbeef);
+    const auto filled = tessellate(m.points.data(), m.indices.data(), f, options);
     REQUIRE(filled == m.counts);
     REQUIRE(m.points.back() == DomainPoint{0xdeadbeef, 0xdeadbeef}); // nothing written past the count
     REQUIRE(m.indices.back() == 0xdeadbeef);
@@ -91,11 +100,12 @@ Mesh tri(Partitioning mode, std::array<float, 4> f, Winding w = Winding::cw) {
 Mesh quad(Partitioning mode, std::array<float, 6> f, Winding w = Winding::cw) {
     return run(tessellate_quad, mode, w, f);
 }
-Mesh iso(Partitioning mode, std::array<float, 2> f) {
+IsoMesh iso(Partitioning mode, std::array<float, 2> f) {
     return run(tessellate_isoline, mode, Winding::cw, f);
 }
 
-bool same(const Mesh& a, const Mesh& b) {
+template <class CountsT>
+bool same(const MeshOf<CountsT>& a, const MeshOf<CountsT>& b) {
     return a.counts == b.counts && a.points == b.points && a.indices == b.indices;
 }
 
@@ -137,7 +147,7 @@ bool odd_frame(Partitioning m, std::initializer_list<float> seen) {
 }
 
 // Closed forms of spec §4.6. Returns {points, triangles}.
-MeshCounts tri_formula(Partitioning m, const std::array<float, 4>& f) {
+Counts tri_formula(Partitioning m, const std::array<float, 4>& f) {
     std::uint32_t se[3];
     float clamped[3];
     for (int e = 0; e < 3; ++e) {
@@ -160,7 +170,7 @@ MeshCounts tri_formula(Partitioning m, const std::array<float, 4>& f) {
     return {points, tris};
 }
 
-MeshCounts quad_formula(Partitioning m, const std::array<float, 6>& f) {
+Counts quad_formula(Partitioning m, const std::array<float, 6>& f) {
     std::uint32_t se[4];
     float seen[6];
     for (int e = 0; e < 4; ++e) {
@@ -184,7 +194,7 @@ MeshCounts quad_formula(Partitioning m, const std::array<float, 6>& f) {
     return {points, tris};
 }
 
-MeshCounts isoline_formula(Partitioning m, const std::array<float, 2>& f) {
+IsolineCounts isoline_formula(Partitioning m, const std::array<float, 2>& f) {
     const auto lines = static_cast<std::uint32_t>(std::ceil(clamp_to(f[0], 1.0f, 64.0f)));
     const std::uint32_t detail = edge_segments(m, f[1]);
     return {lines * (detail + 1), lines * detail}; // {points, segments}
@@ -223,7 +233,7 @@ std::int64_t doubled_area(const DomainPoint& a, const DomainPoint& b, const Doma
 // (<= 16 units, see test_d3d11_line), e.g. even 6 + 2^-16 places 32769, 32768, 32767 around the midpoint. So
 // an inverted triangle may have at most 16 units of base times the full height: doubled area >= -16 * 65536.
 void require_tiles(const Mesh& m, std::int64_t domain_doubled_area) {
-    for (const std::uint32_t i : m.indices) REQUIRE(i < m.counts.points);
+    for (const std::uint32_t i : m.indices) REQUIRE(i < m.counts.vertices);
     std::int64_t sum = 0;
     for (std::size_t k = 0; k + 2 < m.indices.size(); k += 3) {
         const std::int64_t a =
@@ -257,17 +267,19 @@ std::vector<std::uint32_t> sorted_edge_points(Partitioning mode, float f) {
 
 TEST_CASE("d3d11 domains: the two done-when numbers", "[d3d11][domains]") {
     const Mesh even64 = tri(Partitioning::fractional_even, {64, 64, 64, 64});
-    REQUIRE(even64.counts.points == 3169);
-    REQUIRE(even64.counts.indices == 6144 * 3);
+    REQUIRE(even64.counts.vertices == 3169);
+    REQUIRE(even64.counts.triangles == 6144);
+    REQUIRE(even64.indices.size() == 6144 * 3);
     const Mesh odd = tri(Partitioning::fractional_odd, {2.5f, 3.7f, 5.1f, 4.2f});
-    REQUIRE(odd.counts.points == 27);
-    REQUIRE(odd.counts.indices == 37 * 3);
+    REQUIRE(odd.counts.vertices == 27);
+    REQUIRE(odd.counts.triangles == 37);
+    REQUIRE(odd.indices.size() == 37 * 3);
 }
 
 TEST_CASE("d3d11 domains: spec 4.6 uniform triangle table", "[d3d11][domains]") {
     struct Row {
         Partitioning mode;
-        std::array<MeshCounts, 10> expect; // {points, triangles}
+        std::array<Counts, 10> expect; // {points, triangles}
     };
     const float factors[10] = {1, 2, 3, 4, 5, 8, 16, 32, 63, 64};
     const Row rows[] = {
@@ -320,17 +332,17 @@ TEST_CASE("d3d11 domains: spec 4.6 uniform triangle table", "[d3d11][domains]") 
         for (int k = 0; k < 10; ++k) {
             const float f = factors[k];
             INFO("mode " << static_cast<int>(row.mode) << " f " << f);
-            const MeshCounts c = tessellate_tri({row.mode, Winding::cw}, {f, f, f, f}, nullptr, nullptr);
-            REQUIRE(c.points == row.expect[k].points);
-            REQUIRE(c.indices == 3 * row.expect[k].indices);
+            const Counts c = tessellate_tri(nullptr, nullptr, {f, f, f, f}, {row.mode, Winding::cw});
+            REQUIRE(c.vertices == row.expect[k].vertices);
+            REQUIRE(c.triangles == row.expect[k].triangles);
             // Uniform closed forms: tris = floor(3S^2/2); points 3S^2/4 + 3S/2 + 1 (even S), 3S + 3(S-1)^2/4
             // (odd).
             const std::uint32_t s = edge_segments(row.mode, f);
             const std::uint32_t pts =
                 s % 2 == 0 ? 3 * s * s / 4 + 3 * s / 2 + 1 : 3 * s + 3 * (s - 1) * (s - 1) / 4;
             if (s > 1) {
-                REQUIRE(c.indices == 3 * (3 * s * s / 2));
-                REQUIRE(c.points == pts);
+                REQUIRE(c.triangles == 3 * s * s / 2);
+                REQUIRE(c.vertices == pts);
             }
         }
     }
@@ -340,17 +352,16 @@ TEST_CASE("d3d11 domains: spec 4.6 non-uniform triangle table", "[d3d11][domains
     const std::array<float, 4> a = {2.5f, 3.7f, 5.1f, 4.2f};
     const std::array<float, 4> b = {7.3f, 1.0f, 20.0f, 9.9f};
     const auto counts = [](Partitioning m, const std::array<float, 4>& f) {
-        const MeshCounts c = tessellate_tri({m, Winding::cw}, f, nullptr, nullptr);
-        return MeshCounts{c.points, c.indices / 3};
+        return tessellate_tri(nullptr, nullptr, f, {m, Winding::cw});
     };
-    REQUIRE(counts(Partitioning::fractional_even, a) == MeshCounts{33, 50});
-    REQUIRE(counts(Partitioning::fractional_even, b) == MeshCounts{91, 150});
-    REQUIRE(counts(Partitioning::fractional_odd, a) == MeshCounts{27, 37});
-    REQUIRE(counts(Partitioning::fractional_odd, b) == MeshCounts{106, 179});
-    REQUIRE(counts(Partitioning::integer, a) == MeshCounts{25, 35});
-    REQUIRE(counts(Partitioning::integer, b) == MeshCounts{90, 149});
-    REQUIRE(counts(Partitioning::pow2, a) == MeshCounts{25, 35});
-    REQUIRE(counts(Partitioning::pow2, b) == MeshCounts{90, 149});
+    REQUIRE(counts(Partitioning::fractional_even, a) == Counts{33, 50});
+    REQUIRE(counts(Partitioning::fractional_even, b) == Counts{91, 150});
+    REQUIRE(counts(Partitioning::fractional_odd, a) == Counts{27, 37});
+    REQUIRE(counts(Partitioning::fractional_odd, b) == Counts{106, 179});
+    REQUIRE(counts(Partitioning::integer, a) == Counts{25, 35});
+    REQUIRE(counts(Partitioning::integer, b) == Counts{90, 149});
+    REQUIRE(counts(Partitioning::pow2, a) == Counts{25, 35});
+    REQUIRE(counts(Partitioning::pow2, b) == Counts{90, 149});
 }
 
 TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[d3d11][domains]") {
@@ -358,47 +369,50 @@ TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[
     for (const Partitioning m : all_modes) {
         for (int n = 0; n < 3000; ++n) {
             const std::array<float, 4> t = {src.factor(), src.factor(), src.factor(), src.factor()};
-            const MeshCounts ct = tessellate_tri({m, Winding::cw}, t, nullptr, nullptr);
-            const MeshCounts ft = tri_formula(m, t);
+            const Counts ct = tessellate_tri(nullptr, nullptr, t, {m, Winding::cw});
+            const Counts ft = tri_formula(m, t);
             INFO("tri mode " << static_cast<int>(m) << " " << t[0] << " " << t[1] << " " << t[2] << " "
                              << t[3]);
-            REQUIRE(ct.points == ft.points);
-            REQUIRE(ct.indices == 3 * ft.indices);
-            REQUIRE(ct.points <= max_tri_counts.points);
-            REQUIRE(ct.indices <= max_tri_counts.indices);
+            REQUIRE(ct.vertices == ft.vertices);
+            REQUIRE(ct.triangles == ft.triangles);
+            REQUIRE(ct.vertices <= max_tri_counts.vertices);
+            REQUIRE(ct.triangles <= max_tri_counts.triangles);
 
             const std::array<float, 6> q = {src.factor(), src.factor(), src.factor(),
                                             src.factor(), src.factor(), src.factor()};
-            const MeshCounts cq = tessellate_quad({m, Winding::cw}, q, nullptr, nullptr);
-            const MeshCounts fq = quad_formula(m, q);
+            const Counts cq = tessellate_quad(nullptr, nullptr, q, {m, Winding::cw});
+            const Counts fq = quad_formula(m, q);
             INFO("quad " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << " " << q[4] << " " << q[5]);
-            REQUIRE(cq.points == fq.points);
-            REQUIRE(cq.indices == 3 * fq.indices);
-            REQUIRE(cq.points <= max_quad_counts.points);
-            REQUIRE(cq.indices <= max_quad_counts.indices);
+            REQUIRE(cq.vertices == fq.vertices);
+            REQUIRE(cq.triangles == fq.triangles);
+            REQUIRE(cq.vertices <= max_quad_counts.vertices);
+            REQUIRE(cq.triangles <= max_quad_counts.triangles);
 
             const std::array<float, 2> l = {src.factor(), src.factor()};
-            const MeshCounts cl = tessellate_isoline({m, Winding::cw}, l, nullptr, nullptr);
-            const MeshCounts fl = isoline_formula(m, l);
+            const IsolineCounts cl = tessellate_isoline(nullptr, nullptr, l, {m, Winding::cw});
+            const IsolineCounts fl = isoline_formula(m, l);
             INFO("isoline " << l[0] << " " << l[1]);
-            REQUIRE(cl.points == fl.points);
-            REQUIRE(cl.indices == 2 * fl.indices);
-            REQUIRE(cl.points <= max_isoline_counts.points);
-            REQUIRE(cl.indices <= max_isoline_counts.indices);
+            REQUIRE(cl.vertices == fl.vertices);
+            REQUIRE(cl.segments == fl.segments);
+            REQUIRE(cl.vertices <= max_isoline_counts.vertices);
+            REQUIRE(cl.segments <= max_isoline_counts.segments);
         }
     }
 }
 
 TEST_CASE("d3d11 domains: buffer maxima are reached at factor 64", "[d3d11][domains]") {
     for (const Partitioning m : {Partitioning::integer, Partitioning::fractional_even}) {
-        REQUIRE(tessellate_tri({m, Winding::cw}, {64, 64, 64, 64}, nullptr, nullptr) == max_tri_counts);
-        REQUIRE(tessellate_quad({m, Winding::cw}, {64, 64, 64, 64, 64, 64}, nullptr, nullptr) ==
+        REQUIRE(tessellate_tri(nullptr, nullptr, {64, 64, 64, 64}, {m, Winding::cw}) == max_tri_counts);
+        REQUIRE(tessellate_quad(nullptr, nullptr, {64, 64, 64, 64, 64, 64}, {m, Winding::cw}) ==
                 max_quad_counts);
-        REQUIRE(tessellate_isoline({m, Winding::cw}, {64, 64}, nullptr, nullptr) == max_isoline_counts);
+        REQUIRE(tessellate_isoline(nullptr, nullptr, {64, 64}, {m, Winding::cw}) == max_isoline_counts);
     }
-    REQUIRE(max_tri_counts == MeshCounts{3169, 18432});
-    REQUIRE(max_quad_counts == MeshCounts{4225, 24576});
-    REQUIRE(max_isoline_counts == MeshCounts{4160, 8192});
+    REQUIRE(max_tri_counts == Counts{3169, 6144});
+    REQUIRE(max_tri_counts.index_count() == 18432);
+    REQUIRE(max_quad_counts == Counts{4225, 8192});
+    REQUIRE(max_quad_counts.index_count() == 24576);
+    REQUIRE(max_isoline_counts == IsolineCounts{4160, 4096});
+    REQUIRE(max_isoline_counts.index_count() == 8192);
 }
 
 // ---- geometry ----
@@ -415,7 +429,7 @@ TEST_CASE("d3d11 domains: triangles tile the domain and shared edges are waterti
             require_tiles(mt, std::int64_t{65536} * 65536);
             std::size_t outer = 0;
             for (int e = 0; e < 3; ++e) outer += edge_points(m, t[e], nullptr) - 1;
-            if (mt.counts.points == 3) outer = 3; // the minimum triangle
+            if (mt.counts.vertices == 3) outer = 3; // the minimum triangle
             // Each edge holds exactly the 1-D points of its factor: what a neighbour sharing it places.
             REQUIRE(sorted_edge(
                         mt, outer, [](const DomainPoint& p) { return p.u == 0; },
@@ -452,8 +466,8 @@ TEST_CASE("d3d11 domains: triangles tile the domain and shared edges are waterti
 
 TEST_CASE("d3d11 domains: isoline lines and segments", "[d3d11][domains]") {
     // Density 3.2 -> 4 lines at v = 0, 1/4, 1/2, 3/4 (none at 1); detail even 2.5 -> the §4.3 vector.
-    const Mesh m = iso(Partitioning::fractional_even, {3.2f, 2.5f});
-    REQUIRE(m.counts == MeshCounts{20, 32});
+    const IsoMesh m = iso(Partitioning::fractional_even, {3.2f, 2.5f});
+    REQUIRE(m.counts == IsolineCounts{20, 16});
     const std::uint32_t detail[5] = {0, 28672, 32768, 36864, 65536};
     for (std::uint32_t l = 0; l < 4; ++l) {
         for (std::uint32_t p = 0; p < 5; ++p) {
@@ -466,7 +480,7 @@ TEST_CASE("d3d11 domains: isoline lines and segments", "[d3d11][domains]") {
         }
     }
     // Density is integer whatever the partitioning: 3.2 rounds up, fractional_odd detail does not.
-    REQUIRE(iso(Partitioning::fractional_odd, {3.2f, 1.0f}).counts == MeshCounts{8, 8});
+    REQUIRE(iso(Partitioning::fractional_odd, {3.2f, 1.0f}).counts == IsolineCounts{8, 4});
 }
 
 // ---- winding and modes ----
@@ -512,19 +526,19 @@ TEST_CASE("d3d11 domains: bad edge factors cull the patch", "[d3d11][domains][ba
                 std::array<float, 4> t = {5, 6, 7, 8};
                 t[e] = bad;
                 const Mesh mt = tri(m, t);
-                REQUIRE(mt.counts == MeshCounts{0, 0});
+                REQUIRE(mt.counts == Counts{0, 0});
             }
             for (int e = 0; e < 4; ++e) {
                 std::array<float, 6> q = {5, 6, 7, 8, 9, 10};
                 q[e] = bad;
-                REQUIRE(quad(m, q).counts == MeshCounts{0, 0});
+                REQUIRE(quad(m, q).counts == Counts{0, 0});
             }
-            REQUIRE(iso(m, {bad, 4}).counts == MeshCounts{0, 0});
-            REQUIRE(iso(m, {4, bad}).counts == MeshCounts{0, 0});
+            REQUIRE(iso(m, {bad, 4}).counts == IsolineCounts{0, 0});
+            REQUIRE(iso(m, {4, bad}).counts == IsolineCounts{0, 0});
             // The inside factor never culls.
-            REQUIRE(tri(m, {5, 6, 7, bad}).counts.points > 0);
-            REQUIRE(quad(m, {5, 6, 7, 8, bad, 9}).counts.points > 0);
-            REQUIRE(quad(m, {5, 6, 7, 8, 9, bad}).counts.points > 0);
+            REQUIRE(tri(m, {5, 6, 7, bad}).counts.vertices > 0);
+            REQUIRE(quad(m, {5, 6, 7, 8, bad, 9}).counts.vertices > 0);
+            REQUIRE(quad(m, {5, 6, 7, 8, 9, bad}).counts.vertices > 0);
         }
     }
 }
@@ -561,25 +575,25 @@ TEST_CASE("d3d11 domains: bad factors that clamp", "[d3d11][domains][bad-input]"
     }
     // Exact results, counted by hand from §4.2/§4.6.
     // Integer, edges 64, inside NaN -> inside 1 (even): 3 x 64 outer points + the centre; 3 x 64 triangles.
-    REQUIRE(tri(Partitioning::integer, {64, 64, 64, nan_f}).counts == MeshCounts{193, 192 * 3});
+    REQUIRE(tri(Partitioning::integer, {64, 64, 64, nan_f}).counts == Counts{193, 192});
     // Odd, all edges 1, inside NaN -> inside 1: the single minimum triangle.
     const Mesh minimum = tri(Partitioning::fractional_odd, {1, 1, 1, nan_f});
-    REQUIRE(minimum.counts == MeshCounts{3, 3});
+    REQUIRE(minimum.counts == Counts{3, 1});
     REQUIRE(minimum.indices == std::vector<std::uint32_t>{0, 1, 2});
     // Odd, edges {2, 1, 1}, inside NaN -> inside 1 + 2^-16, 3 segments: 5 outer + 3 inner points;
     // (3+3-2) + 2 x (1+3-2) + floor(3/2) = 9 triangles.
-    REQUIRE(tri(Partitioning::fractional_odd, {2, 1, 1, nan_f}).counts == MeshCounts{8, 9 * 3});
+    REQUIRE(tri(Partitioning::fractional_odd, {2, 1, 1, nan_f}).counts == Counts{8, 9});
     // The minimum quad: corners from (0, 0) counter-clockwise in (u, v), two triangles.
     const Mesh qmin = quad(Partitioning::integer, {1, 1, 1, 1, nan_f, -inf_f});
     REQUIRE(qmin.points == std::vector<DomainPoint>{{0, 0}, {65536, 0}, {65536, 65536}, {0, 65536}});
     REQUIRE(qmin.indices == std::vector<std::uint32_t>{0, 1, 3, 1, 2, 3});
     // Odd quad: a raw inside factor above 1 also forces the frame (the triangle has no such rule).
-    REQUIRE(quad(Partitioning::fractional_odd, {1, 1, 1, 1, 1, 1}).counts == MeshCounts{4, 6});
+    REQUIRE(quad(Partitioning::fractional_odd, {1, 1, 1, 1, 1, 1}).counts == Counts{4, 2});
     REQUIRE(quad(Partitioning::fractional_odd, {1, 1, 1, 1, 1.5f, nan_f}).counts ==
             quad(Partitioning::fractional_odd, {1, 1, 1, 1, 1.5f, 1.0f + 1.0f / 65536.0f}).counts);
     // Even: the minimum is 6 triangles and 7 points even for all-1 (clamped to 2).
-    REQUIRE(tri(Partitioning::fractional_even, {1, 1, 1, nan_f}).counts == MeshCounts{7, 18});
+    REQUIRE(tri(Partitioning::fractional_even, {1, 1, 1, nan_f}).counts == Counts{7, 6});
     // Isoline: huge density -> 64 lines; tiny density -> 1 line.
-    REQUIRE(iso(Partitioning::integer, {1e30f, 1}).counts == MeshCounts{128, 128});
-    REQUIRE(iso(Partitioning::integer, {denorm_f, 1}).counts == MeshCounts{2, 2});
+    REQUIRE(iso(Partitioning::integer, {1e30f, 1}).counts == IsolineCounts{128, 64});
+    REQUIRE(iso(Partitioning::integer, {denorm_f, 1}).counts == IsolineCounts{2, 1});
 }

@@ -78,14 +78,15 @@ TEST_CASE("mesh pipeline: records, prefix sums and emitted patches match CpPatch
         std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
         REQUIRE(rt::emit_mesh(tables_for(max_factor), mesh, scene.options, rec, vertices, indices));
         // Each patch equals the procedural generator's pattern, rotated onto the base triangle.
-        const cp::PatternCounts most = cp::max_pattern_counts(max_factor);
+        const Counts most = cp::max_pattern_counts(max_factor);
         std::vector<DomainPoint> pv(most.vertices);
         std::vector<std::uint32_t> pi(3 * std::size_t{most.triangles});
         for (std::uint32_t p = 0; p < mesh.triangle_count; ++p) {
             const cp::PatternOptions opt{max_factor};
-            const cp::PatternCounts n = cp::tessellate(
-                cp::LineState{rec[p].token[0], rec[p].t16[0]}, cp::LineState{rec[p].token[1], rec[p].t16[1]},
-                cp::LineState{rec[p].token[2], rec[p].t16[2]}, opt, pv.data(), pi.data());
+            const Counts n =
+                cp::tessellate(pv.data(), pi.data(), cp::LineState{rec[p].token[0], rec[p].t16[0]},
+                               cp::LineState{rec[p].token[1], rec[p].t16[1]},
+                               cp::LineState{rec[p].token[2], rec[p].t16[2]}, opt);
             REQUIRE(n.vertices == rec[p].vertex_count);
             REQUIRE(n.triangles == rec[p].triangle_count);
             const cp::Rotation rot{static_cast<std::uint8_t>(rec[p].rotation)};

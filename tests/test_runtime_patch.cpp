@@ -40,7 +40,7 @@ struct Comparer {
 
     void check(LineState s0, LineState s1, LineState s2) {
         ++triples;
-        const auto ref = ctess::cp::tessellate(s0, s1, s2, options, ref_v.data(), ref_i.data());
+        const auto ref = ctess::cp::tessellate(ref_v.data(), ref_i.data(), s0, s1, s2, options);
         const CpPatch patch(tables, s0, s1, s2);
         const std::string where = ctess::test::describe(s0, s1, s2);
         if (patch.vertex_count() != ref.vertices || patch.triangle_count() != ref.triangles) {

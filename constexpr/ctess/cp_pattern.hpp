@@ -12,12 +12,14 @@
 #include <cstdint>
 
 #include "config.hpp"
+#include "counts.hpp"
 #include "cp_columns.hpp"
 #include "cp_edge_line.hpp"
 #include "cp_gap.hpp"
 #include "cp_line.hpp"
 #include "cp_type1.hpp"
 #include "domain_point.hpp"
+#include "patch_options.hpp"
 
 namespace ctess::cp {
 
@@ -31,13 +33,8 @@ struct PatternOptions {
     unsigned max_factor = ctess::max_tess_factor; // 64 or 256; factors are clamped to [1, max_factor]
     ColumnRule column_rule = ColumnRule::minimal;
     bool collapse_t0 = true; // merge the coincident vertices of T0 edges, drop the triangles that repeat one
-    bool provoking_layout = true; // every triangle's first index is unique within the patch (copies appended)
-};
-
-struct PatternCounts {
-    std::uint32_t vertices = 0;
-    std::uint32_t triangles = 0;
-    friend constexpr bool operator==(const PatternCounts&, const PatternCounts&) = default;
+    Layout layout = Layout::provoking; // provoking: every triangle's first index is unique (copies appended)
+    Winding winding = Winding::ccw;    // in (u, v); cw swaps each triangle's last two indices
 };
 
 // The type follows from the tokens alone (the lerps never change it).
@@ -54,11 +51,13 @@ inline constexpr std::uint32_t max_unique_vertices = max_segments * max_segments
 
 // Collects triangles: drops those that repeat an index (T0 collapse), and in the provoking layout gives a
 // triangle whose first vertex already provokes another triangle a fresh copy of it, appended after the unique
-// vertices in emission order.
+// vertices in emission order. Clockwise output swaps the last two indices, so the provoking vertex stays
+// first.
 struct TriangleSink {
     DomainPoint* vertices = nullptr;
     std::uint32_t* indices = nullptr;
     bool provoking = true;
+    bool clockwise = false;
     std::uint32_t unique = 0;
     std::uint32_t copies = 0;
     std::uint32_t triangles = 0;
@@ -78,19 +77,19 @@ struct TriangleSink {
         }
         if (indices != nullptr) {
             indices[3 * triangles] = i0;
-            indices[3 * triangles + 1] = i1;
-            indices[3 * triangles + 2] = i2;
+            indices[3 * triangles + 1] = clockwise ? i2 : i1;
+            indices[3 * triangles + 2] = clockwise ? i1 : i2;
         }
         ++triangles;
     }
-    constexpr PatternCounts counts() const { return {unique + copies, triangles}; }
+    constexpr Counts counts() const { return {unique + copies, triangles}; }
 };
 
 constexpr DomainPoint e1_point(std::uint32_t s) {
     return {fixed_one - s, s};
 }
 
-constexpr PatternCounts single_pattern(TriangleSink& sink) {
+constexpr Counts single_pattern(TriangleSink& sink) {
     sink.unique = 3;
     if (sink.vertices != nullptr) {
         sink.vertices[0] = {0, 0};
@@ -101,8 +100,8 @@ constexpr PatternCounts single_pattern(TriangleSink& sink) {
     return sink.counts();
 }
 
-constexpr PatternCounts fan_pattern(const EdgeLine& e0, const EdgeLine& e1, const EdgeLine& e2, bool collapse,
-                                    TriangleSink& sink) {
+constexpr Counts fan_pattern(const EdgeLine& e0, const EdgeLine& e1, const EdgeLine& e2, bool collapse,
+                             TriangleSink& sink) {
     const Type1Slots s{e1.segments};
     const bool c0 = collapse && e0.token == 0;
     const bool c1 = collapse && e1.token == 0;
@@ -146,8 +145,8 @@ constexpr PatternCounts fan_pattern(const EdgeLine& e0, const EdgeLine& e1, cons
     return sink.counts();
 }
 
-constexpr PatternCounts parallelogram_pattern(const EdgeLine& e0, const EdgeLine& e1, const EdgeLine& e2,
-                                              ColumnRule rule, bool collapse, TriangleSink& sink) {
+constexpr Counts parallelogram_pattern(const EdgeLine& e0, const EdgeLine& e1, const EdgeLine& e2,
+                                       ColumnRule rule, bool collapse, TriangleSink& sink) {
     ColumnCounts rows{};
     const unsigned n0 = column_counts(e0.token, e2.token, rule, rows.data());
     const unsigned n1 = e1.segments;
@@ -234,13 +233,14 @@ constexpr PatternCounts parallelogram_pattern(const EdgeLine& e0, const EdgeLine
 
 } // namespace detail
 
-// Writes the pattern of three line states. vertices: counts().vertices entries, indices: 3 per triangle,
-// counter-clockwise in (u, v), provoking vertex first. Null pointers = count only (call first to size).
+// Writes the pattern of three line states. Outputs first, then inputs, then options (patch_options.hpp).
+// vertices: Counts::vertices entries, indices: 3 per triangle, counter-clockwise in (u, v) (opt.winding),
+// provoking vertex first. Null pointers = count only (call first to size).
 // Vertex order: Type 0: v0, v1, v2. Type 1: v0, A0, B0, e1 points from v1 to v2, B2, A2, P. Type 2: column 0
 // (e2 points from v0), column 1, ..., column n0-1 (each from its e0 point up), then e1 points from v1 to v2.
 // The T0 collapse removes merged vertices from that order; the provoking layout appends copies after it.
-constexpr PatternCounts tessellate(LineState s0, LineState s1, LineState s2, const PatternOptions& opt,
-                                   DomainPoint* vertices, std::uint32_t* indices) {
+constexpr Counts tessellate(DomainPoint* vertices, std::uint32_t* indices, LineState s0, LineState s1,
+                            LineState s2, const PatternOptions& opt = {}) {
     const unsigned max_factor = pattern_max_factor(opt.max_factor);
     s0 = clamp_line_state(s0, max_factor);
     s1 = clamp_line_state(s1, max_factor);
@@ -248,7 +248,8 @@ constexpr PatternCounts tessellate(LineState s0, LineState s1, LineState s2, con
     detail::TriangleSink sink;
     sink.vertices = vertices;
     sink.indices = indices;
-    sink.provoking = opt.provoking_layout;
+    sink.provoking = opt.layout == Layout::provoking;
+    sink.clockwise = opt.winding == Winding::cw;
     const PatternType type = pattern_type(s0, s1, s2);
     if (type == PatternType::single) return detail::single_pattern(sink);
     const EdgeLine e0 = make_edge_line(s0);
@@ -259,22 +260,22 @@ constexpr PatternCounts tessellate(LineState s0, LineState s1, LineState s2, con
 }
 
 // line_state() of each factor (clamped to [1, max_factor]), then the pattern above.
-constexpr PatternCounts tessellate(float f0, float f1, float f2, const PatternOptions& opt,
-                                   DomainPoint* vertices, std::uint32_t* indices) {
+constexpr Counts tessellate(DomainPoint* vertices, std::uint32_t* indices, float f0, float f1, float f2,
+                            const PatternOptions& opt = {}) {
     const unsigned max_factor = pattern_max_factor(opt.max_factor);
-    return tessellate(line_state(f0, max_factor), line_state(f1, max_factor), line_state(f2, max_factor), opt,
-                      vertices, indices);
+    return tessellate(vertices, indices, line_state(f0, max_factor), line_state(f1, max_factor),
+                      line_state(f2, max_factor), opt);
 }
 
-constexpr PatternCounts pattern_counts(float f0, float f1, float f2, const PatternOptions& opt = {}) {
-    return tessellate(f0, f1, f2, opt, nullptr, nullptr);
+constexpr Counts pattern_counts(float f0, float f1, float f2, const PatternOptions& opt = {}) {
+    return tessellate(nullptr, nullptr, f0, f1, f2, opt);
 }
 
 // Upper bound of the counts over every input and every option, for sizing buffers: the top token on all
 // three edges is the largest pattern (the triforce, checked exhaustively by the tests), with M^2 triangles
 // and M^2 + 2 vertices in the provoking layout ((M+1)(M+2)/2 unique plus one copy per doubled interior
 // point).
-constexpr PatternCounts max_pattern_counts(unsigned max_factor) {
+constexpr Counts max_pattern_counts(unsigned max_factor) {
     const std::uint32_t m = pattern_max_factor(max_factor);
     return {m * m + 2, m * m};
 }

@@ -9,10 +9,11 @@
 #include <cstdint>
 
 #include "d3d11_factors.hpp"
+#include "patch_options.hpp"
 
 namespace ctess::d3d11 {
 
-enum class Winding : std::uint8_t { cw, ccw }; // output primitive TRIANGLE_CW / TRIANGLE_CCW
+using ctess::Winding; // output primitive TRIANGLE_CW / TRIANGLE_CCW; D3D11 defaults to cw
 
 // Appends triangles given in clockwise order; CCW output swaps the last two indices. A null output only
 // counts.

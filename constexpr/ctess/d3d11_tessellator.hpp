@@ -2,9 +2,10 @@
 // the triangle, quad and isoline domains.
 //
 // Points are (u, v) in 16.16 (for triangles w = 1 - u - v) in the reference's output order; indices are in
-// the reference's order, 3 per triangle (TRIANGLE_CW or TRIANGLE_CCW) or 2 per isoline segment. Pass null
-// output pointers to get the counts only; otherwise size the buffers with the returned counts or the
-// max_*_counts.
+// the reference's order, 3 per triangle (TRIANGLE_CW or TRIANGLE_CCW) or 2 per isoline segment. Arguments:
+// outputs, then factors, then options, as everywhere (patch_options.hpp). Pass null outputs to get the counts
+// only (ctess::Counts for triangles, IsolineCounts for segments); otherwise size the buffers with the
+// returned counts or the max_*_counts.
 //
 // Bad factors (see d3d11_factors.hpp): an edge factor (isoline: density or detail) that is NaN, zero,
 // negative or -inf culls the patch, which returns {0, 0}; every other value, including +inf, huge and
@@ -14,6 +15,7 @@
 #include <array>
 #include <cstdint>
 
+#include "counts.hpp"
 #include "d3d11_edge.hpp"
 #include "d3d11_factors.hpp"
 #include "d3d11_stitch.hpp"
@@ -26,16 +28,18 @@ struct TessOptions {
     Winding winding = Winding::cw;
 };
 
-struct MeshCounts {
-    std::uint32_t points = 0;
-    std::uint32_t indices = 0; // 3 per triangle, 2 per isoline segment
-    friend constexpr bool operator==(const MeshCounts&, const MeshCounts&) = default;
+// The isoline domain's counts: points and line segments (2 indices each).
+struct IsolineCounts {
+    std::uint32_t vertices = 0;
+    std::uint32_t segments = 0;
+    constexpr std::uint32_t index_count() const { return 2 * segments; }
+    friend constexpr bool operator==(const IsolineCounts&, const IsolineCounts&) = default;
 };
 
 // Buffer sizes that fit any factors: factor 64 everywhere (65 points per edge).
-inline constexpr MeshCounts max_tri_counts = {3169, 6144 * 3};
-inline constexpr MeshCounts max_quad_counts = {65 * 65, 2 * 64 * 64 * 3};
-inline constexpr MeshCounts max_isoline_counts = {65 * 64, 64 * 64 * 2};
+inline constexpr Counts max_tri_counts = {3169, 6144};
+inline constexpr Counts max_quad_counts = {65 * 65, 2 * 64 * 64};
+inline constexpr IsolineCounts max_isoline_counts = {65 * 64, 64 * 64};
 
 namespace detail {
 
@@ -72,8 +76,8 @@ constexpr std::uint32_t edge_param_index(bool reversed, std::uint32_t first, std
 // ---- triangle domain ----
 
 // factors: {Ueq0, Veq0, Weq0, inside}.
-constexpr MeshCounts tessellate_tri(const TessOptions& options, const std::array<float, 4>& factors,
-                                    DomainPoint* points, std::uint32_t* indices) {
+constexpr Counts tessellate_tri(DomainPoint* points, std::uint32_t* indices,
+                                const std::array<float, 4>& factors, const TessOptions& options = {}) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 3; ++e)
         if (culls(factors[e])) return {};
@@ -95,7 +99,7 @@ constexpr MeshCounts tessellate_tri(const TessOptions& options, const std::array
         pw.add(0, 0);         // W
         pw.add(fixed_one, 0); // U
         tw.add(0, 1, 2);
-        return {pw.count, tw.count};
+        return {pw.count, tw.count / 3};
     }
 
     const EdgeContext edge_ctx[3] = {edge_context(edge[0]), edge_context(edge[1]), edge_context(edge[2])};
@@ -119,7 +123,7 @@ constexpr MeshCounts tessellate_tri(const TessOptions& options, const std::array
             }
         }
     }
-    if (points == nullptr && indices == nullptr) return {point_total, 3 * tri_total};
+    if (points == nullptr && indices == nullptr) return {point_total, tri_total};
 
     if (points != nullptr) {
         // Outer edges: Ueq0 from V to W, Veq0 from W to U, Weq0 from U to V; each edge's last point is the
@@ -187,14 +191,14 @@ constexpr MeshCounts tessellate_tri(const TessOptions& options, const std::array
         }
         if (odd_inside) tw.add(outer_base, outer_base + 1, outer_base + 2); // the centre triangle
     }
-    return {point_total, 3 * tri_total};
+    return {point_total, tri_total};
 }
 
 // ---- quad domain ----
 
 // factors: {Ueq0, Veq0, Ueq1, Veq1, insideU, insideV}.
-constexpr MeshCounts tessellate_quad(const TessOptions& options, const std::array<float, 6>& factors,
-                                     DomainPoint* points, std::uint32_t* indices) {
+constexpr Counts tessellate_quad(DomainPoint* points, std::uint32_t* indices,
+                                 const std::array<float, 6>& factors, const TessOptions& options = {}) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 4; ++e)
         if (culls(factors[e])) return {};
@@ -224,7 +228,7 @@ constexpr MeshCounts tessellate_quad(const TessOptions& options, const std::arra
         pw.add(0, fixed_one);
         tw.add(0, 1, 3);
         tw.add(1, 2, 3);
-        return {pw.count, tw.count};
+        return {pw.count, tw.count / 3};
     }
 
     EdgeContext edge_ctx[4] = {};
@@ -268,7 +272,7 @@ constexpr MeshCounts tessellate_quad(const TessOptions& options, const std::arra
             }
         }
     }
-    if (points == nullptr && indices == nullptr) return {point_total, 3 * tri_total};
+    if (points == nullptr && indices == nullptr) return {point_total, tri_total};
 
     if (points != nullptr) {
         // Outer edges clockwise from (0, 1): Ueq0 down, Veq0 right, Ueq1 up, Veq1 left.
@@ -356,21 +360,22 @@ constexpr MeshCounts tessellate_quad(const TessOptions& options, const std::arra
                 strip_quads + 1, backward_row(outer_base + 2 * strip_quads + 1), forward_row(outer_base));
         }
     }
-    return {point_total, 3 * tri_total};
+    return {point_total, tri_total};
 }
 
 // ---- isoline domain ----
 
 // factors: {density, detail}. Density is always integer (rounded up, [1, 64]); lines sit at v = 0 .. < 1
 // (none at v = 1); detail follows the partitioning. Segments connect consecutive points of each line.
-constexpr MeshCounts tessellate_isoline(const TessOptions& options, const std::array<float, 2>& factors,
-                                        DomainPoint* points, std::uint32_t* indices) {
+constexpr IsolineCounts tessellate_isoline(DomainPoint* points, std::uint32_t* indices,
+                                           const std::array<float, 2>& factors,
+                                           const TessOptions& options = {}) {
     if (culls(factors[0]) || culls(factors[1])) return {};
     const FixedFactor density = process_edge_factor(Partitioning::integer, factors[0]);
     const FixedFactor detail_f = process_edge_factor(options.partitioning, factors[1]);
     const std::uint32_t lines = point_count(density) - 1;
     const std::uint32_t per_line = point_count(detail_f);
-    const MeshCounts counts{lines * per_line, lines * (per_line - 1) * 2};
+    const IsolineCounts counts{lines * per_line, lines * (per_line - 1)};
     if (points != nullptr) {
         const EdgeContext density_ctx = edge_context(density);
         const EdgeContext detail_ctx = edge_context(detail_f);

@@ -99,17 +99,17 @@ class CpRunner {
           indices_(3 * (2 * std::size_t{capacity_.triangles} + slack)) {}
 
     const cp::PatternOptions& options() const { return options_; }
-    cp::PatternCounts capacity() const { return capacity_; }
+    Counts capacity() const { return capacity_; }
 
     MeshView run(cp::LineState s0, cp::LineState s1, cp::LineState s2) {
-        counts_ = cp::tessellate(s0, s1, s2, options_, vertices_.data(), indices_.data());
+        counts_ = cp::tessellate(vertices_.data(), indices_.data(), s0, s1, s2, options_);
         return view();
     }
     MeshView run(float f0, float f1, float f2) {
-        counts_ = cp::tessellate(f0, f1, f2, options_, vertices_.data(), indices_.data());
+        counts_ = cp::tessellate(vertices_.data(), indices_.data(), f0, f1, f2, options_);
         return view();
     }
-    cp::PatternCounts counts() const { return counts_; }
+    Counts counts() const { return counts_; }
     // True when the last run fits the buffers (a larger count would have written past them).
     bool within_capacity() const {
         return counts_.vertices <= capacity_.vertices && counts_.triangles <= capacity_.triangles;
@@ -123,8 +123,8 @@ class CpRunner {
                 std::span<const std::uint32_t>(indices_.data(), 3 * std::size_t{counts_.triangles})};
     }
     cp::PatternOptions options_;
-    cp::PatternCounts capacity_;
-    cp::PatternCounts counts_{};
+    Counts capacity_;
+    Counts counts_{};
     std::vector<DomainPoint> vertices_;
     std::vector<std::uint32_t> indices_;
 };

@@ -44,10 +44,10 @@ Mesh tessellate_d3d11(const PatternRequest& r) {
     mesh.fixed_one = d3d11::fixed_one;
     const auto& f = r.factors;
     auto run = [&](auto fn, const auto& factors) {
-        const d3d11::MeshCounts counts = fn(opt, factors, nullptr, nullptr);
-        mesh.vertices.resize(counts.points);
-        mesh.indices.resize(counts.indices);
-        fn(opt, factors, mesh.vertices.data(), mesh.indices.data());
+        const auto counts = fn(nullptr, nullptr, factors, opt); // Counts, or IsolineCounts for iso
+        mesh.vertices.resize(counts.vertices);
+        mesh.indices.resize(counts.index_count());
+        fn(mesh.vertices.data(), mesh.indices.data(), factors, opt);
     };
     if (r.domain == "tri") {
         if (f.size() != 3 && f.size() != 4)
@@ -78,11 +78,11 @@ Mesh tessellate_d3d11(const PatternRequest& r) {
 
 void append_cp_triangle(Mesh& mesh, const cp::PatternOptions& opt, const std::array<float, 3>& f,
                         unsigned quad_half, bool quad) {
-    const cp::PatternCounts counts = cp::tessellate(f[0], f[1], f[2], opt, nullptr, nullptr);
+    const Counts counts = cp::tessellate(nullptr, nullptr, f[0], f[1], f[2], opt);
     const std::size_t v0 = mesh.vertices.size(), i0 = mesh.indices.size();
     mesh.vertices.resize(v0 + counts.vertices);
     mesh.indices.resize(i0 + std::size_t{counts.triangles} * 3);
-    cp::tessellate(f[0], f[1], f[2], opt, mesh.vertices.data() + v0, mesh.indices.data() + i0);
+    cp::tessellate(mesh.vertices.data() + v0, mesh.indices.data() + i0, f[0], f[1], f[2], opt);
     for (std::size_t i = i0; i < mesh.indices.size(); ++i) mesh.indices[i] += static_cast<std::uint32_t>(v0);
     if (quad)
         for (std::size_t i = v0; i < mesh.vertices.size(); ++i)
@@ -123,7 +123,8 @@ Mesh tessellate_cp(const PatternRequest& r) {
                                r.factors.size()));
     cp::PatternOptions opt;
     opt.max_factor = r.max_factor;
-    opt.provoking_layout = r.provoking_layout;
+    opt.layout = r.provoking_layout ? Layout::provoking : Layout::shared;
+    opt.winding = r.ccw ? Winding::ccw : Winding::cw; // the provoking vertex stays first either way
     opt.column_rule = r.staircase_columns ? cp::ColumnRule::staircase : cp::ColumnRule::minimal;
     Mesh mesh;
     mesh.fixed_one = cp::fixed_one;
@@ -138,9 +139,6 @@ Mesh tessellate_cp(const PatternRequest& r) {
         // triangle keeps a first vertex of its own.
         if (!r.provoking_layout) weld_diagonal(mesh);
     }
-    if (!r.ccw) // CP triangles are counter-clockwise; clockwise output keeps the provoking vertex first
-        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
     return mesh;
 }
 
