@@ -4,7 +4,9 @@
 #include <array>
 #include <cstdint>
 
+#include "counts.hpp"
 #include "cp_line.hpp"
+#include "cp_pattern.hpp"
 #include "domain_point.hpp"
 
 namespace ctess::cp {
@@ -44,6 +46,60 @@ constexpr std::array<std::uint32_t, 3> quad_triangle_corners(const QuadSplit& s,
 constexpr DomainPoint quad_point(unsigned triangle, DomainPoint p) {
     if ((triangle & 1u) == 0) return p;
     return {fixed_one - p.u, fixed_one - p.v};
+}
+
+namespace detail {
+
+// The e1 block of a pattern's vertices (the diagonal of a quad half): e1 points are contiguous in the vertex
+// order, from v1 to v2 (docs/algorithm.md §2.11), and no other vertex lies on u + v = 1. Returns the first.
+constexpr std::uint32_t e1_block_start(const DomainPoint* v, std::uint32_t n) {
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (std::uint64_t{v[i].u} + v[i].v == fixed_one) return i;
+    return n;
+}
+
+} // namespace detail
+
+// A whole CP quad (docs/algorithm.md §2.12): the two halves of split_quad, their points mapped into the
+// quad's unit square by quad_point, counts first (null outputs), then fill, outputs first. Triangle A's
+// vertices and triangles come first, then B's.
+// * Layout::shared welds the diagonal: B's diagonal points are A's (same positions bit for bit, as both
+// halves
+//   have the diagonal's factor on e1 and CP lines are mirror-exact), so B contributes only its other
+//   vertices.
+// * Layout::provoking keeps each half's own diagonal points, so every triangle keeps a first vertex of its
+// own. The fill needs no scratch memory: B is tessellated into the tail of the vertex buffer, its vertices
+// before the diagonal are moved up over the diagonal, and A is written in front.
+constexpr Counts tessellate_quad(DomainPoint* vertices, std::uint32_t* indices,
+                                 const std::array<float, 4>& edge_factors, const PatternOptions& opt = {}) {
+    const QuadSplit split = split_quad(edge_factors);
+    const auto& fa = split.triangles[0].factors;
+    const auto& fb = split.triangles[1].factors;
+    const Counts a = pattern_counts(fa[0], fa[1], fa[2], opt);
+    const Counts b = pattern_counts(fb[0], fb[1], fb[2], opt);
+    const bool weld = opt.layout == Layout::shared;
+    // The diagonal's points: segments + 1 (a T0 line has one segment).
+    const LineState diagonal = line_state(fa[1], pattern_max_factor(opt.max_factor));
+    const std::uint32_t nd = weld ? token_info(diagonal.token).segments + 1u : 0u;
+    const Counts total{a.vertices + b.vertices - nd, a.triangles + b.triangles};
+    if (vertices == nullptr || indices == nullptr) return total;
+
+    // B into the tail, then its vertices before the diagonal block moved up over the block (high to low).
+    DomainPoint* vb = vertices + (a.vertices - nd);
+    std::uint32_t* ib = indices + 3 * std::size_t{a.triangles};
+    tessellate(vb, ib, fb[0], fb[1], fb[2], opt);
+    const std::uint32_t b0 = weld ? detail::e1_block_start(vb, b.vertices) : 0u;
+    for (std::uint32_t i = b0; i-- > 0;) vertices[a.vertices + i] = vb[i];
+    tessellate(vertices, indices, fa[0], fa[1], fa[2], opt);
+    const std::uint32_t a0 = weld ? detail::e1_block_start(vertices, a.vertices) : 0u;
+    for (std::uint32_t i = a.vertices; i < total.vertices; ++i) vertices[i] = quad_point(1, vertices[i]);
+    // B's index i: before the block a.vertices + i; in it A's mirrored diagonal point (B walks the diagonal
+    // from q3 to q1, A from q1 to q3); after it a.vertices + i - nd.
+    for (std::uint32_t k = 0; k < 3 * b.triangles; ++k) {
+        const std::uint32_t i = ib[k];
+        ib[k] = i < b0 ? a.vertices + i : i < b0 + nd ? a0 + (nd - 1 - (i - b0)) : a.vertices + i - nd;
+    }
+    return total;
 }
 
 } // namespace ctess::cp

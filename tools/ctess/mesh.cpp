@@ -7,7 +7,6 @@
 #include <ctess/d3d11_tessellator.hpp>
 
 #include <array>
-#include <map>
 
 #include <fmt/core.h>
 
@@ -38,16 +37,21 @@ float max_of(const std::vector<float>& v, std::size_t n) {
     return m;
 }
 
+template <class Tessellate>
+void fill(Mesh& mesh, Tessellate&& tessellate) {      // counts, then fill
+    const auto counts = tessellate(nullptr, nullptr); // Counts, or IsolineCounts for iso
+    mesh.vertices.resize(counts.vertices);
+    mesh.indices.resize(counts.index_count());
+    tessellate(mesh.vertices.data(), mesh.indices.data());
+}
+
 Mesh tessellate_d3d11(const PatternRequest& r) {
     const d3d11::TessOptions opt{partitioning_of(r.mode), r.ccw ? d3d11::Winding::ccw : d3d11::Winding::cw};
     Mesh mesh;
     mesh.fixed_one = d3d11::fixed_one;
     const auto& f = r.factors;
     auto run = [&](auto fn, const auto& factors) {
-        const auto counts = fn(nullptr, nullptr, factors, opt); // Counts, or IsolineCounts for iso
-        mesh.vertices.resize(counts.vertices);
-        mesh.indices.resize(counts.index_count());
-        fn(mesh.vertices.data(), mesh.indices.data(), factors, opt);
+        fill(mesh, [&](DomainPoint* v, std::uint32_t* i) { return fn(v, i, factors, opt); });
     };
     if (r.domain == "tri") {
         if (f.size() != 3 && f.size() != 4)
@@ -76,41 +80,6 @@ Mesh tessellate_d3d11(const PatternRequest& r) {
     return mesh;
 }
 
-void append_cp_triangle(Mesh& mesh, const cp::PatternOptions& opt, const std::array<float, 3>& f,
-                        unsigned quad_half, bool quad) {
-    const Counts counts = cp::tessellate(nullptr, nullptr, f[0], f[1], f[2], opt);
-    const std::size_t v0 = mesh.vertices.size(), i0 = mesh.indices.size();
-    mesh.vertices.resize(v0 + counts.vertices);
-    mesh.indices.resize(i0 + std::size_t{counts.triangles} * 3);
-    cp::tessellate(mesh.vertices.data() + v0, mesh.indices.data() + i0, f[0], f[1], f[2], opt);
-    for (std::size_t i = i0; i < mesh.indices.size(); ++i) mesh.indices[i] += static_cast<std::uint32_t>(v0);
-    if (quad)
-        for (std::size_t i = v0; i < mesh.vertices.size(); ++i)
-            mesh.vertices[i] = cp::quad_point(quad_half, mesh.vertices[i]);
-}
-
-// One vertex per position on the shared diagonal u + v = 1 of a CP quad (the two halves compute it bit for
-// bit).
-void weld_diagonal(Mesh& mesh) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> first;
-    std::vector<std::uint32_t> remap(mesh.vertices.size());
-    std::vector<DomainPoint> kept;
-    for (std::uint32_t i = 0; i < mesh.vertices.size(); ++i) {
-        const DomainPoint p = mesh.vertices[i];
-        if (std::uint64_t{p.u} + p.v == mesh.fixed_one) {
-            const auto [it, inserted] =
-                first.emplace(std::make_pair(p.u, p.v), static_cast<std::uint32_t>(kept.size()));
-            if (inserted) kept.push_back(p);
-            remap[i] = it->second;
-        } else {
-            remap[i] = static_cast<std::uint32_t>(kept.size());
-            kept.push_back(p);
-        }
-    }
-    for (auto& i : mesh.indices) i = remap[i];
-    mesh.vertices = std::move(kept);
-}
-
 Mesh tessellate_cp(const PatternRequest& r) {
     if (r.domain == "iso") throw UsageError("--domain: the cp mode tessellates tri and quad domains");
     const bool quad = r.domain == "quad";
@@ -129,16 +98,13 @@ Mesh tessellate_cp(const PatternRequest& r) {
     Mesh mesh;
     mesh.fixed_one = cp::fixed_one;
     const auto& f = r.factors;
-    if (!quad) {
-        append_cp_triangle(mesh, opt, {f[0], f[1], f[2]}, 0, false);
-    } else {
-        const cp::QuadSplit split = cp::split_quad({f[0], f[1], f[2], f[3]});
-        for (unsigned half = 0; half < 2; ++half)
-            append_cp_triangle(mesh, opt, split.triangles[half].factors, half, true);
-        // The shared layout welds the diagonal; the provoking layout keeps each half's own copies, so every
-        // triangle keeps a first vertex of its own.
-        if (!r.provoking_layout) weld_diagonal(mesh);
-    }
+    if (!quad)
+        fill(mesh,
+             [&](DomainPoint* v, std::uint32_t* i) { return cp::tessellate(v, i, f[0], f[1], f[2], opt); });
+    else // the shared layout welds the diagonal (cp::tessellate_quad)
+        fill(mesh, [&](DomainPoint* v, std::uint32_t* i) {
+            return cp::tessellate_quad(v, i, {f[0], f[1], f[2], f[3]}, opt);
+        });
     return mesh;
 }
 
