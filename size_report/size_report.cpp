@@ -64,10 +64,9 @@ std::vector<Config> configs() {
     Config c64{64, token_and_gap(d::token_table_64, d::gap_table_64), CTESS_TABLE_OBJECTS_64};
     c64.objects.push_back(column_object(d::column_chunk_64_0, "column_chunk_64_0"));
     Config c256{256, token_and_gap(d::token_table_256, d::gap_table_256), CTESS_TABLE_OBJECTS_256};
-    c256.objects.push_back(column_object(d::column_chunk_256_0, "column_chunk_256_0"));
-    c256.objects.push_back(column_object(d::column_chunk_256_1, "column_chunk_256_1"));
-    c256.objects.push_back(column_object(d::column_chunk_256_2, "column_chunk_256_2"));
-    c256.objects.push_back(column_object(d::column_chunk_256_3, "column_chunk_256_3"));
+#define CTESS_REPORT_CHUNK_256(k) c256.objects.push_back(column_object(d::column_chunk_256_##k, "column_chunk_256_" #k));
+    CTESS_FOR_EACH_COLUMN_CHUNK_256(CTESS_REPORT_CHUNK_256)
+#undef CTESS_REPORT_CHUNK_256
     return {c64, c256};
 }
 

@@ -1,5 +1,5 @@
 // The token and gap tables for max factor 256 and the table set that points at every chunk. The column
-// table is evaluated in cp_tables_256_columns_*.cpp, one chunk per translation unit.
+// table is evaluated in cp_tables_256_columns.cpp, compiled once per chunk.
 #include <ctess/runtime/cp_table_set.hpp>
 
 #include "cp_table_objects.hpp"
@@ -10,12 +10,9 @@ constexpr tables::TokenTable<256> token_table_256 = tables::build_token_table<25
 constexpr tables::GapTable<256> gap_table_256 = tables::build_gap_table<256>();
 
 #define CTESS_CHUNK_256(k)                                                                                   \
-    {                                                                                                        \
-        column_chunk_256_##k.records.data(), column_chunk_256_##k.pool.data(),                               \
-            column_chunk_256_##k.first_shape2                                                                \
-    }
-constexpr CpColumnChunk column_chunks_256[] = {CTESS_CHUNK_256(0), CTESS_CHUNK_256(1), CTESS_CHUNK_256(2),
-                                               CTESS_CHUNK_256(3)};
+    {column_chunk_256_##k.records.data(), column_chunk_256_##k.pool.data(),                                  \
+     column_chunk_256_##k.first_shape2},
+constexpr CpColumnChunk column_chunks_256[] = {CTESS_FOR_EACH_COLUMN_CHUNK_256(CTESS_CHUNK_256)};
 #undef CTESS_CHUNK_256
 constexpr auto chunk_of_shape2_256 = tables::ColumnChunkPlan<256, chunks_256>::chunk_of;
 } // namespace detail
