@@ -96,26 +96,33 @@ std::string surface_to_param_svg(const SurfaceMesh& mesh, const SurfaceRequest& 
     const double one = adaptive::fixed_one;
     auto px = [&](std::uint32_t i) { return x0 + side * (mesh.params[i].p / one); };
     auto py = [&](std::uint32_t i) { return y0 - side * (mesh.params[i].q / one); };
-    const unsigned max_level = r.options.max_level > 0 ? r.options.max_level : 1;
+    // Colour by level, from the mesh's coarsest (light) to its finest (dark): where it refined stands out.
+    const auto [lo, hi] = std::minmax_element(mesh.levels.begin(), mesh.levels.end());
+    const unsigned lo_level = lo == mesh.levels.end() ? 0 : *lo, hi_level = hi == mesh.levels.end() ? 0 : *hi;
+    const double span = hi_level > lo_level ? hi_level - lo_level : 1;
     const double stroke = mesh.triangles.size() > 60000 ? 0.25 : mesh.triangles.size() > 6000 ? 0.4 : 0.8;
+    svg.raw(fmt::format("<g stroke=\"#27445f\" stroke-width=\"{}\" stroke-linejoin=\"round\">\n", stroke));
     for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
         double xy[6];
         for (int k = 0; k < 3; ++k) {
             xy[2 * k] = px(mesh.triangles[t + k]);
             xy[2 * k + 1] = py(mesh.triangles[t + k]);
         }
-        // Deeper triangles are darker blue: where it refined stands out.
-        const double depth = static_cast<double>(mesh.levels[t / 3]) / max_level;
-        const int light = static_cast<int>(std::lround(245 - 120 * depth));
+        const double depth = (mesh.levels[t / 3] - lo_level) / span;
+        const auto mix = [&](int coarse, int fine) {
+            return static_cast<int>(std::lround(coarse + (fine - coarse) * depth));
+        };
         svg.polygon(xy, 3,
-                    fmt::format("fill=\"rgb({},{},{})\" stroke=\"#27445f\" stroke-width=\"{}\" "
-                                "stroke-linejoin=\"round\"",
-                                light - 20, light, 255, stroke));
+                    fmt::format("fill=\"#{:02x}{:02x}{:02x}\"", mix(238, 70), mix(244, 110), mix(250, 185)));
     }
+    svg.raw("</g>\n");
     const std::string label = "font-size=\"15\" fill=\"#1b2838\"";
     svg.text(x0 - 12, y0 + 22, "(0,0)", label);
     svg.text(x0 + side - 22, y0 + 22, "u = 1", label);
     svg.text(x0 - 52, y0 - side + 5, "v = 1", label);
+    svg.text(x0 + side / 2 - 150, y0 + 40,
+             fmt::format("light: level {} (coarsest) · dark: level {} (finest)", lo_level, hi_level),
+             "font-size=\"14\" fill=\"#667\"");
     return svg.finish();
 }
 
@@ -136,7 +143,7 @@ std::string surface_to_shaded_svg(const SurfaceMesh& mesh, const SurfaceRequest&
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const rt::Vec3 p = mesh.vertices[i].position;
         const double x = ca * p.x - sa * p.y, y = sa * p.x + ca * p.y, z = z_scale * p.z;
-        pts[i] = {x, ce * z - se * y, se * z + ce * y}; // screen up = tilted z; depth grows away from us
+        pts[i] = {x, se * y + ce * z, ce * y - se * z}; // camera in front (-y) and above: screen up, depth
         lo_x = std::min(lo_x, pts[i].x), hi_x = std::max(hi_x, pts[i].x);
         lo_y = std::min(lo_y, pts[i].y), hi_y = std::max(hi_y, pts[i].y);
     }
@@ -154,6 +161,9 @@ std::string surface_to_shaded_svg(const SurfaceMesh& mesh, const SurfaceRequest&
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return depth(a) > depth(b); });
     const double light[3] = {-0.45, 0.55, 0.7}; // in view space: from the upper left, towards the viewer
     const double stroke = count > 20000 ? 0.15 : 0.3;
+    svg.raw(fmt::format("<g stroke=\"#3a1f2c\" stroke-opacity=\"0.45\" stroke-width=\"{}\" "
+                        "stroke-linejoin=\"round\">\n",
+                        stroke));
     for (std::size_t t : order) {
         double xy[6], n[3] = {0, 0, 0};
         for (int k = 0; k < 3; ++k) {
@@ -162,7 +172,7 @@ std::string surface_to_shaded_svg(const SurfaceMesh& mesh, const SurfaceRequest&
             xy[2 * k + 1] = cy - scale * (pts[i].y - mid_y);
             const rt::Vec3 nv = mesh.vertices[i].normal;
             const double x = ca * nv.x - sa * nv.y, y = sa * nv.x + ca * nv.y, z = nv.z;
-            n[0] += x, n[1] += ce * z - se * y, n[2] += -(se * z + ce * y); // n[2] > 0: facing the viewer
+            n[0] += x, n[1] += se * y + ce * z, n[2] += se * z - ce * y; // n[2] > 0: facing the viewer
         }
         const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         if (len > 0 && n[2] / len < -0.05 && !flat) continue; // back face of a closed surface
@@ -172,11 +182,9 @@ std::string surface_to_shaded_svg(const SurfaceMesh& mesh, const SurfaceRequest&
         const int rr = static_cast<int>(std::lround(235 * shade)),
                   gg = static_cast<int>(std::lround(150 * shade)),
                   bb = static_cast<int>(std::lround(180 * shade));
-        svg.polygon(xy, 3,
-                    fmt::format("fill=\"rgb({},{},{})\" stroke=\"#3a1f2c\" stroke-opacity=\"0.45\" "
-                                "stroke-width=\"{}\" stroke-linejoin=\"round\"",
-                                rr, gg, bb, stroke));
+        svg.polygon(xy, 3, fmt::format("fill=\"#{:02x}{:02x}{:02x}\"", rr, gg, bb));
     }
+    svg.raw("</g>\n");
     return svg.finish();
 }
 
