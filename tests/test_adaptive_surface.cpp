@@ -254,25 +254,22 @@ TEST_CASE("bad options give a status and an empty mesh", "[adaptive]") {
         CHECK(r.counts == Counts{});
         return r.status;
     };
-    AdaptiveOptions o;
-    o.max_angle_deg = nan;
-    CHECK(status_of(o) == AdaptiveStatus::bad_angle);
-    o = {};
-    o.max_angle_deg = -1.0f;
-    CHECK(status_of(o) == AdaptiveStatus::bad_angle);
-    o = {};
-    o.max_distance = nan;
-    CHECK(status_of(o) == AdaptiveStatus::bad_distance);
-    o = {};
-    o.max_distance = -0.5f;
-    CHECK(status_of(o) == AdaptiveStatus::bad_distance);
-    o = {};
-    o.min_level = 6;
-    o.max_level = 5;
-    CHECK(status_of(o) == AdaptiveStatus::bad_levels);
-    o = {};
-    o.max_level = adaptive::max_level_limit + 1;
-    CHECK(status_of(o) == AdaptiveStatus::bad_levels);
+    struct Case {
+        float angle, distance;
+        unsigned min_level, max_level;
+        AdaptiveStatus expect;
+    };
+    const Case cases[] = {
+        {nan, 0.05f, 4, 16, AdaptiveStatus::bad_angle},
+        {-1.0f, 0.05f, 4, 16, AdaptiveStatus::bad_angle},
+        {5.0f, nan, 4, 16, AdaptiveStatus::bad_distance},
+        {5.0f, -0.5f, 4, 16, AdaptiveStatus::bad_distance},
+        {5.0f, 0.05f, 6, 5, AdaptiveStatus::bad_levels},
+        {5.0f, 0.05f, 4, adaptive::max_level_limit + 1, AdaptiveStatus::bad_levels},
+    };
+    for (const Case& c : cases) {
+        CHECK(status_of(AdaptiveOptions{c.angle, c.distance, c.min_level, c.max_level}) == c.expect);
+    }
     CHECK(std::string(status_message(AdaptiveStatus::bad_levels)).find("min_level <= max_level") !=
           std::string::npos);
 }
