@@ -5,6 +5,7 @@
 
 #include <ctess/conforming_bintree.hpp>
 #include <ctess/runtime/adaptive_surface.hpp>
+#include <ctess/runtime/chord_error.hpp>
 #include <ctess/runtime/parametric_surfaces.hpp>
 
 #include <array>
@@ -340,4 +341,21 @@ TEST_CASE("finite-difference normals agree with the analytic ones", "[adaptive]"
     // At a pole the finite differences are degenerate: a zero normal, never a NaN.
     const SurfaceVertex pole = evaluate_vertex(SphereWithoutNormal{}, 0.3f, 0.0f);
     CHECK(std::isfinite(pole.normal.x));
+}
+
+TEST_CASE("the chord error of a grid on z = u^2 is h^2 / 4, the worst edge midpoint", "[adaptive]") {
+    // Linear interpolation of u^2 between u = a and u = b misses by (b - a)^2 / 4 at the midpoint, and by the
+    // variance of u under the barycentric weights elsewhere, which is never more.
+    struct Parabola {
+        Vec3 position(float u, float v) const { return {u, v, u * u}; }
+    };
+    struct Plane {
+        Vec3 position(float u, float v) const { return {2.0f * u, v - u, 0.5f}; }
+    };
+    for (std::uint32_t n : {1u, 2u, 3u, 8u, 25u}) {
+        const double h = 1.0 / n;
+        CHECK(grid_chord_error(Parabola{}, n, 7) == Approx(h * h / 4).margin(1e-6)); // float samples near 1
+        CHECK(grid_chord_error(Plane{}, n, n) < 1e-6f);
+    }
+    CHECK(grid_chord_error(Parabola{}, 0, 3) == 0.0f);
 }
