@@ -3,6 +3,7 @@
 
 #include <ctess/cp_pattern.hpp>
 #include <ctess/d3d11_tessellator.hpp>
+#include <ctess/grid_strip.hpp>
 
 #include <array>
 #include <cstdio>
@@ -12,6 +13,8 @@
 #include <string>
 #include <sys/wait.h>
 #include <vector>
+
+#include "support/square_mesh_checks.hpp"
 
 namespace {
 
@@ -245,4 +248,138 @@ TEST_CASE("a cp quad tiles the unit square and welds its diagonal", "[cli]") {
         const unsigned n = ctess::cp::edge_points(12.0f, 64, line);
         CHECK(on_diagonal == (std::string(layout) == "shared" ? n : 2 * n));
     }
+}
+
+// --- ctess strip and ctess surface (docs/surfaces.md) ---
+
+namespace {
+
+// The numbers of the JSON array that follows "key": [ up to its closing bracket (nested arrays flattened).
+std::vector<double> json_array(const std::string& json, const std::string& key) {
+    const std::string tag = "\"" + key + "\": [";
+    const auto begin = json.find(tag);
+    REQUIRE(begin != std::string::npos);
+    std::size_t end = begin + tag.size();
+    for (int depth = 1; depth > 0; ++end) depth += json[end] == '[' ? 1 : json[end] == ']' ? -1 : 0;
+    std::string body = json.substr(begin + tag.size(), end - begin - tag.size() - 1);
+    for (char& c : body)
+        if (c == '[' || c == ']' || c == ',') c = ' ';
+    std::vector<double> out;
+    std::istringstream in(body);
+    for (double x; in >> x;) out.push_back(x);
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("strip prints the library's single strip, starting with seed 002's sequence", "[cli][surfaces]") {
+    const Run r = ctess_cli("strip --segments 3,4 --format json");
+    REQUIRE(r.exit_code == 0);
+    CHECK(json_number(r.out, "u_segments") == 3);
+    CHECK(json_number(r.out, "v_segments") == 4);
+    const auto indices = json_array(r.out, "indices");
+    const std::vector<double> seed = {0, 4, 1, 5, 2, 6, 3, 7, 11, 7, 10, 6, 9, 5, 8, 4, 8, 12};
+    REQUIRE(indices.size() == 32);
+    for (std::size_t i = 0; i < seed.size(); ++i) CHECK(indices[i] == seed[i]);
+
+    const Run big = ctess_cli("strip --segments 37,5");
+    REQUIRE(big.exit_code == 0);
+    std::vector<std::uint32_t> expect(ctess::grid::strip_index_count(37, 5));
+    REQUIRE(ctess::grid::fill_strip_indices(expect, 37, 5));
+    const auto got = json_array(big.out, "indices");
+    REQUIRE(got.size() == expect.size());
+    for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i] == expect[i]);
+}
+
+TEST_CASE("strip refuses bad segment counts, naming the limit", "[cli][surfaces]") {
+    for (const char* bad : {"0,3", "3,1025", "3", "3,4,5", "a,2", "-1,2"}) {
+        INFO(bad);
+        const Run r = ctess_cli(std::string("strip --segments ") + bad);
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.find("--segments") != std::string::npos);
+    }
+    CHECK(ctess_cli("strip --segments 3,1025").out.find("[1, 1024]") != std::string::npos);
+    CHECK(ctess_cli("strip --segments 3,4 --format svg").exit_code == 2);
+}
+
+TEST_CASE("surface JSON is a conforming triangulation of the square with unit normals", "[cli][surfaces]") {
+    for (const char* name : {"sphere", "torus", "ripple"}) {
+        INFO(name);
+        const Run r = ctess_cli(std::string("surface --name ") + name + " --max-level 12 --format json");
+        REQUIRE(r.exit_code == 0);
+        CHECK(json_number(r.out, "fixed_one") == 65536);
+        const auto params = json_array(r.out, "params");
+        const auto vertices = json_array(r.out, "vertices");
+        const auto normals = json_array(r.out, "normals");
+        const auto triangles = json_array(r.out, "triangles");
+        REQUIRE(params.size() / 2 == static_cast<std::size_t>(json_number(r.out, "vertex_count")));
+        REQUIRE(triangles.size() / 3 == static_cast<std::size_t>(json_number(r.out, "triangle_count")));
+        REQUIRE(vertices.size() == 3 * params.size() / 2);
+        REQUIRE(normals.size() == vertices.size());
+        std::vector<ctess::test::SquarePoint> sq;
+        for (std::size_t i = 0; i < params.size(); i += 2)
+            sq.push_back({static_cast<std::int64_t>(params[i]), static_cast<std::int64_t>(params[i + 1])});
+        const std::vector<std::uint32_t> tri(triangles.begin(), triangles.end());
+        CHECK(ctess::test::square_mesh_violation(sq, tri, 65536) == "");
+        for (std::size_t i = 0; i < normals.size(); i += 3) {
+            const double len2 =
+                normals[i] * normals[i] + normals[i + 1] * normals[i + 1] + normals[i + 2] * normals[i + 2];
+            CHECK(std::abs(len2 - 1.0) < 1e-5);
+        }
+    }
+}
+
+TEST_CASE("surface writes OBJ with normals, both SVG views and the uniform-grid comparison",
+          "[cli][surfaces]") {
+    const Run obj = ctess_cli("surface --name torus --max-level 10 --format obj");
+    REQUIRE(obj.exit_code == 0);
+    std::istringstream lines(obj.out);
+    std::size_t v = 0, vn = 0, f = 0;
+    for (std::string line; std::getline(lines, line);) {
+        v += line.rfind("v ", 0) == 0;
+        vn += line.rfind("vn ", 0) == 0;
+        f += line.rfind("f ", 0) == 0;
+    }
+    CHECK(v > 0);
+    CHECK(vn == v);
+    CHECK(f > 0);
+
+    for (const char* view : {"param", "shaded"}) {
+        const std::string svg = temp_path(std::string("surface_") + view + ".svg");
+        REQUIRE(ctess_cli(std::string("surface --name ripple --max-level 10 --format svg --view ") + view +
+                          " --out " + svg)
+                    .exit_code == 0);
+        std::ifstream in(svg);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        CHECK(text.rfind("<svg", 0) == 0);
+        CHECK(text.find("</svg>") != std::string::npos);
+        CHECK(text.find("ripple") != std::string::npos);
+        std::filesystem::remove(svg);
+    }
+
+    const Run stats = ctess_cli("surface --name sphere --max-level 12 --format stats");
+    REQUIRE(stats.exit_code == 0);
+    CHECK(stats.out.find("\"reached\": true") != std::string::npos);
+    CHECK(json_number(stats.out, "triangles") > 0);
+}
+
+TEST_CASE("surface refuses bad thresholds, levels and names with a clear error", "[cli][surfaces]") {
+    const std::pair<const char*, const char*> cases[] = {
+        {"--angle nan", "angle threshold"},
+        {"--angle -1", "angle threshold"},
+        {"--distance nan", "distance threshold"},
+        {"--distance -0.1", "distance threshold"},
+        {"--min-level 9 --max-level 5", "min_level <= max_level"},
+        {"--max-level 19", "[0, 18]"},
+        {"--format obj --view shaded", "--view"},
+    };
+    for (const auto& [args, message] : cases) {
+        INFO(args);
+        const Run r = ctess_cli(std::string("surface --name sphere ") + args);
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.find(message) != std::string::npos);
+    }
+    const Run cube = ctess_cli("surface --name cube");
+    CHECK(cube.exit_code == 2);
+    CHECK(cube.out.find("sphere, torus, ripple") != std::string::npos);
 }

@@ -6,6 +6,8 @@
 //   cp::line_state          one CP edge: token and lerp of a float factor
 //   cp::smallest_edge_rotation   the orientation rule for a base triangle
 //   d3d11::tessellate_tri   the D3D11 fixed-function tessellator (and _quad, _isoline)
+//   grid::fill_strip_indices    a U x V grid as one triangle strip (seed 002)
+//   adaptive::ConformingBintree   crack-free adaptive bisection of the parameter square (seed 004)
 //   ctess::Counts, ctess::PatchOptions   the vocabulary every pattern family shares
 #pragma once
 
@@ -22,3 +24,7 @@
 #include "d3d11_tessellator.hpp"
 
 #include "line_modes.hpp"
+
+#include "conforming_bintree.hpp"
+#include "grid_eval.hpp"
+#include "grid_strip.hpp"

@@ -21,4 +21,9 @@ int run_sweep(int argc, char** argv);
 int run_animate(int argc, char** argv);
 int run_efficiency(int argc, char** argv);
 
+// The largest grid `ctess strip` prints (segments per direction): 2,099,200 indices at most.
+inline constexpr unsigned strip_cli_max_segments = 1024;
+int run_strip(int argc, char** argv);
+int run_surface(int argc, char** argv);
+
 } // namespace ctess::cli

@@ -20,6 +20,9 @@ commands:
   sweep    --mode M --from a --to b [--steps n] --svg out.svg [--max 64|256]
   animate  --mode M --from a,b,c --to d,e,f --frames n --out DIR [pattern options]
   efficiency [--max 64|256] [--random n] [--seed s] [--format markdown|json] [--out FILE]
+  strip    --segments U,V [--format json] [--out FILE]            (U, V in [1, 1024])
+  surface  --name sphere|torus|ripple [--angle deg] [--distance rel] [--min-level n] [--max-level n]
+           [--format json|obj|svg|stats] [--view param|shaded] [--out FILE]   (levels in [0, 18])
 
 pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
 line modes:    the pattern modes plus pow2-subdivision, one-at-a-time, even-spacing
@@ -44,6 +47,8 @@ int main(int argc, char** argv) {
         if (command == "sweep") return ctess::cli::run_sweep(argc, argv);
         if (command == "animate") return ctess::cli::run_animate(argc, argv);
         if (command == "efficiency") return ctess::cli::run_efficiency(argc, argv);
+        if (command == "strip") return ctess::cli::run_strip(argc, argv);
+        if (command == "surface") return ctess::cli::run_surface(argc, argv);
         fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
         return 2;
     } catch (const ctess::cli::UsageError& e) {

@@ -10,8 +10,11 @@
 
 #include <ctess/ctess.hpp>
 
+#include "runtime/adaptive_surface.hpp"
+#include "runtime/chord_error.hpp"
 #include "runtime/cp_patch.hpp"
 #include "runtime/cp_table_set.hpp"
 #include "runtime/mesh_pipeline.hpp"
+#include "runtime/parametric_surfaces.hpp"
 #include "runtime/surface_eval.hpp"
 #include "runtime/tess_factor.hpp"
