@@ -13,6 +13,8 @@
 
 namespace ctess::gpu_test {
 
+// The record size the generated shaders in dir use (their layout.json).
+std::uint32_t layout_patch_words(const std::string& dir, unsigned max_factor);
 PipelineOutput run_vulkan(VkCompute& vk, const std::string& shader_dir, unsigned max_factor,
                           const Scene& scene);
 // Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back. Throws on failure.

@@ -33,6 +33,8 @@ const vertexFloats = scene[12], indexCount = scene[13];
 const meshVertices = scene.slice(14, 14 + vertexFloats);
 const meshIndices = scene.slice(14 + vertexFloats, 14 + vertexFloats + indexCount);
 const n = params[0];
+const layoutJson = JSON.parse(readFileSync(`${dir}/ctess_cp_${max}.layout.json`, 'utf8'));
+const recordWords = layoutJson.patch_words;
 const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}.tables.bin`).buffer.slice(0));
 
 device.pushErrorScope('validation');
@@ -87,11 +89,11 @@ const run = async (buffers, dispatches) => {
 
 const bParams = storage(params.length, params), bTables = storage(tables.length, tables);
 const bMesh = storage(meshVertices.length, meshVertices), bIndices = storage(meshIndices.length, meshIndices);
-const patchWords = n * 16 + 2;
+const patchWords = n * recordWords + 2;
 const bPatches = storage(patchWords), bNone = storage(4), bNone2 = storage(4);
-let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.ceil(n / 64)], [scan, 1]]);
+let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.min(Math.ceil(n / 64), 65535)], [scan, 1]]);
 const patches = await read(bPatches, patchWords);
-const totalV = patches[n * 16], totalT = patches[n * 16 + 1];
+const totalV = patches[n * recordWords], totalT = patches[n * recordWords + 1];
 // Dawn's GLES backend on bookworm's llvmpipe aborts the process (std::system_error in a futex) once a storage
 // binding passes about 32 MiB, below the advertised maxStorageBufferBindingSize: refuse clearly instead.
 const maxBinding = Math.min(limits.maxStorageBufferBindingSize, 32 << 20);
@@ -103,7 +105,7 @@ const bVertices = storage(totalV * 10), bOut = storage(totalT * 3);
 const batchVertices = 1 << 17;
 for (let first = 0; first < n;) {
     let end = first, vertices = 0;
-    while (end < n && (end === first || vertices + patches[end * 16 + 7] <= batchVertices)) vertices += patches[16 * end++ + 7];
+    while (end < n && (end === first || vertices + patches[end * recordWords + 7] <= batchVertices)) vertices += patches[recordWords * end++ + 7];
     params[8] = first;
     params[9] = end;
     device.queue.writeBuffer(bParams, 0, params);
