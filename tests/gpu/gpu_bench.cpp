@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
     };
     // The 50 k-patch grid keeps its output under Dawn's ~32 MiB per binding on llvmpipe (docs/shaders.md).
     Scene big = factor_sweep_grid(64, 158, rt::Surface::pn_triangles);
-    big.options.dice.dice_rate = 6.0f;
+    big.options.dice.dice_rate = 8.0f;
     const Named scenes[] = {{"1,152-patch sweep, PN", factor_sweep_grid(64, 24, rt::Surface::pn_triangles)},
                             {"50 k-patch grid, PN", big}};
     constexpr int repeats = 3;
