@@ -692,22 +692,36 @@ void ctess_patch_setup() {
 }
 
 // Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+// Totals that do not fit in u32 (indices are u32) are written as TOTALS_OVERFLOW, both of them: hosts refuse them.
+const uint TOTALS_OVERFLOW = 0xFFFFFFFFu;
 shared uvec2 scan_sum[128];
+shared uint scan_overflow;
 void ctess_prefix_sum() {
     uint n = patch_count();
     uint lane = gl_LocalInvocationID.x;
+    if (lane == 0u) scan_overflow = 0u;
+    bool overflow = false;
     uint per = (n + 127u) / 128u;
     uint begin = min(n, lane * per), end = min(n, begin + per);
     uvec2 sum = uvec2(0u);
-    for (uint t = begin; t < end; ++t) sum += uvec2(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+    for (uint t = begin; t < end; ++t) {
+        uvec2 count = uvec2(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+        sum += count;
+        overflow = overflow || sum.x < count.x || sum.y < count.y || sum.x == TOTALS_OVERFLOW || sum.y == TOTALS_OVERFLOW;
+    }
     scan_sum[lane] = sum;
     barrier();
     for (uint d = 1u; d < 128u; d <<= 1) {
         uvec2 add = lane >= d ? scan_sum[lane - d] : uvec2(0u);
         barrier();
-        scan_sum[lane] += add;
+        uvec2 before = scan_sum[lane];
+        uvec2 after = before + add;
+        overflow = overflow || after.x < before.x || after.y < before.y || after.x == TOTALS_OVERFLOW || after.y == TOTALS_OVERFLOW;
+        scan_sum[lane] = after;
         barrier();
     }
+    if (overflow) atomicOr(scan_overflow, 1u);
+    barrier();
     uvec2 base = scan_sum[lane] - sum;
     for (uint t = begin; t < end; ++t) {
         uint rec = t * PATCH_WORDS;
@@ -716,8 +730,9 @@ void ctess_prefix_sum() {
         base += uvec2(patches[rec + 7u], patches[rec + 8u]);
     }
     if (lane == 127u) {
-        patches[n * PATCH_WORDS] = scan_sum[127].x;
-        patches[n * PATCH_WORDS + 1u] = scan_sum[127].y;
+        bool too_large = scan_overflow != 0u;
+        patches[n * PATCH_WORDS] = too_large ? TOTALS_OVERFLOW : scan_sum[127].x;
+        patches[n * PATCH_WORDS + 1u] = too_large ? TOTALS_OVERFLOW : scan_sum[127].y;
     }
 }
 

@@ -688,25 +688,39 @@ fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num
 }
 
 // Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+// Totals that do not fit in u32 (indices are u32) are written as TOTALS_OVERFLOW, both of them: hosts refuse them.
+const TOTALS_OVERFLOW: u32 = 0xFFFFFFFFu;
 var<workgroup> scan_sum: array<vec2<u32>, 128>;
+var<workgroup> scan_overflow: atomic<u32>;
 @compute @workgroup_size(128)
 fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     let n = patch_count();
     let lane = lid.x;
+    if (lane == 0u) { atomicStore(&scan_overflow, 0u); }
+    var overflow = false;
     let per = (n + 127u) / 128u;
     let begin = min(n, lane * per);
     let end = min(n, begin + per);
     var sum = vec2<u32>(0u);
-    for (var t = begin; t < end; t++) { sum += vec2<u32>(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]); }
+    for (var t = begin; t < end; t++) {
+        let count = vec2<u32>(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+        sum += count;
+        overflow = overflow || sum.x < count.x || sum.y < count.y || sum.x == TOTALS_OVERFLOW || sum.y == TOTALS_OVERFLOW;
+    }
     scan_sum[lane] = sum;
     workgroupBarrier();
     for (var d = 1u; d < 128u; d <<= 1u) {
         var add = vec2<u32>(0u);
         if (lane >= d) { add = scan_sum[lane - d]; }
         workgroupBarrier();
-        scan_sum[lane] += add;
+        let before = scan_sum[lane];
+        let after = before + add;
+        overflow = overflow || after.x < before.x || after.y < before.y || after.x == TOTALS_OVERFLOW || after.y == TOTALS_OVERFLOW;
+        scan_sum[lane] = after;
         workgroupBarrier();
     }
+    if (overflow) { atomicOr(&scan_overflow, 1u); }
+    workgroupBarrier();
     var base = scan_sum[lane] - sum;
     for (var t = begin; t < end; t++) {
         let rec = t * PATCH_WORDS;
@@ -715,8 +729,9 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
         base += vec2<u32>(patches[rec + 7u], patches[rec + 8u]);
     }
     if (lane == 127u) {
-        patches[n * PATCH_WORDS] = scan_sum[127].x;
-        patches[n * PATCH_WORDS + 1u] = scan_sum[127].y;
+        let too_large = atomicLoad(&scan_overflow) != 0u;
+        patches[n * PATCH_WORDS] = select(scan_sum[127].x, TOTALS_OVERFLOW, too_large);
+        patches[n * PATCH_WORDS + 1u] = select(scan_sum[127].y, TOTALS_OVERFLOW, too_large);
     }
 }
 

@@ -3,7 +3,10 @@
 // Backend: Dawn's OpenGL ES backend on Mesa's llvmpipe in compatibility mode, with EGL_PLATFORM=surfaceless
 // (shared/notes/tooling.md §5: Dawn's Vulkan backend rejects bookworm's lavapipe). CTESS_DAWN_BACKEND
 // overrides the backend flag (e.g. "vulkan" on a machine with a newer driver).
-// File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message.
+// CTESS_MAX_WORKGROUPS caps every dispatch (the passes stride over the rest; default 65535, the one-dispatch
+// limit); CTESS_COUNTS_ONLY=1 runs only the setup and prefix-sum passes and returns no outputs.
+// File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message (also when the mesh's totals do
+// not fit in 32 bits: the prefix sum then writes 0xFFFFFFFF).
 import { readFileSync, writeFileSync } from 'node:fs';
 import { create, globals } from 'webgpu';
 
@@ -33,6 +36,8 @@ const vertexFloats = scene[12], indexCount = scene[13];
 const meshVertices = scene.slice(14, 14 + vertexFloats);
 const meshIndices = scene.slice(14 + vertexFloats, 14 + vertexFloats + indexCount);
 const n = params[0];
+const maxGroups = Number(process.env.CTESS_MAX_WORKGROUPS ?? 65535);
+const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
 const layoutJson = JSON.parse(readFileSync(`${dir}/ctess_cp_${max}.layout.json`, 'utf8'));
 const recordWords = layoutJson.patch_words;
 const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}.tables.bin`).buffer.slice(0));
@@ -91,9 +96,10 @@ const bParams = storage(params.length, params), bTables = storage(tables.length,
 const bMesh = storage(meshVertices.length, meshVertices), bIndices = storage(meshIndices.length, meshIndices);
 const patchWords = n * recordWords + 2;
 const bPatches = storage(patchWords), bNone = storage(4), bNone2 = storage(4);
-let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.min(Math.ceil(n / 64), 65535)], [scan, 1]]);
+let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.min(Math.ceil(n / 64), maxGroups)], [scan, 1]]);
 const patches = await read(bPatches, patchWords);
-const totalV = patches[n * recordWords], totalT = patches[n * recordWords + 1];
+const totalV = countsOnly ? 0 : patches[n * recordWords], totalT = countsOnly ? 0 : patches[n * recordWords + 1];
+if (totalV === 0xFFFFFFFF || totalT === 0xFFFFFFFF) fail("the mesh's vertex or triangle total does not fit in 32 bits (>= 2^32 - 1)");
 // Dawn's GLES backend on bookworm's llvmpipe aborts the process (std::system_error in a futex) once a storage
 // binding passes about 32 MiB, below the advertised maxStorageBufferBindingSize: refuse clearly instead.
 const maxBinding = Math.min(limits.maxStorageBufferBindingSize, 32 << 20);
@@ -103,13 +109,13 @@ if (totalV * 40 > maxBinding || totalT * 12 > maxBinding) {
 const bVertices = storage(totalV * 10), bOut = storage(totalT * 3);
 // Emit in batches of about 128k vertices, one submit each: Dawn's GL backend aborts on one very long submit.
 const batchVertices = 1 << 17;
-for (let first = 0; first < n;) {
+for (let first = 0; first < (countsOnly ? 0 : n);) {
     let end = first, vertices = 0;
     while (end < n && (end === first || vertices + patches[end * recordWords + 7] <= batchVertices)) vertices += patches[recordWords * end++ + 7];
     params[8] = first;
     params[9] = end;
     device.queue.writeBuffer(bParams, 0, params);
-    const groups = Math.min(end - first, 65535);
+    const groups = Math.min(end - first, maxGroups);
     ms += await run([bParams, bTables, bMesh, bIndices, bPatches, bVertices, bOut], [[emitV, groups], [emitT, groups]]);
     first = end;
 }
