@@ -105,7 +105,7 @@ TEST_CASE("mesh pipeline: flat vertices lie on the base triangle; corners are co
     const Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
     const PipelineOutput out = run_cpu(rt::cp_tables_64, scene);
     for (std::uint32_t p = 0; p < scene.patch_count(); ++p) {
-        const std::uint32_t* rec = &out.patches[std::size_t{p} * 16];
+        const std::uint32_t* rec = &out.patches[std::size_t{p} * patch_words];
         for (std::uint32_t i = 0; i < rec[7]; ++i) {
             const std::uint32_t* v = &out.vertices[(std::size_t{rec[9]} + i) * 10];
             const double w[3] = {((1u << 24) - v[0] - v[1]) / 16777216.0, v[0] / 16777216.0,
@@ -189,8 +189,8 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
         nan_scene.vertices[k] = std::numeric_limits<float>::quiet_NaN();
     const PipelineOutput nan_out = run_cpu(rt::cp_tables_64, nan_scene);
     for (std::uint32_t p = 0; p < nan_scene.patch_count(); ++p) {
-        CHECK(nan_out.patches[std::size_t{p} * 16 + 7] == 3); // T0 on every edge: the base triangle itself
-        CHECK(nan_out.patches[std::size_t{p} * 16 + 8] == 1);
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 7] == 3); // T0 on every edge: the base triangle itself
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 8] == 1);
     }
 }
 
