@@ -19,6 +19,7 @@
 
 #include <ctess/cp_tables_layout.hpp>
 #include <ctess/runtime/cp_table_set.hpp>
+#include <ctess/runtime/mesh_pipeline.hpp>
 
 #include "shader_template.hpp"
 #include "table_blob.hpp"
@@ -129,7 +130,8 @@ int main(int argc, char** argv) {
         for (std::size_t k = 0; k < std::size(passes); ++k)
             json << (k ? ", " : "") << "{\"name\": \"" << passes[k].name << "\", \"entry\": \""
                  << passes[k].entry << "\", \"workgroup_size\": " << passes[k].local_size << "}";
-        json << "],\n  \"patch_words\": 16,\n  \"vertex_words\": 10,\n  \"mesh_vertex_floats\": 8\n}\n";
+        json << "],\n  \"patch_words\": " << sizeof(ctess::rt::PatchRecord) / 4
+             << ",\n  \"setup_block_word\": 16,\n  \"vertex_words\": 10,\n  \"mesh_vertex_floats\": 8\n}\n";
         write_file(prefix + ".layout.json", json.str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ctess_gen_shaders: %s\n", e.what());

@@ -18,7 +18,8 @@ const uint T1_LAST_FAN = {{T1_LAST_FAN}}u;
 const uint SEARCH_WINDOW = {{SEARCH_WINDOW}}u;
 const uint FIXED_ONE = 16777216u; // 2^24
 const uint LERP_ONE = 65536u;
-const uint PATCH_WORDS = 16u;
+const uint PATCH_WORDS = 48u;
+const uint SETUP = 16u; // the setup block's first word in a record (patch_setup_block.hpp)
 const uint VERTEX_WORDS = 10u;
 const uint MESH_VERTEX_FLOATS = 8u;
 
@@ -86,8 +87,9 @@ struct Patch {
     Edge e[3];
     uint type_;
     bool c0, c1, c2, copies;
-    uint c;   // u16 index of C_0 in the column pool
-    uint gap; // word index of the pair's first zipper word
+    uint column; // column record index (s2 - 1) * shapes + s0 - 1
+    uint c;      // u16 index of C_0 in the column pool
+    uint gap;    // word index of the pair's first zipper word
     uint head, n0, n1, n2;
     float a, b;
     uint copy_bias, clamp_, e1_offset, unique_, strips, zipper, vertices, triangles;
@@ -121,8 +123,35 @@ void add_slot_skip(inout Patch p, uint begin, uint end) {
     p.slot_skips += 1u;
 }
 
-Patch patch_setup(uvec2 s0, uvec2 s1, uvec2 s2) {
+Patch patch_zero() {
     Patch p;
+    for (uint k = 0u; k < 3u; ++k) p.e[k] = Edge(0u, 0u, 0u, 0u);
+    p.type_ = 0u;
+    p.c0 = false; p.c1 = false; p.c2 = false;
+    p.n0 = 0u; p.n1 = 0u; p.n2 = 0u;
+    p.tri_skips = 0u;
+    p.slot_skips = 0u;
+    p.copies = false;
+    p.column = 0u; p.c = 0u; p.gap = 0u; p.head = 0u; p.a = 0.0; p.b = 0.0;
+    p.copy_bias = 0u; p.clamp_ = 0u; p.e1_offset = 0u; p.unique_ = 0u; p.strips = 0u; p.zipper = 0u;
+    p.vertices = 0u; p.triangles = 0u;
+    for (uint k = 0u; k < 8u; ++k) p.tri_skip[k] = uvec2(0u);
+    for (uint k = 0u; k < 4u; ++k) p.slot_skip[k] = uvec2(0u);
+    return p;
+}
+
+// The column record's pool index, head and first-guess coefficients (Type 2).
+void load_column_record(inout Patch p) {
+    uint rec = COLUMN_RECORD + 4u * p.column;
+    p.c = tables[rec];
+    p.head = tables[rec + 1u];
+    p.a = uintBitsToFloat(tables[rec + 2u]);
+    p.b = uintBitsToFloat(tables[rec + 3u]);
+}
+
+// The whole setup from the line states: the setup pass runs it once per patch.
+Patch patch_setup(uvec2 s0, uvec2 s1, uvec2 s2) {
+    Patch p = patch_zero();
     uvec2 s[3] = uvec2[3](s0, s1, s2);
     for (uint k = 0u; k < 3u; ++k) {
         uint shape = s[k].x == 0u ? 1u : s[k].x;
@@ -138,13 +167,6 @@ Patch patch_setup(uvec2 s0, uvec2 s1, uvec2 s2) {
     p.n0 = p.e[0].segments;
     p.n1 = p.e[1].segments;
     p.n2 = p.e[2].segments;
-    p.tri_skips = 0u;
-    p.slot_skips = 0u;
-    p.copies = false;
-    p.c = 0u; p.gap = 0u; p.head = 0u; p.a = 0.0; p.b = 0.0;
-    p.copy_bias = 0u; p.clamp_ = 0u; p.e1_offset = 0u; p.unique_ = 0u; p.strips = 0u; p.zipper = 0u;
-    for (uint k = 0u; k < 8u; ++k) p.tri_skip[k] = uvec2(0u);
-    for (uint k = 0u; k < 4u; ++k) p.slot_skip[k] = uvec2(0u);
     if (p.c0 && p.c1 && p.c2) {
         p.type_ = 0u;
         p.vertices = 3u;
@@ -179,11 +201,8 @@ Patch patch_setup(uvec2 s0, uvec2 s1, uvec2 s2) {
     uint sh0 = s0.x == 0u ? 1u : s0.x;
     uint sh1 = s1.x == 0u ? 1u : s1.x;
     uint sh2 = s2.x == 0u ? 1u : s2.x;
-    uint rec = COLUMN_RECORD + 4u * ((sh2 - 1u) * SHAPES + sh0 - 1u);
-    p.c = tables[rec];
-    p.head = tables[rec + 1u];
-    p.a = uintBitsToFloat(tables[rec + 2u]);
-    p.b = uintBitsToFloat(tables[rec + 3u]);
+    p.column = (sh2 - 1u) * SHAPES + sh0 - 1u;
+    load_column_record(p);
     p.gap = GAP_WORD + table_u16(GAP_OFFSET, (sh1 - 1u) * SHAPES + sh0 - 1u);
     uint last0 = edge_point(p.e[0], p.n0 - 1u);
     uint v2 = edge_point(p.e[2], sh2 >= 2u ? p.n2 - 1u : 1u);
@@ -570,15 +589,73 @@ uint smallest_edge_rotation(float l[3]) {
     }
     return (smallest + 1u) % 3u;
 }
+// The setup block (patch_setup_block.hpp's word order): written once by the setup pass, read by every emit
+// invocation instead of redoing patch_setup.
+void store_setup_block(uint rec, Patch p) {
+    uint b = rec + SETUP;
+    patches[b] = p.type_ | (p.c0 ? 4u : 0u) | (p.c1 ? 8u : 0u) | (p.c2 ? 16u : 0u) | (p.copies ? 32u : 0u) |
+                 (p.tri_skips << 8) | (p.slot_skips << 12);
+    for (uint k = 0u; k < 3u; ++k) {
+        patches[b + 1u + k] = p.e[k].points | (p.e[k].segments << 16);
+        patches[b + 4u + k] = p.e[k].half_step;
+    }
+    patches[b + 7u] = p.column;
+    patches[b + 8u] = p.type_ == 2u ? p.gap - GAP_WORD : 0u;
+    patches[b + 9u] = p.clamp_;
+    patches[b + 10u] = p.strips;
+    patches[b + 11u] = p.e1_offset;
+    patches[b + 12u] = p.unique_;
+    patches[b + 13u] = p.copy_bias;
+    for (uint k = 0u; k < 2u; ++k) patches[b + 14u + k] = p.slot_skip[k].x | (p.slot_skip[k].y << 16);
+    for (uint k = 0u; k < 8u; ++k) {
+        patches[b + 16u + 2u * k] = p.tri_skip[k].x;
+        patches[b + 17u + 2u * k] = p.tri_skip[k].y;
+    }
+}
 Patch record_patch(uint rec) {
-    return patch_setup(uvec2(patches[rec + 1u], patches[rec + 4u]), uvec2(patches[rec + 2u], patches[rec + 5u]),
-                       uvec2(patches[rec + 3u], patches[rec + 6u]));
+    Patch p = patch_zero();
+    uint b = rec + SETUP;
+    uint flags = patches[b];
+    for (uint k = 0u; k < 3u; ++k) {
+        uint tr = patches[b + 1u + k];
+        p.e[k].points = tr & 0xFFFFu;
+        p.e[k].segments = tr >> 16;
+        p.e[k].half_step = patches[b + 4u + k];
+        p.e[k].t16 = patches[rec + 1u + k] == 0u ? 0u : patches[rec + 4u + k];
+    }
+    p.type_ = flags & 3u;
+    p.c0 = (flags & 4u) != 0u;
+    p.c1 = (flags & 8u) != 0u;
+    p.c2 = (flags & 16u) != 0u;
+    p.copies = (flags & 32u) != 0u;
+    p.tri_skips = (flags >> 8) & 15u;
+    p.slot_skips = (flags >> 12) & 15u;
+    p.n0 = p.e[0].segments;
+    p.n1 = p.e[1].segments;
+    p.n2 = p.e[2].segments;
+    p.vertices = patches[rec + 7u];
+    p.triangles = patches[rec + 8u];
+    if (p.type_ == 2u) {
+        p.column = patches[b + 7u];
+        load_column_record(p);
+        p.gap = GAP_WORD + patches[b + 8u];
+        p.clamp_ = patches[b + 9u];
+        p.strips = patches[b + 10u];
+        p.zipper = p.n0 + p.n1 - 1u;
+        p.e1_offset = patches[b + 11u];
+        p.unique_ = patches[b + 12u];
+        p.copy_bias = patches[b + 13u];
+    }
+    for (uint k = 0u; k < p.slot_skips; ++k) {
+        uint w = patches[b + 14u + k];
+        p.slot_skip[k] = uvec2(w & 0xFFFFu, w >> 16);
+    }
+    for (uint k = 0u; k < p.tri_skips; ++k) p.tri_skip[k] = uvec2(patches[b + 16u + 2u * k], patches[b + 17u + 2u * k]);
+    return p;
 }
 
-// Pass 1, one invocation per base triangle: factors, rotation, line states, counts.
-void ctess_patch_setup() {
-    uint t = gl_GlobalInvocationID.x;
-    if (t >= patch_count()) return;
+// Pass 1, one invocation per base triangle: factors, rotation, line states, counts and the setup block.
+void setup_one_patch(uint t) {
     uint rec = t * PATCH_WORDS;
     for (uint k = 0u; k < PATCH_WORDS; ++k) patches[rec + k] = 0u;
     uvec3 w;
@@ -606,25 +683,45 @@ void ctess_patch_setup() {
     }
     patches[rec + 7u] = p.vertices;
     patches[rec + 8u] = p.triangles;
+    store_setup_block(rec, p);
+}
+// Grid-stride: a host may dispatch fewer workgroups than patches / 64 (at most 65,535 per dimension).
+void ctess_patch_setup() {
+    uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    for (uint t = gl_GlobalInvocationID.x; t < patch_count(); t += stride) setup_one_patch(t);
 }
 
 // Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+// Totals that do not fit in u32 (indices are u32) are written as TOTALS_OVERFLOW, both of them: hosts refuse them.
+const uint TOTALS_OVERFLOW = 0xFFFFFFFFu;
 shared uvec2 scan_sum[128];
+shared uint scan_overflow;
 void ctess_prefix_sum() {
     uint n = patch_count();
     uint lane = gl_LocalInvocationID.x;
+    if (lane == 0u) scan_overflow = 0u;
+    bool overflow = false;
     uint per = (n + 127u) / 128u;
     uint begin = min(n, lane * per), end = min(n, begin + per);
     uvec2 sum = uvec2(0u);
-    for (uint t = begin; t < end; ++t) sum += uvec2(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+    for (uint t = begin; t < end; ++t) {
+        uvec2 count = uvec2(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+        sum += count;
+        overflow = overflow || sum.x < count.x || sum.y < count.y || sum.x == TOTALS_OVERFLOW || sum.y == TOTALS_OVERFLOW;
+    }
     scan_sum[lane] = sum;
     barrier();
     for (uint d = 1u; d < 128u; d <<= 1) {
         uvec2 add = lane >= d ? scan_sum[lane - d] : uvec2(0u);
         barrier();
-        scan_sum[lane] += add;
+        uvec2 before = scan_sum[lane];
+        uvec2 after = before + add;
+        overflow = overflow || after.x < before.x || after.y < before.y || after.x == TOTALS_OVERFLOW || after.y == TOTALS_OVERFLOW;
+        scan_sum[lane] = after;
         barrier();
     }
+    if (overflow) atomicOr(scan_overflow, 1u);
+    barrier();
     uvec2 base = scan_sum[lane] - sum;
     for (uint t = begin; t < end; ++t) {
         uint rec = t * PATCH_WORDS;
@@ -633,8 +730,9 @@ void ctess_prefix_sum() {
         base += uvec2(patches[rec + 7u], patches[rec + 8u]);
     }
     if (lane == 127u) {
-        patches[n * PATCH_WORDS] = scan_sum[127].x;
-        patches[n * PATCH_WORDS + 1u] = scan_sum[127].y;
+        bool too_large = scan_overflow != 0u;
+        patches[n * PATCH_WORDS] = too_large ? TOTALS_OVERFLOW : scan_sum[127].x;
+        patches[n * PATCH_WORDS + 1u] = too_large ? TOTALS_OVERFLOW : scan_sum[127].y;
     }
 }
 

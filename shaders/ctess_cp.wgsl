@@ -17,7 +17,8 @@ const T1_LAST_FAN: u32 = {{T1_LAST_FAN}}u;
 const SEARCH_WINDOW: u32 = {{SEARCH_WINDOW}}u;
 const FIXED_ONE: u32 = 16777216u; // 2^24
 const LERP_ONE: u32 = 65536u;
-const PATCH_WORDS: u32 = 16u;
+const PATCH_WORDS: u32 = 48u;
+const SETUP: u32 = 16u; // the setup block's first word in a record (patch_setup_block.hpp)
 const VERTEX_WORDS: u32 = 10u;
 const MESH_VERTEX_FLOATS: u32 = 8u;
 const GROUP: u32 = 64u;
@@ -82,8 +83,9 @@ struct Patch {
     e: array<Edge, 3>,
     type_: u32,
     c0: bool, c1: bool, c2: bool, copies: bool,
-    c: u32,   // u16 index of C_0 in the column pool
-    gap: u32, // word index of the pair's first zipper word
+    column: u32, // column record index (s2 - 1) * shapes + s0 - 1
+    c: u32,      // u16 index of C_0 in the column pool
+    gap: u32,    // word index of the pair's first zipper word
     head: u32, n0: u32, n1: u32, n2: u32,
     a: f32, b: f32,
     copy_bias: u32, clamp_: u32, e1_offset: u32, unique_: u32, strips: u32, zipper: u32, vertices: u32, triangles: u32,
@@ -117,6 +119,16 @@ fn add_slot_skip(p: ptr<function, Patch>, begin: u32, end: u32) {
     (*p).slot_skips += 1u;
 }
 
+// The column record's pool index, head and first-guess coefficients (Type 2).
+fn load_column_record(p: ptr<function, Patch>) {
+    let rec = COLUMN_RECORD + 4u * (*p).column;
+    (*p).c = tables[rec];
+    (*p).head = tables[rec + 1u];
+    (*p).a = bitcast<f32>(tables[rec + 2u]);
+    (*p).b = bitcast<f32>(tables[rec + 3u]);
+}
+
+// The whole setup from the line states: the setup pass runs it once per patch.
 fn patch_setup(s0: vec2<u32>, s1: vec2<u32>, s2: vec2<u32>) -> Patch {
     var p: Patch; // zero-initialised
     var s = array<vec2<u32>, 3>(s0, s1, s2);
@@ -168,11 +180,8 @@ fn patch_setup(s0: vec2<u32>, s1: vec2<u32>, s2: vec2<u32>) -> Patch {
     let sh0 = select(s0.x, 1u, s0.x == 0u);
     let sh1 = select(s1.x, 1u, s1.x == 0u);
     let sh2 = select(s2.x, 1u, s2.x == 0u);
-    let rec = COLUMN_RECORD + 4u * ((sh2 - 1u) * SHAPES + sh0 - 1u);
-    p.c = tables[rec];
-    p.head = tables[rec + 1u];
-    p.a = bitcast<f32>(tables[rec + 2u]);
-    p.b = bitcast<f32>(tables[rec + 3u]);
+    p.column = (sh2 - 1u) * SHAPES + sh0 - 1u;
+    load_column_record(&p);
     p.gap = GAP_WORD + table_u16(GAP_OFFSET, (sh1 - 1u) * SHAPES + sh0 - 1u);
     let last0 = edge_point(p.e[0], p.n0 - 1u);
     let v2 = edge_point(p.e[2], select(1u, p.n2 - 1u, sh2 >= 2u));
@@ -574,16 +583,73 @@ fn smallest_edge_rotation(lengths: array<f32, 3>) -> u32 {
     }
     return (smallest + 1u) % 3u;
 }
+// The setup block (patch_setup_block.hpp's word order): written once by the setup pass, read by every emit
+// invocation instead of redoing patch_setup.
+fn store_setup_block(rec: u32, p: Patch) {
+    let b = rec + SETUP;
+    patches[b] = p.type_ | select(0u, 4u, p.c0) | select(0u, 8u, p.c1) | select(0u, 16u, p.c2) |
+                 select(0u, 32u, p.copies) | (p.tri_skips << 8u) | (p.slot_skips << 12u);
+    for (var k = 0u; k < 3u; k++) {
+        patches[b + 1u + k] = p.e[k].points | (p.e[k].segments << 16u);
+        patches[b + 4u + k] = p.e[k].half_step;
+    }
+    patches[b + 7u] = p.column;
+    patches[b + 8u] = select(0u, p.gap - GAP_WORD, p.type_ == 2u);
+    patches[b + 9u] = p.clamp_;
+    patches[b + 10u] = p.strips;
+    patches[b + 11u] = p.e1_offset;
+    patches[b + 12u] = p.unique_;
+    patches[b + 13u] = p.copy_bias;
+    for (var k = 0u; k < 2u; k++) { patches[b + 14u + k] = p.slot_skip[k].x | (p.slot_skip[k].y << 16u); }
+    for (var k = 0u; k < 8u; k++) {
+        patches[b + 16u + 2u * k] = p.tri_skip[k].x;
+        patches[b + 17u + 2u * k] = p.tri_skip[k].y;
+    }
+}
 fn record_patch(rec: u32) -> Patch {
-    return patch_setup(vec2<u32>(patches[rec + 1u], patches[rec + 4u]), vec2<u32>(patches[rec + 2u], patches[rec + 5u]),
-                       vec2<u32>(patches[rec + 3u], patches[rec + 6u]));
+    var p: Patch; // zero-initialised
+    let b = rec + SETUP;
+    let flags = patches[b];
+    for (var k = 0u; k < 3u; k++) {
+        let tr = patches[b + 1u + k];
+        p.e[k].points = tr & 0xFFFFu;
+        p.e[k].segments = tr >> 16u;
+        p.e[k].half_step = patches[b + 4u + k];
+        p.e[k].t16 = select(patches[rec + 4u + k], 0u, patches[rec + 1u + k] == 0u);
+    }
+    p.type_ = flags & 3u;
+    p.c0 = (flags & 4u) != 0u;
+    p.c1 = (flags & 8u) != 0u;
+    p.c2 = (flags & 16u) != 0u;
+    p.copies = (flags & 32u) != 0u;
+    p.tri_skips = (flags >> 8u) & 15u;
+    p.slot_skips = (flags >> 12u) & 15u;
+    p.n0 = p.e[0].segments;
+    p.n1 = p.e[1].segments;
+    p.n2 = p.e[2].segments;
+    p.vertices = patches[rec + 7u];
+    p.triangles = patches[rec + 8u];
+    if (p.type_ == 2u) {
+        p.column = patches[b + 7u];
+        load_column_record(&p);
+        p.gap = GAP_WORD + patches[b + 8u];
+        p.clamp_ = patches[b + 9u];
+        p.strips = patches[b + 10u];
+        p.zipper = p.n0 + p.n1 - 1u;
+        p.e1_offset = patches[b + 11u];
+        p.unique_ = patches[b + 12u];
+        p.copy_bias = patches[b + 13u];
+    }
+    for (var k = 0u; k < p.slot_skips; k++) {
+        let w = patches[b + 14u + k];
+        p.slot_skip[k] = vec2<u32>(w & 0xFFFFu, w >> 16u);
+    }
+    for (var k = 0u; k < p.tri_skips; k++) { p.tri_skip[k] = vec2<u32>(patches[b + 16u + 2u * k], patches[b + 17u + 2u * k]); }
+    return p;
 }
 
-// Pass 1, one invocation per base triangle: factors, rotation, line states, counts.
-@compute @workgroup_size(64)
-fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let t = gid.x;
-    if (t >= patch_count()) { return; }
+// Pass 1, one invocation per base triangle: factors, rotation, line states, counts and the setup block.
+fn setup_one_patch(t: u32) {
     let rec = t * PATCH_WORDS;
     for (var k = 0u; k < PATCH_WORDS; k++) { patches[rec + k] = 0u; }
     let w = base_triangle(t);
@@ -612,28 +678,49 @@ fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     patches[rec + 7u] = p.vertices;
     patches[rec + 8u] = p.triangles;
+    store_setup_block(rec, p);
+}
+// Grid-stride: a host may dispatch fewer workgroups than patches / 64 (at most 65,535 per dimension).
+@compute @workgroup_size(64)
+fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let stride = groups.x * GROUP;
+    for (var t = gid.x; t < patch_count(); t += stride) { setup_one_patch(t); }
 }
 
 // Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+// Totals that do not fit in u32 (indices are u32) are written as TOTALS_OVERFLOW, both of them: hosts refuse them.
+const TOTALS_OVERFLOW: u32 = 0xFFFFFFFFu;
 var<workgroup> scan_sum: array<vec2<u32>, 128>;
+var<workgroup> scan_overflow: atomic<u32>;
 @compute @workgroup_size(128)
 fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     let n = patch_count();
     let lane = lid.x;
+    if (lane == 0u) { atomicStore(&scan_overflow, 0u); }
+    var overflow = false;
     let per = (n + 127u) / 128u;
     let begin = min(n, lane * per);
     let end = min(n, begin + per);
     var sum = vec2<u32>(0u);
-    for (var t = begin; t < end; t++) { sum += vec2<u32>(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]); }
+    for (var t = begin; t < end; t++) {
+        let count = vec2<u32>(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+        sum += count;
+        overflow = overflow || sum.x < count.x || sum.y < count.y || sum.x == TOTALS_OVERFLOW || sum.y == TOTALS_OVERFLOW;
+    }
     scan_sum[lane] = sum;
     workgroupBarrier();
     for (var d = 1u; d < 128u; d <<= 1u) {
         var add = vec2<u32>(0u);
         if (lane >= d) { add = scan_sum[lane - d]; }
         workgroupBarrier();
-        scan_sum[lane] += add;
+        let before = scan_sum[lane];
+        let after = before + add;
+        overflow = overflow || after.x < before.x || after.y < before.y || after.x == TOTALS_OVERFLOW || after.y == TOTALS_OVERFLOW;
+        scan_sum[lane] = after;
         workgroupBarrier();
     }
+    if (overflow) { atomicOr(&scan_overflow, 1u); }
+    workgroupBarrier();
     var base = scan_sum[lane] - sum;
     for (var t = begin; t < end; t++) {
         let rec = t * PATCH_WORDS;
@@ -642,8 +729,9 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
         base += vec2<u32>(patches[rec + 7u], patches[rec + 8u]);
     }
     if (lane == 127u) {
-        patches[n * PATCH_WORDS] = scan_sum[127].x;
-        patches[n * PATCH_WORDS + 1u] = scan_sum[127].y;
+        let too_large = atomicLoad(&scan_overflow) != 0u;
+        patches[n * PATCH_WORDS] = select(scan_sum[127].x, TOTALS_OVERFLOW, too_large);
+        patches[n * PATCH_WORDS + 1u] = select(scan_sum[127].y, TOTALS_OVERFLOW, too_large);
     }
 }
 

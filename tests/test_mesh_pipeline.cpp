@@ -106,7 +106,7 @@ TEST_CASE("mesh pipeline: flat vertices lie on the base triangle; corners are co
     const Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
     const PipelineOutput out = run_cpu(rt::cp_tables_64, scene);
     for (std::uint32_t p = 0; p < scene.patch_count(); ++p) {
-        const std::uint32_t* rec = &out.patches[std::size_t{p} * 16];
+        const std::uint32_t* rec = &out.patches[std::size_t{p} * patch_words];
         for (std::uint32_t i = 0; i < rec[7]; ++i) {
             const std::uint32_t* v = &out.vertices[(std::size_t{rec[9]} + i) * 10];
             const double w[3] = {((1u << 24) - v[0] - v[1]) / 16777216.0, v[0] / 16777216.0,
@@ -190,7 +190,38 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
         nan_scene.vertices[k] = std::numeric_limits<float>::quiet_NaN();
     const PipelineOutput nan_out = run_cpu(rt::cp_tables_64, nan_scene);
     for (std::uint32_t p = 0; p < nan_scene.patch_count(); ++p) {
-        CHECK(nan_out.patches[std::size_t{p} * 16 + 7] == 3); // T0 on every edge: the base triangle itself
-        CHECK(nan_out.patches[std::size_t{p} * 16 + 8] == 1);
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 7] == 3); // T0 on every edge: the base triangle itself
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 8] == 1);
+    }
+}
+
+TEST_CASE("setup block: counts equal CpPatch's for every line-state triple; skips fit their words") {
+    for (unsigned max_factor : {64u, 256u}) {
+        const rt::CpTableSet& tables = tables_for(max_factor);
+        const unsigned tokens = cp::token_count(cp::pattern_max_factor(max_factor));
+        const std::uint32_t t16s[] = {0u, 1u, 21845u, 65535u, 65536u};
+        std::size_t checked = 0, mismatches = 0, overflows = 0;
+        for (unsigned a = 0; a < tokens; ++a)
+            for (unsigned b = 0; b < tokens; ++b)
+                for (unsigned c = 0; c < tokens; ++c)
+                    for (std::uint32_t t : t16s) {
+                        const cp::LineState s0 = cp::clamp_line_state({a, t}, max_factor);
+                        const cp::LineState s1 = cp::clamp_line_state({b, 65536u - t}, max_factor);
+                        const cp::LineState s2 = cp::clamp_line_state({c, t / 2}, max_factor);
+                        const rt::CpPatch patch(tables, s0, s1, s2);
+                        const rt::PatchSetupBlock block = rt::patch_setup_block(tables, s0, s1, s2);
+                        ++checked;
+                        if (block.vertices != patch.vertex_count() || block.triangles != patch.triangle_count())
+                            ++mismatches;
+                        const std::uint32_t flags = block.word[rt::setup_word::flags];
+                        const std::uint32_t tri_skips = (flags >> 8) & 15u, slot_skips = (flags >> 12) & 15u;
+                        if (tri_skips > 8 || slot_skips > 2) ++overflows;
+                        for (unsigned k = 0; k < slot_skips; ++k) // begin and length packed as 16 + 16 bits
+                            if (block.word[rt::setup_word::slot_skip + k] >> 16 > 255u) ++overflows;
+                    }
+        INFO("max " << max_factor << ", " << checked << " triples");
+        CHECK(checked == std::size_t{tokens} * tokens * tokens * 5);
+        CHECK(mismatches == 0);
+        CHECK(overflows == 0);
     }
 }

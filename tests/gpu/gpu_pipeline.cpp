@@ -1,11 +1,13 @@
 #include "gpu_pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include <ctess/runtime/mesh_pipeline.hpp>
@@ -24,8 +26,20 @@ std::string shader_file(const std::string& dir, unsigned max_factor, const char*
 
 } // namespace
 
-PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_factor, const Scene& scene) {
-    static_assert(sizeof(rt::PatchRecord) == patch_words * 4 && sizeof(rt::TessVertex) == 40);
+std::uint32_t layout_patch_words(const std::string& dir, unsigned max_factor) {
+    std::ifstream f(shader_file(dir, max_factor, ".layout.json"));
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const std::string key = "\"patch_words\": ";
+    const std::size_t at = text.find(key);
+    if (at == std::string::npos) throw std::runtime_error("no patch_words in the shaders' layout.json");
+    return static_cast<std::uint32_t>(std::stoul(text.substr(at + key.size())));
+}
+
+PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_factor, const Scene& scene,
+                          RunLimits limits) {
+    static_assert(sizeof(rt::TessVertex) == 40);
+    // From the shaders' layout, so that a host can also time shaders of another record size.
+    const std::uint32_t record_words = layout_patch_words(dir, max_factor);
     const std::array<std::uint32_t, 10> params = pipeline_params(scene);
     const std::vector<std::uint32_t> tables = read_words(shader_file(dir, max_factor, ".tables.bin"));
     const std::uint32_t n = scene.patch_count();
@@ -37,7 +51,7 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     vk.upload(b_mesh, scene.vertices.data(), scene.vertices.size() * 4);
     const std::size_t b_indices = vk.create_buffer(scene.indices.size() * 4);
     vk.upload(b_indices, scene.indices.data(), scene.indices.size() * 4);
-    const std::size_t b_patches = vk.create_buffer((std::size_t{n} * patch_words + 2) * 4);
+    const std::size_t b_patches = vk.create_buffer((std::size_t{n} * record_words + 2) * 4);
     const std::size_t b_none = vk.create_buffer(16);
 
     const std::size_t setup = vk.create_pipeline(shader_file(dir, max_factor, "_patch_setup.spv"));
@@ -47,18 +61,23 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
 
     PipelineOutput out;
     const std::size_t first[] = {b_params, b_tables, b_mesh, b_indices, b_patches, b_none, b_none};
-    const VkCompute::Dispatch counts[] = {{setup, (n + 63) / 64}, {scan, 1}};
+    // At most 65,535 workgroups per dimension: the setup pass strides over the rest.
+    const std::uint32_t setup_groups = std::min((n + 63) / 64, limits.max_workgroups);
+    const VkCompute::Dispatch counts[] = {{setup, setup_groups}, {scan, 1}};
     out.milliseconds = vk.run(first, counts);
     const auto* p = static_cast<const std::uint32_t*>(vk.mapped(b_patches));
-    out.patches.assign(p, p + std::size_t{n} * patch_words + 2);
-    const std::uint32_t total_v = out.patches[std::size_t{n} * patch_words];
-    const std::uint32_t total_t = out.patches[std::size_t{n} * patch_words + 1];
+    out.patches.assign(p, p + std::size_t{n} * record_words + 2);
+    const std::uint32_t total_v = out.patches[std::size_t{n} * record_words];
+    const std::uint32_t total_t = out.patches[std::size_t{n} * record_words + 1];
+    if (limits.counts_only) return out;
+    if (total_v == totals_overflow || total_t == totals_overflow)
+        throw std::runtime_error("the mesh's vertex or triangle total does not fit in 32 bits (>= 2^32 - 1)");
 
     const std::size_t b_vertices = vk.create_buffer(std::size_t{total_v} * 40);
     const std::size_t b_out_indices = vk.create_buffer(std::size_t{total_t} * 12);
     const std::size_t second[] = {b_params,  b_tables,   b_mesh,       b_indices,
                                   b_patches, b_vertices, b_out_indices};
-    const std::uint32_t groups = n < 65535 ? n : 65535;
+    const std::uint32_t groups = std::min(n, limits.max_workgroups);
     const VkCompute::Dispatch emits[] = {{emit_v, groups}, {emit_t, groups}};
     out.milliseconds += vk.run(second, emits);
     const auto* v = static_cast<const std::uint32_t*>(vk.mapped(b_vertices));
@@ -72,7 +91,8 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
 // vertex floats and the indices. Result file: "CTGO", patch words, vertex words, index words, milliseconds
 // (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
-                        unsigned max_factor, const Scene& scene, const std::string& work_file) {
+                        unsigned max_factor, const Scene& scene, const std::string& work_file,
+                        RunLimits limits) {
     const std::array<std::uint32_t, 10> params = pipeline_params(scene);
     const std::string scene_path = work_file + ".scene";
     const std::string result_path = work_file + ".result";
@@ -91,7 +111,8 @@ PipelineOutput run_dawn(const std::string& node, const std::string& script, cons
         if (!f) throw std::runtime_error("cannot write the scene file");
     }
     std::remove(result_path.c_str());
-    std::string cmd = node;
+    std::string cmd = "CTESS_MAX_WORKGROUPS=" + std::to_string(limits.max_workgroups) +
+                      (limits.counts_only ? " CTESS_COUNTS_ONLY=1 " : " ") + node;
     cmd += " ";
     cmd += script;
     cmd += " ";

@@ -13,10 +13,24 @@
 
 namespace ctess::gpu_test {
 
+// The record size the generated shaders in dir use (their layout.json).
+std::uint32_t layout_patch_words(const std::string& dir, unsigned max_factor);
+
+// How a host dispatches: at most max_workgroups per dispatch (the passes stride over the rest; 65,535 is the
+// one-dispatch limit), and with counts_only only the setup and prefix-sum passes run (no outputs).
+struct RunLimits {
+    std::uint32_t max_workgroups = 65535;
+    bool counts_only = false;
+};
+// The totals a prefix sum writes when a mesh's vertex or triangle total does not fit in u32.
+inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
+
+// Both throw std::runtime_error on failure, and when the totals overflow (unless counts_only).
 PipelineOutput run_vulkan(VkCompute& vk, const std::string& shader_dir, unsigned max_factor,
-                          const Scene& scene);
-// Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back. Throws on failure.
+                          const Scene& scene, RunLimits limits = {});
+// Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
-                        unsigned max_factor, const Scene& scene, const std::string& work_file);
+                        unsigned max_factor, const Scene& scene, const std::string& work_file,
+                        RunLimits limits = {});
 
 } // namespace ctess::gpu_test

@@ -130,4 +130,24 @@ inline Scene icosphere(unsigned subdivisions, rt::Surface surface, float dice_ra
     return s;
 }
 
+// A flat grid of cells x cells x 2 patches seen from so close that every edge factor clamps to the maximum:
+// the largest output per patch, for the totals' overflow guard.
+inline Scene max_factor_grid(unsigned cells) {
+    Scene s;
+    for (unsigned j = 0; j <= cells; ++j)
+        for (unsigned i = 0; i <= cells; ++i) {
+            const float x = static_cast<float>(i) / cells, y = static_cast<float>(j) / cells;
+            detail::push_vertex(s, {x, y, 0.0f}, {0.0f, 0.0f, 1.0f}, x, y);
+        }
+    for (unsigned j = 0; j < cells; ++j)
+        for (unsigned i = 0; i < cells; ++i) {
+            const std::uint32_t a = j * (cells + 1) + i, b = a + 1, c = a + cells + 1, d = c + 1;
+            s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
+        }
+    s.options.dice.eye = {0.5f, 0.5f, 0.01f};
+    s.options.dice.projection_scale = 1.0e7f;
+    s.options.surface = {rt::Surface::flat, 0.0f};
+    return s;
+}
+
 } // namespace ctess::gpu_test

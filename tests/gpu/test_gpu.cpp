@@ -27,18 +27,18 @@ VkCompute& device() {
     static std::unique_ptr<VkCompute> vk = std::make_unique<VkCompute>();
     return *vk;
 }
-PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char*) {
-    return run_vulkan(device(), CTESS_SHADER_DIR, max_factor, scene);
+PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char*, RunLimits limits = {}) {
+    return run_vulkan(device(), CTESS_SHADER_DIR, max_factor, scene, limits);
 }
 #elif defined(CTESS_GPU_DAWN)
 const char* const backend_name = "Dawn (OpenGL ES on llvmpipe)";
-PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name) {
+PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
     std::string work = CTESS_WORK_DIR;
     work += "/dawn_";
     work += name;
     work += "_";
     work += std::to_string(max_factor);
-    return run_dawn(CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work);
+    return run_dawn(CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work, limits);
 }
 #else
 #error "define CTESS_GPU_VULKAN or CTESS_GPU_DAWN"
@@ -113,4 +113,26 @@ TEST_CASE("GPU crack test: icosphere with PN and Phong is watertight, max 64 and
         check_watertight(max_factor, rt::Surface::pn_triangles);
         check_watertight(max_factor, rt::Surface::phong);
     }
+}
+
+TEST_CASE("GPU grid-stride: 7 workgroups per dispatch give the same output as one per patch") {
+    const Scene scene = factor_sweep_grid(64, 24, rt::Surface::flat);
+    const Comparison c =
+        compare(run_cpu(rt::cp_tables_64, scene), run_gpu(64, scene, "stride", RunLimits{7, false}));
+    INFO(c.first_difference);
+    CHECK(c.equal());
+}
+
+TEST_CASE("GPU totals: beyond 2^32 - 2 vertices the prefix sum writes the overflow marker and hosts refuse") {
+    const Scene scene = max_factor_grid(182); // 66,248 patches
+    const std::uint32_t n = scene.patch_count();
+    // Max 64: 4,098 vertices and 4,096 triangles per patch, 271 M in all: exact totals.
+    const PipelineOutput fits = run_gpu(64, scene, "totals", RunLimits{65535, true});
+    CHECK(fits.patches[std::size_t{n} * patch_words] == n * 4098u);
+    CHECK(fits.patches[std::size_t{n} * patch_words + 1] == n * 4096u);
+    // Max 256: 65,538 vertices per patch, 4.34e9 in all.
+    const PipelineOutput over = run_gpu(256, scene, "totals", RunLimits{65535, true});
+    CHECK(over.patches[std::size_t{n} * patch_words] == totals_overflow);
+    CHECK(over.patches[std::size_t{n} * patch_words + 1] == totals_overflow);
+    CHECK_THROWS(run_gpu(256, scene, "totals"));
 }

@@ -25,6 +25,7 @@
 
 #include "cp_patch.hpp"
 #include "cp_table_set.hpp"
+#include "patch_setup_block.hpp"
 #include "surface_eval.hpp"
 #include "tess_factor.hpp"
 
@@ -44,7 +45,8 @@ struct PipelineOptions {
     SurfaceOptions surface{};
 };
 
-// One base triangle (patch). 16 words: the GPU's patch buffer uses this layout.
+// One base triangle (patch). 48 words: the GPU's patch buffer uses this layout. Words 16-47 are the setup
+// block the GPU's emit passes read instead of redoing the patch setup (patch_setup_block.hpp).
 struct PatchRecord {
     std::uint32_t rotation = 0;  // cp::Rotation::shift: pattern vertex v_k is base vertex (k + rotation) % 3
     std::uint32_t token[3] = {}; // pattern edges e0, e1, e2: CP line state
@@ -55,8 +57,9 @@ struct PatchRecord {
     std::uint32_t first_triangle = 0;
     float factor[3] = {}; // base edges E0 = w0w1, E1 = w1w2, E2 = w2w0, before clamping
     std::uint32_t reserved[2] = {};
+    std::uint32_t setup[setup_word::words] = {};
 };
-static_assert(sizeof(PatchRecord) == 64);
+static_assert(sizeof(PatchRecord) == 192);
 
 // One output vertex. 10 words: the GPU's vertex buffer uses this layout.
 struct TessVertex {
@@ -91,7 +94,7 @@ inline bool base_triangle(const MeshView& mesh, std::uint32_t t, std::uint32_t (
 
 } // namespace detail
 
-// Patch t's rotation, line states and counts (first_vertex and first_triangle are left 0).
+// Patch t's rotation, line states, counts and setup block (first_vertex and first_triangle are left 0).
 inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, std::uint32_t t,
                                const PipelineOptions& options) {
     PatchRecord rec;
@@ -119,6 +122,8 @@ inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, s
     const CpPatch patch(tables, s[0], s[1], s[2]);
     rec.vertex_count = patch.vertex_count();
     rec.triangle_count = patch.triangle_count();
+    const PatchSetupBlock block = patch_setup_block(tables, s[0], s[1], s[2]);
+    for (unsigned k = 0; k < setup_word::words; ++k) rec.setup[k] = block.word[k];
     return rec;
 }
 

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Static instruction counts of the generated SPIR-V (docs/shaders.md, "Measured").
+
+    python3 bench/spirv_stats.py SHADER_DIR [SHADER_DIR ...]
+
+For each emit pass of max 64: the instructions of the per-patch setup an emit workgroup runs (the call tree of
+`record_patch`, as glslang emits it, one function per GLSL function), and the whole pass after `spirv-opt -O`
+(everything inlined into main). Needs spirv-dis and spirv-opt (Debian spirv-tools).
+"""
+import re
+import subprocess
+import sys
+import tempfile
+
+PASSES = ["patch_setup", "emit_vertices", "emit_triangles"]
+NOT_INSTRUCTIONS = {"OpFunction", "OpFunctionParameter", "OpFunctionEnd", "OpLabel", "OpLine", "OpNoLine"}
+
+
+def functions(spv):
+    """name -> (instruction count, set of callees)"""
+    text = subprocess.run(["spirv-dis", "--no-color", spv], check=True, capture_output=True, text=True).stdout
+    out, name = {}, None
+    for line in text.splitlines():
+        m = re.match(r"\s*(%\S+) = OpFunction ", line)
+        if m:
+            name = m.group(1)
+            out[name] = [0, set()]
+            continue
+        if name is None:
+            continue
+        op = re.search(r"\b(Op\w+)", line)
+        if not op:
+            continue
+        if op.group(1) == "OpFunctionEnd":
+            name = None
+            continue
+        if op.group(1) not in NOT_INSTRUCTIONS:
+            out[name][0] += 1
+        call = re.search(r"OpFunctionCall %\S+ (%\S+)", line)
+        if call:
+            out[name][1].add(call.group(1))
+    return out
+
+
+def tree_size(funcs, root):
+    seen, stack = set(), [root]
+    while stack:
+        f = stack.pop()
+        if f in seen or f not in funcs:
+            continue
+        seen.add(f)
+        stack.extend(funcs[f][1])
+    return sum(funcs[f][0] for f in seen), len(seen)
+
+
+def optimized_size(spv):
+    with tempfile.NamedTemporaryFile(suffix=".spv") as tmp:
+        subprocess.run(["spirv-opt", "-O", spv, "-o", tmp.name], check=True)
+        return sum(n for n, _ in functions(tmp.name).values())
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__)
+        return 2
+    print("| shaders | pass | record_patch call tree (instructions, functions) | whole pass after spirv-opt -O |")
+    print("|---|---|---|---|")
+    for d in sys.argv[1:]:
+        for p in PASSES:
+            spv = f"{d}/ctess_cp_64_{p}.spv"
+            funcs = functions(spv)
+            root = next((f for f in funcs if f.startswith("%record_patch")), None)
+            setup = "—" if root is None else "%d, %d" % tree_size(funcs, root)
+            print(f"| {d} | {p} | {setup} | {optimized_size(spv)} |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,107 @@
+// ctess_gpu_bench: times the GPU mesh pipeline on lavapipe (Vulkan) and Dawn (WebGPU on GLES/llvmpipe), for
+// one or more shader builds in the same run, on the 1,152-patch factor sweep and a 50 k-patch grid. Not a
+// test: docs/shaders.md quotes its output.
+//
+//   ctess_gpu_bench LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]
+//
+// Each build runs each scene once to warm the driver's shader cache, then `repeats` times; the median of the
+// submit-to-completion times is printed. Every build's vertices and indices must equal the CPU pipeline's
+// (records are compared only when the build's record size is the CPU's). Exit status 0, or 1 with a message.
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <ctess/runtime/cp_table_set.hpp>
+
+#include "gpu_pipeline.hpp"
+
+using namespace ctess;
+using namespace ctess::gpu_test;
+
+namespace {
+
+struct Build {
+    std::string label, dir;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+bool same_output(PipelineOutput cpu, PipelineOutput gpu) {
+    if (cpu.patches.size() != gpu.patches.size()) { // another record size: compare the outputs only
+        cpu.patches.clear();
+        gpu.patches.clear();
+    }
+    const Comparison c = compare(cpu, gpu);
+    if (!c.equal())
+        std::fprintf(stderr, "ctess_gpu_bench: output differs from the CPU: %s\n",
+                     c.first_difference.c_str());
+    return c.equal();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<Build> builds;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const std::size_t eq = arg.find('=');
+        if (eq == std::string::npos) {
+            std::fprintf(stderr, "usage: ctess_gpu_bench LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]\n");
+            return 1;
+        }
+        builds.push_back({arg.substr(0, eq), arg.substr(eq + 1)});
+    }
+    if (builds.empty()) {
+        std::fprintf(stderr, "usage: ctess_gpu_bench LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]\n");
+        return 1;
+    }
+    struct Named {
+        const char* name;
+        Scene scene;
+    };
+    // The 50 k-patch grid keeps its output (19 MB of vertices) well under the size at which Dawn GLES on
+    // llvmpipe aborts (docs/shaders.md: 27.8 MB already did).
+    Scene big = factor_sweep_grid(64, 158, rt::Surface::pn_triangles);
+    big.options.dice.dice_rate = 12.0f;
+    const Named scenes[] = {{"1,152-patch sweep, PN", factor_sweep_grid(64, 24, rt::Surface::pn_triangles)},
+                            {"50 k-patch grid, PN", big}};
+    constexpr int repeats = 3;
+    try {
+        VkCompute vk;
+        std::printf("| scene | patches | vertices | triangles | backend | build | median ms (of %d) |\n"
+                    "|---|---|---|---|---|---|---|\n",
+                    repeats);
+        for (const Named& s : scenes) {
+            const PipelineOutput cpu = run_cpu(rt::cp_tables_64, s.scene);
+            for (const char* backend : {"lavapipe", "Dawn"}) {
+                // Builds alternate inside each repeat, so that drift of the machine hits them alike.
+                std::vector<std::vector<double>> ms(builds.size());
+                for (int r = -1; r < repeats; ++r) {
+                    for (std::size_t b = 0; b < builds.size(); ++b) {
+                        const PipelineOutput gpu =
+                            backend[0] == 'l'
+                                ? run_vulkan(vk, builds[b].dir, 64, s.scene)
+                                : run_dawn(CTESS_NODE, CTESS_RUN_WGSL, builds[b].dir, 64, s.scene,
+                                           std::string(CTESS_WORK_DIR) + "/bench_" + builds[b].label);
+                        if (r < 0 && !same_output(cpu, gpu)) return 1;
+                        if (r >= 0) ms[b].push_back(gpu.milliseconds);
+                    }
+                }
+                for (std::size_t b = 0; b < builds.size(); ++b)
+                    std::printf("| %s | %u | %u | %u | %s | %s | %.1f |\n", s.name, s.scene.patch_count(),
+                                cpu.total_vertices(), cpu.total_triangles(), backend, builds[b].label.c_str(),
+                                median(ms[b]));
+                std::fflush(stdout);
+            }
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ctess_gpu_bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
