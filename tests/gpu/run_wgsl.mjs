@@ -33,6 +33,11 @@ const vertexFloats = scene[12], indexCount = scene[13];
 const meshVertices = scene.slice(14, 14 + vertexFloats);
 const meshIndices = scene.slice(14 + vertexFloats, 14 + vertexFloats + indexCount);
 const n = params[0];
+// The pipeline's limits (runtime/include/ctess/runtime/mesh_pipeline.hpp): past them, exit status 3.
+const maxPatches = 65535 * 64, maxVertices = Math.floor(0xFFFFFFFF / 10), maxTriangles = Math.floor(0xFFFFFFFF / 3);
+const pastLimits = (msg) => { console.error(`run_wgsl: ${msg}: past the pipeline's limits (${maxPatches} patches, ` +
+                                            `${maxVertices} vertices, ${maxTriangles} triangles)`); process.exit(3); };
+if (n > maxPatches) pastLimits(`${n} patches`);
 const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}.tables.bin`).buffer.slice(0));
 
 device.pushErrorScope('validation');
@@ -92,6 +97,10 @@ const bPatches = storage(patchWords), bNone = storage(4), bNone2 = storage(4);
 let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.ceil(n / 64)], [scan, 1]]);
 const patches = await read(bPatches, patchWords);
 const totalV = patches[n * 16], totalT = patches[n * 16 + 1];
+// The u32 totals wrap: recount them exactly (JS numbers) before sizing the output buffers.
+let sumV = 0, sumT = 0;
+for (let t = 0; t < n; t++) { sumV += patches[t * 16 + 7]; sumT += patches[t * 16 + 8]; }
+if (sumV > maxVertices || sumT > maxTriangles) pastLimits(`${sumV} vertices, ${sumT} triangles`);
 // Dawn's GLES backend on bookworm's llvmpipe aborts the process (std::system_error in a futex) once a storage
 // binding passes about 32 MiB, below the advertised maxStorageBufferBindingSize: refuse clearly instead.
 const maxBinding = Math.min(limits.maxStorageBufferBindingSize, 32 << 20);

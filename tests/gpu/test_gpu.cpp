@@ -114,3 +114,11 @@ TEST_CASE("GPU crack test: icosphere with PN and Phong is watertight, max 64 and
         check_watertight(max_factor, rt::Surface::phong);
     }
 }
+
+TEST_CASE("GPU host refuses 65536 patches at factor 256 instead of wrapped u32 totals") {
+    // 2^32 triangles: the shader's u32 totals wrap (to 131072 vertices and 0 triangles); the host recounts
+    // them in 64 bits after the setup pass and refuses before allocating, as the CPU pipeline does.
+    const Scene scene = repeated_big_triangle(65536);
+    REQUIRE_THROWS_WITH(run_gpu(256, scene, "big"),
+                        Catch::Contains("past the pipeline's limits") || Catch::Contains("429,496,729"));
+}
