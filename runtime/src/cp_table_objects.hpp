@@ -4,6 +4,7 @@
 // declaration gives it external linkage (shared/notes/constexpr_feasibility.md P1, P2).
 #pragma once
 #include <ctess/cp_tables.hpp>
+#include <ctess/runtime/cp_table_integrity.hpp>
 
 namespace ctess::rt::detail {
 
@@ -22,6 +23,13 @@ extern const tables::ColumnChunk<256, chunks_256, 0> column_chunk_256_0;
 extern const tables::ColumnChunk<256, chunks_256, 1> column_chunk_256_1;
 extern const tables::ColumnChunk<256, chunks_256, 2> column_chunk_256_2;
 extern const tables::ColumnChunk<256, chunks_256, 3> column_chunk_256_3;
+
+// CRC-32 of each column chunk, computed where the chunk is evaluated (cp_table_integrity.hpp).
+extern const std::uint32_t column_chunk_64_0_crc;
+extern const std::uint32_t column_chunk_256_0_crc;
+extern const std::uint32_t column_chunk_256_1_crc;
+extern const std::uint32_t column_chunk_256_2_crc;
+extern const std::uint32_t column_chunk_256_3_crc;
 
 static_assert(chunks_64 == 1 && chunks_256 == 4, "update the declarations and runtime/CMakeLists.txt");
 

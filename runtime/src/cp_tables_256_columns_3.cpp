@@ -4,4 +4,5 @@
 namespace ctess::rt::detail {
 constexpr tables::ColumnChunk<256, chunks_256, 3> column_chunk_256_3 =
     tables::build_column_chunk<256, chunks_256, 3>();
+constexpr std::uint32_t column_chunk_256_3_crc = crc32::of_column_chunk(column_chunk_256_3);
 } // namespace ctess::rt::detail
