@@ -18,12 +18,15 @@ namespace {
 
 constexpr double kW = 960, kH = 620, kLeft = 90, kRight = 30, kTop = 90, kBottom = 70;
 
-// The axis' tick spacing: the smallest power of two (2^-40 .. 2^1000) that leaves at most 16 intervals, so
-// the grid never has more than 17 lines whatever the range.
+// The axis' tick spacing: a power of two up to 128 leaving at most 16 intervals; past that (ranges above
+// 2048, up to the float maximum) 1, 2 or 5 times a power of ten leaving at most 10, so the labels stay short.
+// The grid never has more than 17 lines.
 double tick_step(double range) {
-    int e = -40;
-    while (e < 1000 && range / std::ldexp(1.0, e) > 16) ++e;
-    return std::ldexp(1.0, e);
+    for (double s : {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0})
+        if (range / s <= 16) return s;
+    for (double decade = 100.0;; decade *= 10.0)
+        for (double m : {1.0, 2.0, 5.0})
+            if (range / (m * decade) <= 10) return m * decade;
 }
 
 // The chart draws one path segment per edge point per step: this bounds the work and the file's size
