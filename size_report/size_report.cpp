@@ -6,12 +6,15 @@
 // With the bare-metal toolchain the Cortex-M4 flash footprint (text + rodata) of runtime + tables follows.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <string>
 #include <vector>
 
+#include <ctess/runtime/cp_table_integrity.hpp>
 #include <ctess/runtime/cp_table_set.hpp>
 
 #include "cp_table_objects.hpp"
@@ -160,6 +163,7 @@ bool verify(const Config& c, std::string& why) {
 struct Flash {
     bool available = false;
     std::size_t tables = 0, runtime = 0, program = 0;
+    std::size_t verify = 0; // verify_tables' code and nibble table (arm_verify_probe.cpp)
 };
 
 // text + rodata of the Cortex-M4 objects: the tables, the runtime (probe), and the linked program.
@@ -185,6 +189,8 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
             f.tables += sum;
         else if (obj.find("cp_runtime_probe") != std::string::npos)
             f.runtime += sum;
+        else if (obj.find("arm_verify_probe") != std::string::npos)
+            f.verify += sum;
     }
     unsigned long long text = 0, data = 0;
     const std::string berkeley = run(fmt::format("'{}' '{}'", CTESS_ARM_SIZE, elf));
@@ -195,6 +201,30 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
     }
 #endif
     return f;
+}
+
+// verify_tables on one table set: its result, the fastest of 50 runs on this machine, and the bytes its
+// compile-time data adds to the tables (the digest and each chunk's CRC constant).
+struct Integrity {
+    bool ok = false;
+    double microseconds = 0;
+    std::size_t data_bytes = 0;
+};
+
+Integrity integrity(unsigned max_factor) {
+    const ctess::rt::CpTableSet& t = max_factor == 64 ? ctess::rt::cp_tables_64 : ctess::rt::cp_tables_256;
+    Integrity r;
+    r.ok = static_cast<bool>(ctess::rt::verify_tables(t));
+    double best = 1e30;
+    for (int run = 0; run < 50; ++run) {
+        const auto start = std::chrono::steady_clock::now();
+        const volatile bool ok = static_cast<bool>(ctess::rt::verify_tables(t));
+        (void)ok;
+        best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+    }
+    r.microseconds = best;
+    r.data_bytes = sizeof(ctess::rt::CpTableDigest) + t.digest->chunks * sizeof(std::uint32_t);
+    return r;
 }
 
 } // namespace
@@ -212,6 +242,8 @@ int main(int argc, char** argv) {
         const bool verified = verify(c, why);
         ok = ok && verified;
         const Flash f = flash(c.max_factor);
+        const Integrity check = integrity(c.max_factor);
+        ok = ok && check.ok;
         if (json) {
             report +=
                 fmt::format("{}\n  {{\"max_tess_factor\": {}, \"tables\": [", k ? "," : "", c.max_factor);
@@ -222,8 +254,11 @@ int main(int argc, char** argv) {
                 fmt::format("], \"total_bytes\": {}, \"verified_against_objects\": {}", total, verified);
             if (f.available)
                 report += fmt::format(
-                    ", \"cortex_m4_flash\": {{\"tables\": {}, \"runtime\": {}, \"program_text\": {}}}",
-                    f.tables, f.runtime, f.program);
+                    ", \"cortex_m4_flash\": {{\"tables\": {}, \"runtime\": {}, \"program_text\": {}, "
+                    "\"verify_tables\": {}}}",
+                    f.tables, f.runtime, f.program, f.verify);
+            report += fmt::format(", \"verify_tables\": {{\"ok\": {}, \"microseconds\": {:.1f}, \"data_bytes\": {}}}",
+                                  check.ok, check.microseconds, check.data_bytes);
             report += "}";
         } else {
             report += fmt::format("max_tess_factor {}\n  {:<16} {:>9} {:>9}\n", c.max_factor, "table",
@@ -242,6 +277,12 @@ int main(int argc, char** argv) {
             else
                 report += "  Cortex-M4 footprint: not built (install gcc-arm-none-eabi, "
                           "libstdc++-arm-none-eabi-newlib)\n";
+            report += fmt::format("  verify_tables: {}, {:.1f} us on this machine (fastest of 50); {} B of digest "
+                                  "and CRC constants{}\n",
+                                  check.ok ? "ok" : "FAILED (the tables differ from their compile-time CRC)",
+                                  check.microseconds, check.data_bytes,
+                                  f.available ? fmt::format(", {} B of Cortex-M4 code and CRC table", f.verify)
+                                              : std::string());
         }
     }
     report += json ? "\n]\n" : "";

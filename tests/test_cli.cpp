@@ -14,27 +14,13 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "support/cli_run.hpp"
 #include "support/square_mesh_checks.hpp"
 
 namespace {
 
-struct Run {
-    int exit_code = -1;
-    std::string out; // stdout and stderr together
-};
-
-Run ctess_cli(const std::string& args) {
-    const std::string cmd = std::string(CTESS_CLI) + " " + args + " 2>&1";
-    Run r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 65536> buf{};
-    std::size_t n = 0;
-    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using ctess::test::ctess_cli;
+using ctess::test::Run;
 
 long json_number(const std::string& json, const std::string& key) {
     const std::string tag = "\"" + key + "\": ";

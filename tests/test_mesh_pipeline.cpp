@@ -53,7 +53,8 @@ TEST_CASE("mesh pipeline: records, prefix sums and emitted patches match CpPatch
         const rt::MeshView mesh = scene.view();
         std::vector<rt::PatchRecord> rec(mesh.triangle_count);
         rt::PipelineTotals totals;
-        REQUIRE(rt::setup_patches(tables_for(max_factor), mesh, scene.options, rec, totals));
+        REQUIRE(rt::setup_patches(tables_for(max_factor), mesh, scene.options, rec, totals) ==
+                rt::PipelineStatus::ok);
         std::uint32_t v = 0, t = 0;
         for (std::uint32_t p = 0; p < mesh.triangle_count; ++p) {
             CHECK(rec[p].first_vertex == v);
@@ -76,7 +77,8 @@ TEST_CASE("mesh pipeline: records, prefix sums and emitted patches match CpPatch
         CHECK(totals.triangles == t);
         std::vector<rt::TessVertex> vertices(totals.vertices);
         std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
-        REQUIRE(rt::emit_mesh(tables_for(max_factor), mesh, scene.options, rec, vertices, indices));
+        REQUIRE(rt::emit_mesh(tables_for(max_factor), mesh, scene.options, rec, vertices, indices) ==
+                rt::PipelineStatus::ok);
         // Each patch equals the procedural generator's pattern, rotated onto the base triangle.
         const Counts most = cp::max_pattern_counts(max_factor);
         std::vector<DomainPoint> pv(most.vertices);
@@ -168,22 +170,25 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
     const rt::MeshView mesh = scene.view();
     std::vector<rt::PatchRecord> rec(mesh.triangle_count);
     rt::PipelineTotals totals;
-    REQUIRE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, rec, totals));
+    REQUIRE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, rec, totals) == rt::PipelineStatus::ok);
     CHECK(rec[1].vertex_count == 0);
     CHECK(rec[1].triangle_count == 0);
     CHECK(rec[2].vertex_count == 0);
     CHECK(rec[0].vertex_count > 0);
     CHECK(rec[3].first_vertex == rec[0].vertex_count);
     std::vector<rt::PatchRecord> too_few(mesh.triangle_count - 1);
-    CHECK_FALSE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, too_few, totals));
+    CHECK(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, too_few, totals) ==
+          rt::PipelineStatus::span_too_small);
     std::vector<rt::TessVertex> v(totals.vertices);
     std::vector<std::uint32_t> idx(3 * std::size_t{totals.triangles});
     std::vector<rt::TessVertex> v_short(totals.vertices - 1);
     std::vector<std::uint32_t> idx_short(idx.size() - 1, 7u);
-    CHECK_FALSE(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v_short, idx));
-    CHECK_FALSE(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx_short));
+    CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v_short, idx) ==
+          rt::PipelineStatus::span_too_small);
+    CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx_short) ==
+          rt::PipelineStatus::span_too_small);
     CHECK(idx_short[0] == 7u);
-    CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx));
+    CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx) == rt::PipelineStatus::ok);
     // NaN positions: factors become NaN, the CP line maps them to T0; nothing is undefined.
     Scene nan_scene = factor_sweep_grid(64, 2, rt::Surface::pn_triangles);
     for (std::size_t k = 0; k < nan_scene.vertices.size(); k += 8)

@@ -8,6 +8,23 @@
 
 #include "cp_line.hpp"
 
+// The max-256 column table is split into this many translation units: the one place that sets their number.
+// runtime/CMakeLists.txt reads this line; CTESS_FOR_EACH_COLUMN_CHUNK_256 enumerates the chunks.
+#define CTESS_COLUMN_CHUNKS_256 4
+
+// X(k) for k = 0 .. CTESS_COLUMN_CHUNKS_256 - 1 (at most 8).
+#define CTESS_COLUMN_CHUNKS_1_(X) X(0)
+#define CTESS_COLUMN_CHUNKS_2_(X) CTESS_COLUMN_CHUNKS_1_(X) X(1)
+#define CTESS_COLUMN_CHUNKS_3_(X) CTESS_COLUMN_CHUNKS_2_(X) X(2)
+#define CTESS_COLUMN_CHUNKS_4_(X) CTESS_COLUMN_CHUNKS_3_(X) X(3)
+#define CTESS_COLUMN_CHUNKS_5_(X) CTESS_COLUMN_CHUNKS_4_(X) X(4)
+#define CTESS_COLUMN_CHUNKS_6_(X) CTESS_COLUMN_CHUNKS_5_(X) X(5)
+#define CTESS_COLUMN_CHUNKS_7_(X) CTESS_COLUMN_CHUNKS_6_(X) X(6)
+#define CTESS_COLUMN_CHUNKS_8_(X) CTESS_COLUMN_CHUNKS_7_(X) X(7)
+#define CTESS_COLUMN_CHUNKS_CAT_(n) CTESS_COLUMN_CHUNKS_##n##_
+#define CTESS_COLUMN_CHUNKS_N_(n) CTESS_COLUMN_CHUNKS_CAT_(n)
+#define CTESS_FOR_EACH_COLUMN_CHUNK_256(X) CTESS_COLUMN_CHUNKS_N_(CTESS_COLUMN_CHUNKS_256)(X)
+
 namespace ctess::cp::tables {
 
 constexpr unsigned shape_count(unsigned max_factor) {

@@ -4,6 +4,7 @@
 // declaration gives it external linkage (docs/algorithm.md §3.5).
 #pragma once
 #include <ctess/cp_tables.hpp>
+#include <ctess/runtime/cp_table_integrity.hpp>
 
 namespace ctess::rt::detail {
 
@@ -23,6 +24,13 @@ extern const tables::GapTable<256> gap_table_256;
 CTESS_FOR_EACH_COLUMN_CHUNK_256(CTESS_DECLARE_COLUMN_CHUNK_256)
 #undef CTESS_DECLARE_COLUMN_CHUNK_256
 
+// CRC-32 of each column chunk, computed where the chunk is evaluated (cp_table_integrity.hpp).
+extern const std::uint32_t column_chunk_64_0_crc;
+#define CTESS_DECLARE_COLUMN_CHUNK_CRC_256(k) extern const std::uint32_t column_chunk_256_##k##_crc;
+CTESS_FOR_EACH_COLUMN_CHUNK_256(CTESS_DECLARE_COLUMN_CHUNK_CRC_256)
+#undef CTESS_DECLARE_COLUMN_CHUNK_CRC_256
+
 static_assert(chunks_64 == 1, "max 64 has one column chunk, defined in cp_tables_64.cpp");
+static_assert(chunks_256 <= max_column_chunks, "CpTableDigest holds at most max_column_chunks chunks");
 
 } // namespace ctess::rt::detail

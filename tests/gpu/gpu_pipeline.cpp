@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <sys/wait.h>
 
 #include <ctess/runtime/mesh_pipeline.hpp>
 
@@ -16,12 +17,21 @@ namespace ctess::gpu_test {
 
 namespace {
 
+constexpr int run_wgsl_past_limits = 3; // run_wgsl.mjs's exit status for a mesh past the limits
+
 std::string shader_file(const std::string& dir, unsigned max_factor, const char* suffix) {
     std::string path = dir;
     path += "/ctess_cp_";
     path += std::to_string(max_factor);
     path += suffix;
     return path;
+}
+
+// The prefix sum's totals are u32 and wrap: the host recounts the records' counts in 64 bits and refuses a
+// run past the pipeline's limits (mesh_pipeline.hpp) before it allocates the output buffers.
+void require_pipeline_size(std::uint64_t patches, std::uint64_t vertices, std::uint64_t triangles) {
+    const rt::PipelineStatus status = rt::check_pipeline_size(patches, vertices, triangles);
+    if (status != rt::PipelineStatus::ok) throw std::runtime_error(rt::pipeline_status_message(status));
 }
 
 } // namespace
@@ -43,6 +53,7 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     const std::array<std::uint32_t, 10> params = pipeline_params(scene);
     const std::vector<std::uint32_t> tables = read_words(shader_file(dir, max_factor, ".tables.bin"));
     const std::uint32_t n = scene.patch_count();
+    require_pipeline_size(n, 0, 0);
     const std::size_t b_params = vk.create_buffer(sizeof params);
     vk.upload(b_params, params.data(), sizeof params);
     const std::size_t b_tables = vk.create_buffer(tables.size() * 4);
@@ -67,11 +78,17 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     out.milliseconds = vk.run(first, counts);
     const auto* p = static_cast<const std::uint32_t*>(vk.mapped(b_patches));
     out.patches.assign(p, p + std::size_t{n} * record_words + 2);
+    if (limits.counts_only) return out;
+    // The shader's u32 totals wrap past 2^32 (it then writes the overflow marker): recount them in 64 bits and
+    // refuse a mesh past the pipeline's limits before sizing the outputs, as the CPU pipeline does.
+    std::uint64_t sum_v = 0, sum_t = 0;
+    for (std::size_t t = 0; t < n; ++t) {
+        sum_v += out.patches[t * record_words + 7];
+        sum_t += out.patches[t * record_words + 8];
+    }
+    require_pipeline_size(n, sum_v, sum_t);
     const std::uint32_t total_v = out.patches[std::size_t{n} * record_words];
     const std::uint32_t total_t = out.patches[std::size_t{n} * record_words + 1];
-    if (limits.counts_only) return out;
-    if (total_v == totals_overflow || total_t == totals_overflow)
-        throw std::runtime_error("the mesh's vertex or triangle total does not fit in 32 bits (>= 2^32 - 1)");
 
     const std::size_t b_vertices = vk.create_buffer(std::size_t{total_v} * 40);
     const std::size_t b_out_indices = vk.create_buffer(std::size_t{total_t} * 12);
@@ -123,7 +140,11 @@ PipelineOutput run_dawn(const std::string& node, const std::string& script, cons
     cmd += scene_path;
     cmd += " ";
     cmd += result_path;
-    if (std::system(cmd.c_str()) != 0) {
+    const int status = std::system(cmd.c_str());
+    if (WIFEXITED(status) && WEXITSTATUS(status) == run_wgsl_past_limits)
+        throw std::runtime_error(
+            "the mesh is past the pipeline's limits (run_wgsl.mjs recounted the totals)");
+    if (status != 0) {
         std::string why = "the Dawn run failed: ";
         why += cmd;
         throw std::runtime_error(why);

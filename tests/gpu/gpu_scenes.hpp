@@ -150,4 +150,19 @@ inline Scene max_factor_grid(unsigned cells) {
     return s;
 }
 
+// `patches` copies of one large triangle close to the eye: every edge factor is far above 256, so every patch
+// is the (max, max, max) pattern. Three shared vertices keep the mesh itself small.
+inline Scene repeated_big_triangle(std::uint32_t patches) {
+    Scene s;
+    const float corners[3][rt::mesh_vertex_floats] = {
+        {-100.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f},
+        {100.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 1.0f, 0.0f},
+        {0.0f, 100.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 1.0f},
+    };
+    s.vertices.assign(&corners[0][0], &corners[0][0] + 3 * rt::mesh_vertex_floats);
+    s.indices.resize(3 * std::size_t{patches});
+    for (std::size_t t = 0; t < patches; ++t) s.indices[3 * t + 1] = 1, s.indices[3 * t + 2] = 2;
+    return s;
+}
+
 } // namespace ctess::gpu_test

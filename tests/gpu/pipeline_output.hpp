@@ -63,12 +63,15 @@ inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) 
     const rt::MeshView mesh = scene.view();
     std::vector<rt::PatchRecord> patches(mesh.triangle_count);
     rt::PipelineTotals totals;
-    if (!rt::setup_patches(tables, mesh, scene.options, patches, totals))
-        throw std::runtime_error("setup_patches");
+    if (const rt::PipelineStatus st = rt::setup_patches(tables, mesh, scene.options, patches, totals);
+        st != rt::PipelineStatus::ok)
+        throw std::runtime_error(std::string("setup_patches: ") + rt::pipeline_status_message(st));
     std::vector<rt::TessVertex> vertices(totals.vertices);
     out.indices.resize(std::size_t{totals.triangles} * 3);
-    if (!rt::emit_mesh(tables, mesh, scene.options, patches, vertices, out.indices))
-        throw std::runtime_error("emit_mesh");
+    if (const rt::PipelineStatus st =
+            rt::emit_mesh(tables, mesh, scene.options, patches, vertices, out.indices);
+        st != rt::PipelineStatus::ok)
+        throw std::runtime_error(std::string("emit_mesh: ") + rt::pipeline_status_message(st));
     out.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     out.patches.resize(patches.size() * patch_words + 2);

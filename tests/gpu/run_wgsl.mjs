@@ -40,6 +40,11 @@ const maxGroups = Number(process.env.CTESS_MAX_WORKGROUPS ?? 65535);
 const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
 const layoutJson = JSON.parse(readFileSync(`${dir}/ctess_cp_${max}.layout.json`, 'utf8'));
 const recordWords = layoutJson.patch_words;
+// The pipeline's limits (runtime/include/ctess/runtime/mesh_pipeline.hpp): past them, exit status 3.
+const maxPatches = 65535 * 64, maxVertices = Math.floor(0xFFFFFFFF / 10), maxTriangles = Math.floor(0xFFFFFFFF / 3);
+const pastLimits = (msg) => { console.error(`run_wgsl: ${msg}: past the pipeline's limits (${maxPatches} patches, ` +
+                                            `${maxVertices} vertices, ${maxTriangles} triangles)`); process.exit(3); };
+if (n > maxPatches) pastLimits(`${n} patches`);
 const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}.tables.bin`).buffer.slice(0));
 
 device.pushErrorScope('validation');
@@ -99,7 +104,13 @@ const bPatches = storage(patchWords), bNone = storage(4), bNone2 = storage(4);
 let ms = await run([bParams, bTables, bMesh, bIndices, bPatches, bNone, bNone2], [[setup, Math.min(Math.ceil(n / 64), maxGroups)], [scan, 1]]);
 const patches = await read(bPatches, patchWords);
 const totalV = countsOnly ? 0 : patches[n * recordWords], totalT = countsOnly ? 0 : patches[n * recordWords + 1];
-if (totalV === 0xFFFFFFFF || totalT === 0xFFFFFFFF) fail("the mesh's vertex or triangle total does not fit in 32 bits (>= 2^32 - 1)");
+// The u32 totals wrap (the shader then writes 0xFFFFFFFF): recount them exactly (JS numbers) before sizing the
+// output buffers.
+if (!countsOnly) {
+    let sumV = 0, sumT = 0;
+    for (let t = 0; t < n; t++) { sumV += patches[t * recordWords + 7]; sumT += patches[t * recordWords + 8]; }
+    if (sumV > maxVertices || sumT > maxTriangles) pastLimits(`${sumV} vertices, ${sumT} triangles`);
+}
 // Dawn's GLES backend on bookworm's llvmpipe aborts the process (std::system_error in a futex) once a storage
 // binding passes about 27 MiB (27.8 MB aborted, 19 MB ran), below the advertised maxStorageBufferBindingSize:
 // refuse clearly from 24 MiB on instead.

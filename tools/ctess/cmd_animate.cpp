@@ -6,6 +6,9 @@
 #include "mesh.hpp"
 #include "mesh_formats.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
 #include <fmt/core.h>
 
 namespace ctess::cli {
@@ -59,6 +62,10 @@ show(0);
                        title, frames - 1, list, frames);
 }
 
+// The flip-book's size bound, checked before the first frame is written (issue: 256,256,256 with 1,000
+// frames would be about 12 GB).
+constexpr std::uint64_t max_animation_bytes = std::uint64_t{512} << 20;
+
 } // namespace
 
 int run_animate(int argc, char** argv) {
@@ -72,18 +79,29 @@ int run_animate(int argc, char** argv) {
     require_usable_factors(to, "--to");
     const unsigned frames = parse_unsigned(args.get("frames"), "--frames", 2, 1000);
     const std::string dir = args.get("out");
+
+    auto frame_at = [&](unsigned i, std::string& caption) {
+        const double s = double(i) / (frames - 1);
+        for (std::size_t k = 0; k < from.size(); ++k)
+            r.factors[k] = static_cast<float>(from[k] + (double(to[k]) - from[k]) * s);
+        caption = fmt::format("frame {} of {}: factors ({})", i + 1, frames, factors_text(r.factors));
+        return mesh_to_svg(tessellate(r), r, SvgOptions{args.has("provoking"), caption});
+    };
+    // Counts grow with every factor, so the larger of the two end frames bounds every frame's size.
+    std::string caption;
+    const std::uint64_t largest_frame =
+        std::max(frame_at(0, caption).size(), frame_at(frames - 1, caption).size());
+    if (largest_frame * frames > max_animation_bytes)
+        throw UsageError(fmt::format(
+            "{} frames of up to {:.1f} MB would write about {:.1f} MB; the limit is {} MiB: "
+            "use fewer --frames or smaller factors",
+            frames, largest_frame / 1e6, largest_frame * double(frames) / 1e6, max_animation_bytes >> 20));
     make_directory(dir);
 
     std::vector<std::string> captions;
     for (unsigned i = 0; i < frames; ++i) {
-        const double s = double(i) / (frames - 1);
-        for (std::size_t k = 0; k < from.size(); ++k)
-            r.factors[k] = static_cast<float>(from[k] + (double(to[k]) - from[k]) * s);
-        const Mesh mesh = tessellate(r);
-        const std::string caption =
-            fmt::format("frame {} of {}: factors ({})", i + 1, frames, factors_text(r.factors));
-        write_text(fmt::format("{}/frame_{:03}.svg", dir, i),
-                   mesh_to_svg(mesh, r, SvgOptions{args.has("provoking"), caption}));
+        const std::string svg = frame_at(i, caption);
+        write_text(fmt::format("{}/frame_{:03}.svg", dir, i), svg);
         captions.push_back(caption);
     }
     const std::string title =

@@ -18,11 +18,20 @@ namespace {
 
 constexpr double kW = 960, kH = 620, kLeft = 90, kRight = 30, kTop = 90, kBottom = 70;
 
+// The axis' tick spacing: a power of two up to 128 leaving at most 16 intervals; past that (ranges above
+// 2048, up to the float maximum) 1, 2 or 5 times a power of ten leaving at most 10, so the labels stay short.
+// The grid never has more than 17 lines.
 double tick_step(double range) {
-    for (double s : {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0})
+    for (double s : {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0})
         if (range / s <= 16) return s;
-    return 128.0;
+    for (double decade = 100.0;; decade *= 10.0)
+        for (double m : {1.0, 2.0, 5.0})
+            if (range / (m * decade) <= 10) return m * decade;
 }
+
+// The chart draws one path segment per edge point per step: this bounds the work and the file's size
+// (about 36 bytes a segment, so about 72 MB) before anything is computed.
+constexpr std::uint64_t max_path_segments = 2'000'000;
 
 } // namespace
 
@@ -37,6 +46,15 @@ int run_sweep(int argc, char** argv) {
     const std::string out_path = args.get("svg");
     const unsigned max = max_factor_from(args);
     const double one = line_fixed_one(mode);
+    // Point counts grow with the factor in every mode, so the larger end bounds every step.
+    std::vector<std::uint32_t> probe(max_line_points);
+    const std::uint64_t points_per_step =
+        std::max(line_points(mode, from, max, probe.data()), line_points(mode, to, max, probe.data()));
+    if (std::uint64_t{steps} * points_per_step > max_path_segments)
+        throw UsageError(
+            fmt::format("--steps {} with up to {} points per step would draw {} path segments; the "
+                        "limit is {}: use fewer --steps",
+                        steps, points_per_step, std::uint64_t{steps} * points_per_step, max_path_segments));
 
     const double plot_w = kW - kLeft - kRight, plot_h = kH - kTop - kBottom;
     auto X = [&](double f) { return kLeft + plot_w * (f - from) / (double(to) - from); };
@@ -53,7 +71,10 @@ int run_sweep(int argc, char** argv) {
              "font-size=\"14\" fill=\"#556\"");
     // Grid and axes.
     const double step = tick_step(double(to) - from);
-    for (double f = std::ceil(from / step) * step; f <= to + 1e-9; f += step) {
+    const double first_tick = std::ceil(from / step);
+    for (unsigned k = 0; k <= 16; ++k) { // an index, not f += step: above 2^53 * step, f + step == f
+        const double f = (first_tick + k) * step;
+        if (f > to + 1e-9) break;
         svg.line(X(f), Y(0), X(f), Y(1), "stroke=\"#e3e6ea\" stroke-width=\"1\"");
         svg.text(X(f) - 10, Y(0) + 22, fmt::format("{:g}", f), "font-size=\"13\" fill=\"#334\"");
     }

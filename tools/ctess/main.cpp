@@ -1,6 +1,8 @@
 // ctess: command-line front end to the ctess tessellators (patterns, lines, sweeps, animations).
 #include "cli_args.hpp"
+#include "command_usage.hpp"
 #include "commands.hpp"
+#include "file_output.hpp"
 
 #include <cstdio>
 #include <exception>
@@ -39,18 +41,34 @@ int main(int argc, char** argv) {
     const std::string command = argv[1];
     if (command == "--help" || command == "-h" || command == "help") {
         std::fputs(kUsage, stdout);
+        try {
+            ctess::cli::finish_standard_output();
+        } catch (const std::exception& e) {
+            fmt::print(stderr, "ctess: error: {}\n", e.what());
+            return 1;
+        }
         return 0;
     }
     try {
-        if (command == "pattern") return ctess::cli::run_pattern(argc, argv);
-        if (command == "line") return ctess::cli::run_line(argc, argv);
-        if (command == "sweep") return ctess::cli::run_sweep(argc, argv);
-        if (command == "animate") return ctess::cli::run_animate(argc, argv);
-        if (command == "efficiency") return ctess::cli::run_efficiency(argc, argv);
-        if (command == "strip") return ctess::cli::run_strip(argc, argv);
-        if (command == "surface") return ctess::cli::run_surface(argc, argv);
-        fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
-        return 2;
+        int status = -1;
+        if (const std::string usage = ctess::cli::command_usage(kUsage, command);
+            !usage.empty() && ctess::cli::asks_for_help(argc, argv)) {
+            std::fputs(usage.c_str(), stdout);
+            status = 0;
+        }
+        if (status < 0 && command == "pattern") status = ctess::cli::run_pattern(argc, argv);
+        if (status < 0 && command == "line") status = ctess::cli::run_line(argc, argv);
+        if (status < 0 && command == "sweep") status = ctess::cli::run_sweep(argc, argv);
+        if (status < 0 && command == "animate") status = ctess::cli::run_animate(argc, argv);
+        if (status < 0 && command == "efficiency") status = ctess::cli::run_efficiency(argc, argv);
+        if (status < 0 && command == "strip") status = ctess::cli::run_strip(argc, argv);
+        if (status < 0 && command == "surface") status = ctess::cli::run_surface(argc, argv);
+        if (status < 0) {
+            fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
+            return 2;
+        }
+        ctess::cli::finish_standard_output(); // a full disk or a closed pipe is an error, not exit 0
+        return status;
     } catch (const ctess::cli::UsageError& e) {
         fmt::print(stderr, "ctess {}: error: {}\n(run 'ctess --help' for usage)\n", command, e.what());
         return 2;

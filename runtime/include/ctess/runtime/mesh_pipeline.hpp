@@ -8,14 +8,17 @@
 //
 //   std::vector<PatchRecord> patches(mesh.triangle_count);
 //   PipelineTotals totals;
-//   setup_patches(cp_tables_64, mesh, options, patches, totals);
+//   if (setup_patches(cp_tables_64, mesh, options, patches, totals) != PipelineStatus::ok) ...
 //   std::vector<TessVertex> vertices(totals.vertices);
-//   std::vector<std::uint32_t> indices(3 * totals.triangles);
+//   std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
 //   emit_mesh(cp_tables_64, mesh, options, patches, vertices, indices);
 //
 // Bad input: a base triangle with a vertex index >= vertex_count is culled (no vertices, no triangles);
-// factors follow tess_factor.hpp and CpPatch's clamping; spans that are too small make the call return false
-// and write nothing.
+// factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors: T0 or the
+// maximum). Every other failure is a PipelineStatus other than ok, and pipeline_status_message() says why:
+// spans that are too small, a mesh past the GPU pipeline's limits (totals are summed in 64 bits and checked
+// against max_pipeline_patches/vertices/triangles, so they never wrap), or patch records that setup_patches
+// did not produce. On a failure emit_mesh writes nothing and setup_patches leaves totals unchanged.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -75,6 +78,52 @@ struct PipelineTotals {
     std::uint32_t triangles = 0;
 };
 
+enum class PipelineStatus : std::uint8_t {
+    ok,
+    span_too_small,     // the patches, vertices or indices span is shorter than the counts need
+    too_many_patches,   // more base triangles than max_pipeline_patches
+    too_many_vertices,  // total vertices past max_pipeline_vertices
+    too_many_triangles, // total triangles past max_pipeline_triangles
+    bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
+};
+
+// The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
+// dimension of workgroups of 64, at most 65,535 of them (the smallest maxComputeWorkGroupCount Vulkan and
+// WebGPU guarantee); the emit passes address vertex and index words with 32-bit integers.
+inline constexpr std::uint32_t max_dispatch_workgroups = 65535;
+inline constexpr std::uint32_t patch_setup_workgroup = 64;
+inline constexpr std::uint64_t max_pipeline_patches =
+    std::uint64_t{max_dispatch_workgroups} * patch_setup_workgroup;
+inline constexpr std::uint64_t max_pipeline_vertices = 0xFFFFFFFFu / (sizeof(TessVertex) / 4); // 429,496,729
+inline constexpr std::uint64_t max_pipeline_triangles = 0xFFFFFFFFu / 3; // 1,431,655,765
+
+constexpr const char* pipeline_status_message(PipelineStatus status) {
+    switch (status) {
+    case PipelineStatus::ok:
+        return "ok";
+    case PipelineStatus::span_too_small:
+        return "an output span is smaller than the counts need";
+    case PipelineStatus::too_many_patches:
+        return "the mesh has more base triangles than the patch setup dispatch allows (65,535 x 64)";
+    case PipelineStatus::too_many_vertices:
+        return "the mesh needs more output vertices than 32-bit vertex words can address (429,496,729)";
+    case PipelineStatus::too_many_triangles:
+        return "the mesh needs more output triangles than 32-bit index words can address (1,431,655,765)";
+    case PipelineStatus::bad_patch_record:
+        return "a patch record was not produced by setup_patches";
+    }
+    return "unknown status";
+}
+
+// Checks a run's size against the limits, in 64 bits (the GPU host code calls it on the totals too).
+constexpr PipelineStatus check_pipeline_size(std::uint64_t patches, std::uint64_t vertices,
+                                             std::uint64_t triangles) {
+    if (patches > max_pipeline_patches) return PipelineStatus::too_many_patches;
+    if (vertices > max_pipeline_vertices) return PipelineStatus::too_many_vertices;
+    if (triangles > max_pipeline_triangles) return PipelineStatus::too_many_triangles;
+    return PipelineStatus::ok;
+}
+
 namespace detail {
 
 inline Vec3 mesh_position(const MeshView& mesh, std::uint32_t v) {
@@ -127,21 +176,27 @@ inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, s
     return rec;
 }
 
-// Every patch's record, with the exclusive prefix sums. False (nothing written) if patches is too small.
-inline bool setup_patches(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
-                          std::span<PatchRecord> patches, PipelineTotals& totals) {
-    if (patches.size() < mesh.triangle_count) return false;
-    PipelineTotals sum;
+// Every patch's record, with the exclusive prefix sums and the totals. Stops at the first patch that takes a
+// total past its limit (the records before it are written, totals is left unchanged).
+inline PipelineStatus setup_patches(const CpTableSet& tables, const MeshView& mesh,
+                                    const PipelineOptions& options, std::span<PatchRecord> patches,
+                                    PipelineTotals& totals) {
+    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
+        return s;
+    std::uint64_t vertices = 0, triangles = 0;
     for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
         PatchRecord rec = setup_patch(tables, mesh, t, options);
-        rec.first_vertex = sum.vertices;
-        rec.first_triangle = sum.triangles;
-        sum.vertices += rec.vertex_count;
-        sum.triangles += rec.triangle_count;
+        rec.first_vertex = static_cast<std::uint32_t>(vertices);
+        rec.first_triangle = static_cast<std::uint32_t>(triangles);
+        vertices += rec.vertex_count;
+        triangles += rec.triangle_count;
+        if (const PipelineStatus s = check_pipeline_size(0, vertices, triangles); s != PipelineStatus::ok)
+            return s;
         patches[t] = rec;
     }
-    totals = sum;
-    return true;
+    totals = {static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(triangles)};
+    return PipelineStatus::ok;
 }
 
 inline CpPatch patch_of(const CpTableSet& tables, const PatchRecord& rec) {
@@ -163,18 +218,32 @@ inline TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, con
             {s.uv[0], s.uv[1]}};
 }
 
-// Every vertex and triangle of the mesh, at the records' offsets. False (nothing written) if a span is too
-// small for the records' counts.
-inline bool emit_mesh(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
-                      std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
-                      std::span<std::uint32_t> indices) {
-    if (patches.size() < mesh.triangle_count) return false;
+// Every vertex and triangle of the mesh, at the records' offsets. Checks every record first (its counts are
+// its line states' counts, its offsets the exclusive prefix sums, a culled patch is empty) and the spans; on
+// any failure writes nothing.
+inline PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh,
+                                const PipelineOptions& options, std::span<const PatchRecord> patches,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
+        return s;
+    std::uint64_t vertex_sum = 0, triangle_sum = 0;
     for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
         const PatchRecord& rec = patches[t];
-        if (std::size_t{rec.first_vertex} + rec.vertex_count > vertices.size() ||
-            (std::size_t{rec.first_triangle} + rec.triangle_count) * 3 > indices.size())
-            return false;
+        std::uint32_t w[3];
+        const bool culled = !detail::base_triangle(mesh, t, w);
+        const CpCounts counts = culled ? CpCounts{} : patch_of(tables, rec).counts();
+        if (rec.rotation > 2 || rec.first_vertex != vertex_sum || rec.first_triangle != triangle_sum ||
+            rec.vertex_count != counts.vertices || rec.triangle_count != counts.triangles)
+            return PipelineStatus::bad_patch_record;
+        vertex_sum += rec.vertex_count;
+        triangle_sum += rec.triangle_count;
+        if (const PipelineStatus s = check_pipeline_size(0, vertex_sum, triangle_sum);
+            s != PipelineStatus::ok)
+            return s;
     }
+    if (vertex_sum > vertices.size() || 3 * triangle_sum > indices.size())
+        return PipelineStatus::span_too_small;
     for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
         const PatchRecord& rec = patches[t];
         std::uint32_t w[3];
@@ -190,7 +259,7 @@ inline bool emit_mesh(const CpTableSet& tables, const MeshView& mesh, const Pipe
                 indices[3 * (std::size_t{rec.first_triangle} + p) + k] = rec.first_vertex + tri[k];
         }
     }
-    return true;
+    return PipelineStatus::ok;
 }
 
 } // namespace ctess::rt

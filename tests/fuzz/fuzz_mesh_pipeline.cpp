@@ -1,0 +1,97 @@
+// libFuzzer target: the CPU mesh pipeline (runtime/include/ctess/runtime/mesh_pipeline.hpp) on small
+// arbitrary meshes: vertex floats as any bit pattern (NaN, inf, zero-area triangles), indices in and out of
+// range, any dice and surface options, optionally a base triangle repeated tens of thousands of times (totals
+// past the limits), then patch records tampered with before emit. Properties: setup_patches is ok or a limit;
+// ok totals equal the records' sums; emit_mesh on untouched records is ok, every index names an emitted
+// vertex of its own patch and every barycentric lies in the base triangle; on tampered records it is ok or
+// bad_patch_record, and on any failure nothing is written.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include <ctess/runtime/mesh_pipeline.hpp>
+
+#include "fuzz_input.hpp"
+
+using namespace ctess;
+using rt::PipelineStatus;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    fuzz::Input in(data, size);
+    const std::uint8_t mode = in.byte();
+    const rt::CpTableSet& tables = (mode & 1) ? rt::cp_tables_256 : rt::cp_tables_64;
+    rt::PipelineOptions options;
+    options.dice.eye = {in.float_bits(), in.float_bits(), in.float_bits()};
+    if (mode & 2) options.dice.projection_scale = in.float_bits();
+    if (mode & 4) options.dice.dice_rate = in.float_bits();
+    options.surface.surface = static_cast<rt::Surface>(in.byte() % 3);
+    options.surface.alpha = (mode & 8) ? in.float_bits() : 0.75f;
+
+    const unsigned vertex_count = in.byte() % 9;
+    std::vector<float> vertices(std::size_t{vertex_count} * rt::mesh_vertex_floats);
+    for (float& x : vertices) x = (mode & 16) ? in.float_bits() : static_cast<float>(in.byte()) - 128.0f;
+    std::vector<std::uint32_t> indices(3 * static_cast<std::size_t>(in.byte() % 9));
+    for (std::uint32_t& i : indices) i = (mode & 32) ? in.u32() : in.byte() % (vertex_count + 1);
+    if ((mode & 0xC0) == 0xC0 &&
+        indices.size() >= 3) { // repeat the first base triangle: up to 65,536 patches
+        const std::size_t copies = 1 + (in.byte() | std::size_t{in.byte()} << 8);
+        indices.resize(3 * copies);
+        for (std::size_t t = 1; t < copies; ++t) std::copy_n(indices.begin(), 3, indices.begin() + 3 * t);
+    }
+    const rt::MeshView mesh{vertices.data(), vertex_count, indices.data(),
+                            static_cast<std::uint32_t>(indices.size() / 3)};
+
+    std::vector<rt::PatchRecord> records(mesh.triangle_count);
+    rt::PipelineTotals totals{1234, 5678};
+    const PipelineStatus setup = rt::setup_patches(tables, mesh, options, records, totals);
+    if (setup != PipelineStatus::ok) {
+        CTESS_FUZZ_CHECK(setup == PipelineStatus::too_many_vertices ||
+                         setup == PipelineStatus::too_many_triangles);
+        CTESS_FUZZ_CHECK(totals.vertices == 1234 && totals.triangles == 5678);
+        return 0;
+    }
+    std::uint64_t sum_v = 0, sum_t = 0;
+    for (const rt::PatchRecord& r : records) sum_v += r.vertex_count, sum_t += r.triangle_count;
+    CTESS_FUZZ_CHECK(sum_v == totals.vertices && sum_t == totals.triangles);
+    if (sum_v > (1u << 18)) return 0; // a valid mesh too large to emit quickly under the sanitizers
+
+    // Tamper: overwrite a few record bytes.
+    const bool tampered = (mode & 64) && !records.empty();
+    std::vector<rt::PatchRecord> used = records;
+    if (tampered) {
+        auto* bytes = reinterpret_cast<std::uint8_t*>(used.data());
+        const std::size_t n = used.size() * sizeof(rt::PatchRecord);
+        for (unsigned k = 0; k < 4; ++k) {
+            const std::uint32_t at = in.u32();
+            bytes[at % n] = in.byte();
+        }
+    }
+    std::vector<rt::TessVertex> out_v(totals.vertices + 4);
+    std::vector<std::uint32_t> out_i(3 * std::size_t{totals.triangles} + 4, 0xA5A5A5A5u);
+    rt::TessVertex marker;
+    marker.u = 0xA5A5A5A5u;
+    std::fill(out_v.begin(), out_v.end(), marker);
+    const PipelineStatus emit = rt::emit_mesh(tables, mesh, options, used, out_v, out_i);
+    if (!tampered) CTESS_FUZZ_CHECK(emit == PipelineStatus::ok);
+    if (emit != PipelineStatus::ok) {
+        CTESS_FUZZ_CHECK(emit == PipelineStatus::bad_patch_record || emit == PipelineStatus::span_too_small ||
+                         emit == PipelineStatus::too_many_vertices ||
+                         emit == PipelineStatus::too_many_triangles);
+        for (const rt::TessVertex& v : out_v) CTESS_FUZZ_CHECK(v.u == 0xA5A5A5A5u);
+        for (std::uint32_t i : out_i) CTESS_FUZZ_CHECK(i == 0xA5A5A5A5u);
+        return 0;
+    }
+    for (std::size_t t = 0; t < used.size(); ++t) {
+        const rt::PatchRecord& r = used[t];
+        for (std::uint32_t i = 0; i < r.vertex_count; ++i) {
+            const rt::TessVertex& v = out_v[r.first_vertex + i];
+            CTESS_FUZZ_CHECK(std::uint64_t{v.u} + v.v <= cp::fixed_one);
+        }
+        for (std::uint32_t k = 0; k < 3 * r.triangle_count; ++k) {
+            const std::uint32_t i = out_i[3 * std::size_t{r.first_triangle} + k];
+            CTESS_FUZZ_CHECK(i >= r.first_vertex && i < r.first_vertex + r.vertex_count);
+        }
+    }
+    return 0;
+}
