@@ -163,7 +163,7 @@ struct Flash {
     std::size_t tables = 0, runtime = 0, program = 0;
 };
 
-// text + rodata of the Cortex-M4 objects: the tables, the runtime (probe), and the linked program.
+// text + rodata of the Cortex-M4 objects: the tables, the runtime (probe and the CpPatch sources), and the linked program.
 Flash flash([[maybe_unused]] unsigned max_factor) {
     Flash f;
 #ifdef CTESS_ARM_SIZE
@@ -184,7 +184,7 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
         }
         if (obj.find("cp_tables_") != std::string::npos)
             f.tables += sum;
-        else if (obj.find("cp_runtime_probe") != std::string::npos)
+        else if (obj.find("cp_runtime_probe") != std::string::npos || obj.find("cp_patch_") != std::string::npos)
             f.runtime += sum;
     }
     unsigned long long text = 0, data = 0;

@@ -1,11 +1,16 @@
 // The table-driven runtime against the procedural generator: for every token triple at max 64, and for every
 // (tok0, tok2) pair with e1 sampled so that every (tok0, tok1) pair is covered at max 256, at the lerps 0,
-// 65536 and a seeded random one per edge, CpPatch's counts, every vertex(i), every triangle(p) and the bulk
-// emit equal cp::tessellate's output with the default PatternOptions, element by element.
+// 65536 and a seeded random one per edge, in both layouts and both windings: cp_counts, CpPatch's counts,
+// every vertex(i), every triangle(p), and the bulk emit of CpPatch and of CpPatchSetup equal cp::tessellate's
+// output (provoking_layout as the layout; clockwise = each reference triangle (a, b, c) as (a, c, b)),
+// element by element. The closed-form line state equals cp::line_state_fixed for every 16.16 factor.
 #include <ctess/cp_pattern.hpp>
+#include <ctess/runtime/cp_line_state.hpp>
 #include <ctess/runtime/cp_patch.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -15,22 +20,34 @@
 
 using ctess::DomainPoint;
 using ctess::cp::LineState;
+using ctess::Layout;
+using ctess::PatchOptions;
+using ctess::Winding;
 using ctess::rt::CpPatch;
+using ctess::rt::CpPatchSetup;
 using ctess::rt::CpTableSet;
 using ctess::test::cat;
 
 namespace {
 
+const std::vector<PatchOptions> all_options = {{Layout::provoking, Winding::ccw},
+                                        {Layout::provoking, Winding::cw},
+                                        {Layout::shared, Winding::ccw},
+                                        {Layout::shared, Winding::cw}};
+
 struct Comparer {
     const CpTableSet& tables;
+    PatchOptions patch_options;
     ctess::cp::PatternOptions options;
     std::vector<DomainPoint> ref_v, rt_v;
     std::vector<std::uint32_t> ref_i, rt_i;
     ctess::test::FailureLog log;
     std::uint64_t triples = 0, vertices = 0, triangles = 0;
+    ctess::cp::PatternCounts last{};
 
-    explicit Comparer(const CpTableSet& t) : tables(t) {
+    Comparer(const CpTableSet& t, PatchOptions o) : tables(t), patch_options(o) {
         options.max_factor = t.max_factor;
+        options.provoking_layout = o.layout == Layout::provoking;
         const auto cap = ctess::cp::max_pattern_counts(t.max_factor);
         ref_v.resize(cap.vertices);
         rt_v.resize(cap.vertices);
@@ -41,15 +58,22 @@ struct Comparer {
     void check(LineState s0, LineState s1, LineState s2) {
         ++triples;
         const auto ref = ctess::cp::tessellate(s0, s1, s2, options, ref_v.data(), ref_i.data());
-        const CpPatch patch(tables, s0, s1, s2);
-        const std::string where = ctess::test::describe(s0, s1, s2);
-        if (patch.vertex_count() != ref.vertices || patch.triangle_count() != ref.triangles) {
+        if (patch_options.winding == Winding::cw)
+            for (std::uint32_t t = 0; t < ref.triangles; ++t) std::swap(ref_i[3 * t + 1], ref_i[3 * t + 2]);
+        const CpPatch patch(tables, s0, s1, s2, patch_options);
+        const std::string where = cat(ctess::test::describe(s0, s1, s2), " layout ",
+                                      static_cast<int>(patch_options.layout), " winding ",
+                                      static_cast<int>(patch_options.winding));
+        const ctess::Counts counts = ctess::rt::cp_counts(tables, s0, s1, s2, patch_options);
+        if (patch.vertex_count() != ref.vertices || patch.triangle_count() != ref.triangles ||
+            !(counts == patch.counts())) {
             log.add(cat(where, ": counts ", patch.vertex_count(), "/", patch.triangle_count(), " expected ",
                         ref.vertices, "/", ref.triangles));
             return;
         }
         vertices += ref.vertices;
         triangles += ref.triangles;
+        last = ref;
         for (std::uint32_t v = 0; v < ref.vertices; ++v) {
             const DomainPoint p = patch.vertex(v);
             if (!(p == ref_v[v])) {
@@ -70,13 +94,24 @@ struct Comparer {
             log.add(cat(where, ": emit refused buffers of the maximum size"));
             return;
         }
-        for (std::uint32_t v = 0; v < ref.vertices; ++v) {
+        check_emitted(where);
+        std::fill(rt_v.begin(), rt_v.end(), DomainPoint{~0u, ~0u});
+        std::fill(rt_i.begin(), rt_i.end(), ~0u);
+        if (!CpPatchSetup(tables, s0, s1, s2, patch_options).emit(rt_v, rt_i)) {
+            log.add(cat(where, ": CpPatchSetup::emit refused buffers of the maximum size"));
+            return;
+        }
+        check_emitted(cat(where, " (CpPatchSetup)"));
+    }
+
+    void check_emitted(const std::string& where) {
+        for (std::uint32_t v = 0; v < last.vertices; ++v) {
             if (!(rt_v[v] == ref_v[v])) {
                 log.add(cat(where, ": emitted vertex ", v, " differs"));
                 return;
             }
         }
-        for (std::uint32_t k = 0; k < 3 * ref.triangles; ++k) {
+        for (std::uint32_t k = 0; k < 3 * last.triangles; ++k) {
             if (rt_i[k] != ref_i[k]) {
                 log.add(cat(where, ": emitted index ", k, " = ", rt_i[k], " expected ", ref_i[k]));
                 return;
@@ -97,7 +132,8 @@ void for_each_lerp_setting(ctess::test::Rng& rng, unsigned k0, unsigned k1, unsi
 } // namespace
 
 TEST_CASE("runtime: every token triple at sampled lerps equals cp::tessellate, max 64", "[runtime][tables]") {
-    Comparer cmp(ctess::rt::cp_tables_64);
+    const PatchOptions options = GENERATE(from_range(all_options));
+    Comparer cmp(ctess::rt::cp_tables_64, options);
     ctess::test::Rng rng(64);
     const unsigned nt = ctess::cp::token_count(64);
     for (unsigned k0 = 0; k0 < nt; ++k0)
@@ -112,7 +148,8 @@ TEST_CASE("runtime: every token triple at sampled lerps equals cp::tessellate, m
 
 TEST_CASE("runtime: every (tok0, tok2) and (tok0, tok1) pair at sampled lerps equals cp::tessellate, max 256",
           "[runtime][tables]") {
-    Comparer cmp(ctess::rt::cp_tables_256);
+    const PatchOptions options = GENERATE(from_range(all_options));
+    Comparer cmp(ctess::rt::cp_tables_256, options);
     ctess::test::Rng rng(256);
     const unsigned nt = ctess::cp::token_count(256);
     for (unsigned k0 = 0; k0 < nt; ++k0) {
@@ -128,4 +165,22 @@ TEST_CASE("runtime: every (tok0, tok2) and (tok0, tok1) pair at sampled lerps eq
     INFO(cmp.log.summary());
     CHECK(cmp.log.count == 0);
     CHECK(cmp.triples == 3u * 4u * nt * nt);
+}
+
+TEST_CASE("runtime: the closed-form line state equals cp::line_state_fixed for every 16.16 factor",
+          "[runtime][line_state]") {
+    for (const unsigned max_factor : {64u, 256u}) {
+        std::uint32_t mismatches = 0, first_bad = 0;
+        for (std::uint32_t f16 = 0; f16 <= (max_factor << 16); ++f16) {
+            if (ctess::rt::line_state_fixed(f16) != ctess::cp::line_state_fixed(f16, max_factor)) {
+                if (mismatches++ == 0) first_bad = f16;
+            }
+        }
+        INFO("max " << max_factor << ", first mismatch at f16 = " << first_bad);
+        CHECK(mismatches == 0);
+    }
+    for (const float f : {-1.0f, 0.0f, 1.0f, 1.0001f, 2.5f, 63.99f, 64.0f, 1e9f}) {
+        CHECK(ctess::rt::line_state(f, 64) == ctess::cp::line_state(f, 64));
+        CHECK(ctess::rt::line_state(f, 256) == ctess::cp::line_state(f, 256));
+    }
 }

@@ -5,7 +5,7 @@
 
 namespace ctess::rt::probe {
 
-CpCounts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept {
+Counts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept {
     return CpPatch(tables, f0, f1, f2).counts();
 }
 

@@ -1,0 +1,176 @@
+// CpPatchSetup::emit: the whole pattern in emission order, without the random-access lookups
+// (docs/algorithm.md §2). A patch without a T0 edge takes the fast path: the edge points once, each column
+// as a run of (u, min(v, K - u)) pairs written two at a time with its provoking copies, each strip's cells
+// as a template of two cells that grows by 2 per step (three 16-byte stores per four triangles), and the
+// zipper without a branch per triangle. The vector types are GCC/Clang vector extensions: SSE2 on x86-64,
+// NEON on AArch64, plain scalar code on a Cortex-M.
+#include <cstring>
+
+#include <ctess/runtime/cp_patch.hpp>
+
+namespace ctess::rt {
+
+namespace {
+
+using u32x4 = std::uint32_t __attribute__((vector_size(16)));
+using i32x4 = std::int32_t __attribute__((vector_size(16)));
+
+inline void store(void* out, u32x4 v) noexcept { std::memcpy(out, &v, sizeof v); }
+
+inline u32x4 load(const std::uint32_t* in) noexcept {
+    u32x4 v;
+    std::memcpy(&v, in, sizeof v);
+    return v;
+}
+
+} // namespace
+
+bool CpPatchSetup::emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+    if (vertices.size() < vertices_ || indices.size() / 3 < triangles_) return false;
+    if (plain_)
+        emit_type2_plain(vertices.data(), indices.data());
+    else
+        emit_collapsed(vertices.data(), indices.data());
+    return true;
+}
+
+void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) const noexcept {
+    const std::uint16_t* c = c_;
+    // Column 0 as (0, v) pairs: every column i is min((0, v_j), (0, K - u_i)) | (u_i, 0), two rows a vector
+    // (points are at most 2^24, so a signed compare is exact).
+    alignas(16) std::uint32_t column0[2 * cp::max_segments + 4];
+    column0[0] = 0, column0[1] = 0;
+    for (std::uint32_t j = 1; j < n2_; ++j) {
+        column0[2 * j] = 0;
+        column0[2 * j + 1] = interior_point(e_[2], e_[2].points[j - 1]);
+    }
+    std::memcpy(out_v, column0, sizeof(DomainPoint) * n2_);
+    const bool copies = copy_mask_ != 0;
+    DomainPoint* copy = out_v + unique_;
+    for (std::uint32_t i = 1; i < n0_; ++i) {
+        const std::uint32_t u = interior_point(e_[0], e_[0].points[i - 1]);
+        const std::uint32_t top = clamp_ > u ? clamp_ - u : 0u;
+        const std::uint32_t rows = col_rows(i);
+        DomainPoint* col = out_v + col_start(i);
+        const i32x4 limit = {0, static_cast<std::int32_t>(top), 0, static_cast<std::int32_t>(top)};
+        const u32x4 lane_u = {u, 0, u, 0};
+        auto pair = [&](std::uint32_t j) {
+            const i32x4 p = reinterpret_cast<i32x4>(load(column0 + 2 * j));
+            return reinterpret_cast<u32x4>(p < limit ? p : limit) | lane_u;
+        };
+        auto one = [&](std::uint32_t j) {
+            const std::uint32_t v = column0[2 * j + 1];
+            return DomainPoint{u, v < top ? v : top};
+        };
+        std::uint32_t j = 0;
+        if (copies && i < head_) { // rows 0..rows-2 provoke a triangle of strip i - 1 too: copies
+            for (; j + 2 < rows; j += 2) {
+                const u32x4 w = pair(j);
+                store(col + j, w);
+                store(copy + j, w);
+            }
+            for (; j < rows; ++j) {
+                col[j] = one(j);
+                if (j + 1 < rows) copy[j] = col[j];
+            }
+            copy += rows - 1;
+        } else {
+            for (; j + 2 <= rows; j += 2) store(col + j, pair(j));
+            if (j < rows) col[j] = one(j);
+        }
+    }
+    for (std::uint32_t b = 0; b <= n1_; ++b) out_v[e1_offset_ + b] = e1_point(point(e_[1], b));
+
+    // Strips: cells (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the fan (A_j, B_{nb-1}, A_{j+1}),
+    // A_j's copy first in columns i >= 1 (provoking layout).
+    const std::uint32_t swap = cw_mask_ & 1u; // lane of b in (a, b, c): 1, or 2 when clockwise
+    std::uint32_t* o = out_i;
+    std::uint32_t next_copy = unique_;
+    for (std::uint32_t i = 0; i < head_; ++i) {
+        const std::uint32_t a = c[i], b = c[i + 1];
+        const std::uint32_t na = b - a, nb = c[i + 2] - b;
+        const std::uint32_t first = i >= 1 && copies ? next_copy : a;
+        alignas(16) std::uint32_t cell[12];
+        const std::uint32_t tri[6] = {first, b, a + 1, b, b + 1, a + 1};
+        for (unsigned t = 0; t < 2; ++t) { // one cell: two triangles, wound
+            cell[3 * t] = tri[3 * t];
+            cell[3 * t + 1 + swap] = tri[3 * t + 1];
+            cell[3 * t + 2 - swap] = tri[3 * t + 2];
+        }
+        for (unsigned k = 0; k < 6; ++k) cell[6 + k] = cell[k] + 1;
+        u32x4 v0 = load(cell), v1 = load(cell + 4), v2 = load(cell + 8);
+        const std::uint32_t cells = nb - 1;
+        std::uint32_t j = 0;
+        for (; j + 2 <= cells; j += 2) {
+            store(o, v0);
+            store(o + 4, v1);
+            store(o + 8, v2);
+            v0 += 2, v1 += 2, v2 += 2;
+            o += 12;
+        }
+        if (j < cells) {
+            for (unsigned k = 0; k < 6; ++k) o[k] = cell[k] + j;
+            o += 6;
+        }
+        const std::uint32_t tip = b + nb - 1;
+        for (j = nb - 1; j + 1 < na; ++j) {
+            o[0] = first + j, o[1 + swap] = tip, o[2 - swap] = a + j + 1;
+            o += 3;
+        }
+        if (i >= 1) next_copy += na - 1;
+    }
+    // Zipper: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point b; a gap bit says which side steps,
+    // chosen by selects (the bits are a coin toss to a branch predictor).
+    std::uint32_t la = col_start(n0_) - 1, a = 0, rb = e1_offset_;
+    for (std::uint32_t q = 0; q < zipper_; ++q) {
+        const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
+        const std::uint32_t step = (w >> (q % cp::tables::gap_bits_per_word)) & 1u;
+        a += step;
+        const std::uint32_t next = col_start(n0_ - a) - 1;
+        o[0] = step ? next : rb + 1, o[1 + swap] = la, o[2 - swap] = rb;
+        la = step ? next : la;
+        rb += step ^ 1u;
+        o += 3;
+    }
+}
+
+// Patches with a T0 edge (and Types 0 and 1): the raw emission order, skipping the triangles the collapse
+// drops.
+void CpPatchSetup::emit_collapsed(DomainPoint* out_v, std::uint32_t* out_i) const noexcept {
+    std::uint32_t* o = out_i;
+    auto put = [&o](const CpTriangle& t) {
+        o[0] = t[0], o[1] = t[1], o[2] = t[2];
+        o += 3;
+    };
+    if (type_ != 2) {
+        for (std::uint32_t v = 0; v < vertices_; ++v) out_v[v] = small_vertex(v);
+        for (std::uint32_t p = 0; p < triangles_; ++p)
+            put(collapsed_triangle(skip_forward(tri_skip_.data(), tri_skips_, p)));
+        return;
+    }
+    if (c0_) {
+        for (std::uint32_t v = 0; v < e1_offset_; ++v) out_v[v] = column_point(0, v);
+    } else if (c2_) {
+        for (std::uint32_t v = 0; v < e1_offset_; ++v) out_v[v] = column_point(v, 0);
+    } else {
+        for (std::uint32_t i = 0; i < n0_; ++i)
+            for (std::uint32_t j = 0, rows = col_rows(i); j < rows; ++j) out_v[col_start(i) + j] = column_point(i, j);
+    }
+    for (std::uint32_t b = 0; b < unique_ - e1_offset_; ++b)
+        out_v[e1_offset_ + b] = e1_point(point(e_[1], c1_ ? b * n1_ : b));
+    if (copy_mask_ != 0) {
+        DomainPoint* copy = out_v + unique_;
+        for (std::uint32_t i = 1; i < head_; ++i)
+            for (std::uint32_t j = 0; j + 1 < col_rows(i); ++j) *copy++ = out_v[c_[i] + j];
+    }
+    std::uint32_t r = 0;
+    for (std::uint32_t i = 0; i < head_; ++i) {
+        const std::uint32_t end = c_[i + 1] + c_[i + 2] - 2 * (i + 1) - n2_; // PS_{i+1}
+        for (; r < end; ++r)
+            if (!dropped(r)) put(collapsed_strip_triangle(i, r));
+    }
+    for (std::uint32_t q = 0; q < zipper_; ++q)
+        if (!dropped(strips_ + q)) put(collapsed_zipper_triangle(q));
+}
+
+} // namespace ctess::rt
