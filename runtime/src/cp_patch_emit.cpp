@@ -23,6 +23,25 @@ inline u32x4 load(const std::uint32_t* in) noexcept {
     return v;
 }
 
+// Two strip cells j, j + 1 as twelve lanes, (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the same at
+// j + 1: lane = (first, a or b, by the masks) + add, with first = A_0 or its copy, a = C_i, b = C_{i+1}.
+struct CellLanes {
+    u32x4 f[3], a[3], b[3], add[3];
+};
+constexpr std::uint32_t on = ~0u;
+constexpr CellLanes cell_lanes[2] = {
+    // counter-clockwise: F B A1 | B B1 A1 | F+1 B+1 A1+1 | B+1 B1+1 A1+1
+    {{{on, 0, 0, 0}, {0, 0, on, 0}, {0, 0, 0, 0}},
+     {{0, 0, on, 0}, {0, on, 0, 0}, {on, 0, 0, on}},
+     {{0, on, 0, on}, {on, 0, 0, on}, {0, on, on, 0}},
+     {{0, 0, 1, 0}, {1, 1, 1, 1}, {2, 1, 2, 2}}},
+    // clockwise: F A1 B | B A1 B1 | F+1 A1+1 B+1 | B+1 A1+1 B1+1
+    {{{on, 0, 0, 0}, {0, 0, on, 0}, {0, 0, 0, 0}},
+     {{0, on, 0, 0}, {on, 0, 0, on}, {0, 0, on, 0}},
+     {{0, 0, on, on}, {0, on, 0, 0}, {on, on, 0, on}},
+     {{0, 1, 0, 0}, {1, 1, 1, 2}, {1, 1, 2, 2}}},
+};
+
 } // namespace
 
 bool CpPatchSetup::emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
@@ -84,21 +103,19 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
     // Strips: cells (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the fan (A_j, B_{nb-1}, A_{j+1}),
     // A_j's copy first in columns i >= 1 (provoking layout).
     const std::uint32_t swap = cw_mask_ & 1u; // lane of b in (a, b, c): 1, or 2 when clockwise
+    const CellLanes& lanes = cell_lanes[swap];
     std::uint32_t* o = out_i;
     std::uint32_t next_copy = unique_;
     for (std::uint32_t i = 0; i < head_; ++i) {
         const std::uint32_t a = c[i], b = c[i + 1];
         const std::uint32_t na = b - a, nb = c[i + 2] - b;
         const std::uint32_t first = i >= 1 && copies ? next_copy : a;
-        alignas(16) std::uint32_t cell[12];
-        const std::uint32_t tri[6] = {first, b, a + 1, b, b + 1, a + 1};
-        for (unsigned t = 0; t < 2; ++t) { // one cell: two triangles, wound
-            cell[3 * t] = tri[3 * t];
-            cell[3 * t + 1 + swap] = tri[3 * t + 1];
-            cell[3 * t + 2 - swap] = tri[3 * t + 2];
-        }
-        for (unsigned k = 0; k < 6; ++k) cell[6 + k] = cell[k] + 1;
-        u32x4 v0 = load(cell), v1 = load(cell + 4), v2 = load(cell + 8);
+        // Each lane is first, a or b plus a constant: masks, no trip through memory (a vector loaded right
+        // after scalar stores to it would stall on store forwarding).
+        const u32x4 sf = u32x4{} + first, sa = u32x4{} + a, sb = u32x4{} + b;
+        u32x4 v0 = ((sf & lanes.f[0]) | (sa & lanes.a[0]) | (sb & lanes.b[0])) + lanes.add[0];
+        u32x4 v1 = ((sf & lanes.f[1]) | (sa & lanes.a[1]) | (sb & lanes.b[1])) + lanes.add[1];
+        u32x4 v2 = ((sf & lanes.f[2]) | (sa & lanes.a[2]) | (sb & lanes.b[2])) + lanes.add[2];
         const std::uint32_t cells = nb - 1;
         std::uint32_t j = 0;
         for (; j + 2 <= cells; j += 2) {
@@ -108,8 +125,9 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
             v0 += 2, v1 += 2, v2 += 2;
             o += 12;
         }
-        if (j < cells) {
-            for (unsigned k = 0; k < 6; ++k) o[k] = cell[k] + j;
+        if (j < cells) { // one more cell: the first six lanes
+            store(o, v0);
+            o[4] = v1[0], o[5] = v1[1];
             o += 6;
         }
         const std::uint32_t tip = b + nb - 1;
