@@ -89,8 +89,9 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
                 store(copy + j, w);
             }
             for (; j < rows; ++j) {
-                col[j] = one(j);
-                if (j + 1 < rows) copy[j] = col[j];
+                const DomainPoint p = one(j); // not re-read from col: that would stall on store forwarding
+                col[j] = p;
+                if (j + 1 < rows) copy[j] = p;
             }
             copy += rows - 1;
         } else {
