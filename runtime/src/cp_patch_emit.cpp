@@ -15,7 +15,9 @@ namespace {
 using u32x4 = std::uint32_t __attribute__((vector_size(16)));
 using i32x4 = std::int32_t __attribute__((vector_size(16)));
 
-inline void store(void* out, u32x4 v) noexcept { std::memcpy(out, &v, sizeof v); }
+inline void store(void* out, u32x4 v) noexcept {
+    std::memcpy(out, &v, sizeof v);
+}
 
 inline u32x4 load(const std::uint32_t* in) noexcept {
     u32x4 v;
@@ -23,24 +25,34 @@ inline u32x4 load(const std::uint32_t* in) noexcept {
     return v;
 }
 
-// Two strip cells j, j + 1 as twelve lanes, (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the same at
-// j + 1: lane = (first, a or b, by the masks) + add, with first = A_0 or its copy, a = C_i, b = C_{i+1}.
+// Four strip cells j..j+3 as 24 lanes: cell c is (A_{j+c}, B_{j+c}, A_{j+c+1}), (B_{j+c}, B_{j+c+1},
+// A_{j+c+1}), wound; lane k is (first, a or b by the masks) + add, with first = A_0 or its copy, a = C_i,
+// b = C_{i+1}. (32-byte vector types are no faster: GCC lowers them badly without AVX.)
 struct CellLanes {
-    u32x4 f[3], a[3], b[3], add[3];
+    std::uint32_t f[24], a[24], b[24], add[24];
 };
-constexpr std::uint32_t on = ~0u;
-constexpr CellLanes cell_lanes[2] = {
-    // counter-clockwise: F B A1 | B B1 A1 | F+1 B+1 A1+1 | B+1 B1+1 A1+1
-    {{{on, 0, 0, 0}, {0, 0, on, 0}, {0, 0, 0, 0}},
-     {{0, 0, on, 0}, {0, on, 0, 0}, {on, 0, 0, on}},
-     {{0, on, 0, on}, {on, 0, 0, on}, {0, on, on, 0}},
-     {{0, 0, 1, 0}, {1, 1, 1, 1}, {2, 1, 2, 2}}},
-    // clockwise: F A1 B | B A1 B1 | F+1 A1+1 B+1 | B+1 A1+1 B1+1
-    {{{on, 0, 0, 0}, {0, 0, on, 0}, {0, 0, 0, 0}},
-     {{0, on, 0, 0}, {on, 0, 0, on}, {0, 0, on, 0}},
-     {{0, 0, on, on}, {0, on, 0, 0}, {on, on, 0, on}},
-     {{0, 1, 0, 0}, {1, 1, 1, 2}, {1, 1, 2, 2}}},
-};
+constexpr CellLanes make_cell_lanes(bool clockwise) {
+    // One cell, counter-clockwise: F B A+1 | B B+1 A+1 (0 = first, 1 = a, 2 = b).
+    unsigned src[6] = {0, 2, 1, 2, 2, 1};
+    std::uint32_t add[6] = {0, 0, 1, 0, 1, 1};
+    if (clockwise) {
+        for (unsigned t = 0; t < 2; ++t) {
+            const unsigned s1 = src[3 * t + 1];
+            const std::uint32_t a1 = add[3 * t + 1];
+            src[3 * t + 1] = src[3 * t + 2], add[3 * t + 1] = add[3 * t + 2];
+            src[3 * t + 2] = s1, add[3 * t + 2] = a1;
+        }
+    }
+    CellLanes l{};
+    for (unsigned k = 0; k < 24; ++k) {
+        l.f[k] = src[k % 6] == 0 ? ~0u : 0u;
+        l.a[k] = src[k % 6] == 1 ? ~0u : 0u;
+        l.b[k] = src[k % 6] == 2 ? ~0u : 0u;
+        l.add[k] = add[k % 6] + k / 6;
+    }
+    return l;
+}
+constexpr CellLanes cell_lanes[2] = {make_cell_lanes(false), make_cell_lanes(true)};
 
 } // namespace
 
@@ -114,21 +126,23 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         // Each lane is first, a or b plus a constant: masks, no trip through memory (a vector loaded right
         // after scalar stores to it would stall on store forwarding).
         const u32x4 sf = u32x4{} + first, sa = u32x4{} + a, sb = u32x4{} + b;
-        u32x4 v0 = ((sf & lanes.f[0]) | (sa & lanes.a[0]) | (sb & lanes.b[0])) + lanes.add[0];
-        u32x4 v1 = ((sf & lanes.f[1]) | (sa & lanes.a[1]) | (sb & lanes.b[1])) + lanes.add[1];
-        u32x4 v2 = ((sf & lanes.f[2]) | (sa & lanes.a[2]) | (sb & lanes.b[2])) + lanes.add[2];
+        u32x4 v[6];
+        for (unsigned k = 0; k < 6; ++k)
+            v[k] =
+                ((sf & load(lanes.f + 4 * k)) | (sa & load(lanes.a + 4 * k)) | (sb & load(lanes.b + 4 * k))) +
+                load(lanes.add + 4 * k);
         const std::uint32_t cells = nb - 1;
         std::uint32_t j = 0;
-        for (; j + 2 <= cells; j += 2) {
-            store(o, v0);
-            store(o + 4, v1);
-            store(o + 8, v2);
-            v0 += 2, v1 += 2, v2 += 2;
-            o += 12;
+        for (; j + 4 <= cells; j += 4) {
+            for (unsigned k = 0; k < 6; ++k) {
+                store(o + 4 * k, v[k]);
+                v[k] += 4;
+            }
+            o += 24;
         }
-        if (j < cells) { // one more cell: the first six lanes
-            store(o, v0);
-            o[4] = v1[0], o[5] = v1[1];
+        for (; j < cells; ++j) {
+            o[0] = first + j, o[1 + swap] = b + j, o[2 - swap] = a + j + 1;
+            o[3] = b + j, o[4 + swap] = b + j + 1, o[5 - swap] = a + j + 1;
             o += 6;
         }
         const std::uint32_t tip = b + nb - 1;
@@ -173,7 +187,8 @@ void CpPatchSetup::emit_collapsed(DomainPoint* out_v, std::uint32_t* out_i) cons
         for (std::uint32_t v = 0; v < e1_offset_; ++v) out_v[v] = column_point(v, 0);
     } else {
         for (std::uint32_t i = 0; i < n0_; ++i)
-            for (std::uint32_t j = 0, rows = col_rows(i); j < rows; ++j) out_v[col_start(i) + j] = column_point(i, j);
+            for (std::uint32_t j = 0, rows = col_rows(i); j < rows; ++j)
+                out_v[col_start(i) + j] = column_point(i, j);
     }
     for (std::uint32_t b = 0; b < unique_ - e1_offset_; ++b)
         out_v[e1_offset_ + b] = e1_point(point(e_[1], c1_ ? b * n1_ : b));

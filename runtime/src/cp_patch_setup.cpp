@@ -64,7 +64,8 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
     type_ = 2;
     const unsigned shapes = tables.shapes;
     const CpColumnChunk& chunk = tables.column_chunks[tables.chunk_of_shape2[shape[2] - 1]];
-    const cp::tables::ColumnRecord& rec = chunk.records[(shape[2] - chunk.first_shape2) * shapes + shape[0] - 1];
+    const cp::tables::ColumnRecord& rec =
+        chunk.records[(shape[2] - chunk.first_shape2) * shapes + shape[0] - 1];
     c_ = chunk.pool + rec.offset;
     head_ = rec.head;
     a_ = rec.a;

@@ -52,7 +52,8 @@ using CpTriangle = std::array<std::uint32_t, 3>;
 // Counts of the pattern, without building it.
 Counts cp_counts(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
                  PatchOptions options = {}) noexcept;
-inline Counts cp_counts(const CpTableSet& tables, float f0, float f1, float f2, PatchOptions options = {}) noexcept {
+inline Counts cp_counts(const CpTableSet& tables, float f0, float f1, float f2,
+                        PatchOptions options = {}) noexcept {
     return cp_counts(tables, line_state(f0, tables.max_factor), line_state(f1, tables.max_factor),
                      line_state(f2, tables.max_factor), options);
 }
@@ -162,14 +163,15 @@ class CpPatchSetup {
         const std::uint32_t bits = w & 0xFFFFu;
         const std::uint32_t a = (w >> 16) + popcount16(bits & ((1u << bit) - 1u));
         const std::uint32_t b = q - a;
-        const std::uint32_t lhs = 0u - ((bits >> bit) & 1u); // all ones: a step on L; a mask, see strip_triangle
+        const std::uint32_t lhs =
+            0u - ((bits >> bit) & 1u); // all ones: a step on L; a mask, see strip_triangle
         const std::uint32_t rb = e1_offset_ + b;
         return wind(rb + 1 + ((col_start(n0_ - a - 1) - 1u - rb - 1) & lhs), col_start(n0_ - a) - 1u, rb);
     }
 
     // Out of line (runtime/src/cp_patch_setup.cpp): the single triangle, the Type 1 fan and the T0 collapse.
-    DomainPoint small_vertex(std::uint32_t i) const noexcept;      // Type 0 and 1
-    DomainPoint slot_point(std::uint32_t s) const noexcept;        // Type 1 slots (cp::Type1Slots)
+    DomainPoint small_vertex(std::uint32_t i) const noexcept; // Type 0 and 1
+    DomainPoint slot_point(std::uint32_t s) const noexcept;   // Type 1 slots (cp::Type1Slots)
     std::uint32_t slot_index(std::uint32_t s) const noexcept;
     CpTriangle collapsed_triangle(std::uint32_t r) const noexcept; // raw triangle r of a Type 0 or 1 patch
     // Strip triangle r of a Type 2 patch with T0 collapse, from its strip i (PS_i <= r < PS_{i+1}).
