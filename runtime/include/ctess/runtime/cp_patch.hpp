@@ -36,6 +36,7 @@
 #include <span>
 
 #include <ctess/counts.hpp>
+#include <ctess/cp_edge_line.hpp> // cp::clamp_line_state, the clamping of line-state input
 #include <ctess/cp_line.hpp>
 #include <ctess/cp_tables_layout.hpp>
 #include <ctess/domain_point.hpp>

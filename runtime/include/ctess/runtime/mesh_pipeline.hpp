@@ -116,9 +116,9 @@ inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, s
         rec.token[k] = s[k].token;
         rec.t16[k] = s[k].t16;
     }
-    const CpPatch patch(tables, s[0], s[1], s[2]);
-    rec.vertex_count = patch.vertex_count();
-    rec.triangle_count = patch.triangle_count();
+    const Counts counts = cp_counts(tables, s[0], s[1], s[2]);
+    rec.vertex_count = counts.vertices;
+    rec.triangle_count = counts.triangles;
     return rec;
 }
 
