@@ -68,8 +68,6 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
         chunk.records[(shape[2] - chunk.first_shape2) * shapes + shape[0] - 1];
     c_ = chunk.pool + rec.offset;
     head_ = rec.head;
-    a_ = rec.a;
-    b_ = rec.b;
     gap_ = tables.gap_word + tables.gap_offset[(shape[1] - 1) * shapes + shape[0] - 1];
     const std::uint32_t last0 = point(e_[0], n0_ - 1);
     const std::uint32_t v2 = point(e_[2], shape[2] >= 2 ? n2_ - 1 : 1u);
@@ -211,24 +209,27 @@ CpTriangle CpPatchSetup::collapsed_zipper_triangle(std::uint32_t q) const noexce
     return wind(e1_index(b + 1), lhs_index(a), e1_index(b));
 }
 
-// Bucket b's strip is the number of strips k in [1, h-1] with PS_k <= b << shift: each strip adds one to
-// the buckets from ceil(PS_k / width) on. Counting, then a prefix sum: both loops have fixed trip counts and
-// selects only, so the constructor pays no misprediction per bucket. A strip start inside a bucket (not on
-// its first triangle) is one step of strip_of; two in the same bucket make the patch's buckets wide.
-void CpPatch::build_strip_buckets() noexcept {
-    static_assert(cp::max_segments <= 256, "strip indices (< h < n0) must fit the u8 buckets");
-    if (type_ != 2 || strips_ == 0 || head_ == 0) return;
-    while (((strips_ - 1) >> bucket_shift_) >= strip_buckets) ++bucket_shift_;
-    const std::uint32_t used = ((strips_ - 1) >> bucket_shift_) + 1;
-    const std::uint32_t inside = (1u << bucket_shift_) - 1u;
-    const std::uint16_t* c = c_;
-    std::uint8_t* count = strip_bucket_.data();
-    std::uint32_t last_inner = ~0u; // bucket of the last strip start inside a bucket
+namespace {
+
+// Bucket b's entry is the number of k in [1, n) with S_k <= b << shift: each S_k adds one to the buckets
+// from ceil(S_k / width) on. Counting, then a prefix sum: both loops have fixed trip counts and selects only,
+// so the constructor pays no misprediction per bucket. A start inside a bucket (not on its first element) is
+// one step of the lookup; two in the same bucket make the buckets from there on wide.
+template <class Start>
+void build(CpBuckets& buckets, std::uint32_t total, std::uint32_t n, Start start) noexcept {
+    static_assert(cp::max_segments <= 256, "strip and column indices (< h < n0) must fit the u8 buckets");
+    if (total == 0 || n == 0) return;
+    std::uint32_t shift = 0;
+    while (((total - 1) >> shift) >= CpBuckets::size) ++shift;
+    const std::uint32_t used = ((total - 1) >> shift) + 1;
+    const std::uint32_t inside = (1u << shift) - 1u;
+    std::uint8_t* count = buckets.first.data();
+    std::uint32_t last_inner = ~0u; // bucket of the last start inside a bucket
     std::uint32_t wide = ~0u;       // first bucket with two
-    for (std::uint32_t k = 1; k < head_; ++k) {
-        const std::uint32_t ps = c[k] + c[k + 1] - 2 * k - n2_;
-        ++count[(ps + inside) >> bucket_shift_];
-        const std::uint32_t bucket = (ps & inside) != 0 ? ps >> bucket_shift_ : ~1u;
+    for (std::uint32_t k = 1; k < n; ++k) {
+        const std::uint32_t s = start(k);
+        ++count[(s + inside) >> shift];
+        const std::uint32_t bucket = (s & inside) != 0 ? s >> shift : ~1u;
         wide = bucket == last_inner && bucket < wide ? bucket : wide;
         last_inner = bucket != ~1u ? bucket : last_inner;
     }
@@ -238,7 +239,21 @@ void CpPatch::build_strip_buckets() noexcept {
         count[b] = static_cast<std::uint8_t>(i);
     }
     count[used] = 0;
-    wide_from_ = wide == ~0u ? ~0u : wide << bucket_shift_;
+    buckets.shift = shift;
+    buckets.wide_from = wide == ~0u ? ~0u : wide << shift;
+}
+
+} // namespace
+
+// The strips (for triangle(p) and the copies' vertex(i)), and the head columns (for the columns' own
+// vertex(i), where the columns are plain).
+void CpPatch::build_buckets() noexcept {
+    if (type_ != 2 || head_ == 0) return;
+    const std::uint16_t* c = c_;
+    const std::uint32_t n2 = n2_;
+    build(strip_buckets_, strips_, head_, [c, n2](std::uint32_t k) { return c[k] + c[k + 1] - 2 * k - n2; });
+    if (plain_strips_)
+        build(column_buckets_, c[head_], head_, [c](std::uint32_t k) { return std::uint32_t{c[k]}; });
 }
 
 } // namespace ctess::rt

@@ -43,7 +43,6 @@
 #include <ctess/patch_options.hpp>
 
 #include "cp_line_state.hpp"
-#include "cp_search.hpp"
 #include "cp_table_set.hpp"
 
 namespace ctess::rt {
@@ -210,7 +209,6 @@ class CpPatchSetup {
     std::uint32_t cw_mask_ = 0;                 // all ones for Winding::cw
     std::uint32_t copy_mask_ = 0;               // all ones when strips use provoking copies
     std::uint32_t head_ = 0, n0_ = 0, n1_ = 0, n2_ = 0, t1_fan_ = 0;
-    float a_ = 0.0f, b_ = 0.0f;
     std::uint32_t copy_bias_ = 0;   // copy of A_j in column i >= 1: C_i - i + j + copy_bias_
     std::uint32_t fast_strips_ = 0; // strips_ when triangle p < strips_ is strip_triangle(p), else 0
     std::uint32_t clamp_ = 0;       // K
@@ -222,6 +220,16 @@ class CpPatchSetup {
     unsigned slot_skips_ = 0;
 };
 
+// A bucket index of a non-decreasing sequence 0 = S_0 <= S_1 <= ... <= S_n over [0, total): bucket b holds
+// [b, b + 1) << shift and first[b] is the largest k with S_k <= b << shift. The shift keeps the buckets at
+// most 256 (total <= 256 << shift). From wide_from on, a bucket may hold two or more later starts; before
+// it, at most one, so a lookup is a bucket load and one branchless step.
+struct CpBuckets {
+    static constexpr unsigned size = 256;
+    std::array<std::uint8_t, size + 1> first{}; // the extra entry is scratch for the count
+    std::uint32_t shift = 0, wide_from = ~0u;
+};
+
 // Counts, emit and O(1) random access.
 class CpPatch : public CpPatchSetup {
   public:
@@ -231,7 +239,7 @@ class CpPatch : public CpPatchSetup {
     CpPatch(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
             PatchOptions options = {}) noexcept
         : CpPatchSetup(tables, s0, s1, s2, options) {
-        build_strip_buckets();
+        build_buckets();
     }
 
     // Vertex i as an exact point (u, v) of the domain, units of 2^-24; {0, 0} when i >= vertex_count().
@@ -259,14 +267,26 @@ class CpPatch : public CpPatchSetup {
     // two or more lie at r >= wide_from_: a loop finishes those, a branch rarely taken (0.4 % of the strip
     // triangles at (64, 64, 64), none at 8 or 32). Returns i; col points at C_i.
     std::uint32_t strip_of(std::uint32_t r, const std::uint16_t*& col) const noexcept {
-        std::uint32_t i = strip_bucket_[r >> bucket_shift_];
+        std::uint32_t i = strip_buckets_.first[r >> strip_buckets_.shift];
         const std::uint32_t target = r + n2_ + 2; // PS_{i+1} <= r  <=>  C_{i+1} + C_{i+2} <= r + R_0 + 2 + 2i
         col = c_ + i;
         const std::uint32_t step = col[1] + col[2] <= target + 2 * i ? 1u : 0u;
         i += step;
         col += step;
-        if (r >= wide_from_) [[unlikely]] {
+        if (r >= strip_buckets_.wide_from) [[unlikely]] {
             while (col[1] + col[2] <= target + 2 * i) ++i, ++col; // PS_h = strips_ > r stops it
+        }
+        return i;
+    }
+    // Head column of vertex v < C_h: the largest i with C_i <= v, from the column buckets.
+    std::uint32_t column_of(std::uint32_t v) const noexcept {
+        std::uint32_t i = column_buckets_.first[v >> column_buckets_.shift];
+        const std::uint16_t* col = c_ + i;
+        const std::uint32_t step = col[1] <= v ? 1u : 0u;
+        i += step;
+        col += step;
+        if (v >= column_buckets_.wide_from) [[unlikely]] {
+            while (col[1] <= v) ++i, ++col; // C_h > v stops it
         }
         return i;
     }
@@ -282,20 +302,17 @@ class CpPatch : public CpPatchSetup {
     // three kinds, no branch.
     CpTriangle strip_triangle(std::uint32_t r) const noexcept { return plain_strip_triangle(strip_of(r), r); }
     DomainPoint type2_vertex(std::uint32_t v) const noexcept;
-    void build_strip_buckets() noexcept;
 
-    // Strip buckets: bucket b holds the raw strip triangles [b, b + 1) << bucket_shift_; strip_bucket_[b] is
-    // the strip of its first one. From wide_from_ on, a bucket may hold two or more later strip starts. The
-    // extra entry is scratch for the constructor's count.
-    static constexpr unsigned strip_buckets = 256;
-    std::array<std::uint8_t, strip_buckets + 1> strip_bucket_{};
-    std::uint32_t bucket_shift_ = 0, wide_from_ = ~0u;
+    void build_buckets() noexcept;
+
+    CpBuckets strip_buckets_;  // over the raw strip triangles: S_k = PS_k, the first raw triangle of strip k
+    CpBuckets column_buckets_; // over the head columns' vertices: S_k = C_k
 };
 
 // Copy k = v - unique_ of the provoking layout is column i >= 1, row j, with k = D_i + j and
 // D_i = Y_i - Y_1, Y_x = C_x - x: i is the largest with Y_i <= t = k + Y_1. As PS_i = Y_i + Y_{i+1} + 1 - R_0
 // and Y does not decrease, the strip of r = 2t + 1 - R_0 is i - 1 or i: the strip buckets and one step find
-// it. The columns' own points keep the float first guess of cp_search.hpp.
+// it. The columns' own points come from the column buckets.
 inline DomainPoint CpPatch::type2_vertex(std::uint32_t v) const noexcept {
     if (v - e1_offset_ < unique_ - e1_offset_) { // e1's points
         const std::uint32_t b = v - e1_offset_;
@@ -318,9 +335,7 @@ inline DomainPoint CpPatch::type2_vertex(std::uint32_t v) const noexcept {
         i += col[1] - i - 1u <= t ? 1u : 0u;
         return column_point(i, t - (c[i] - i));
     }
-    auto y = [c](int x) { return static_cast<int>(c[x]); };
-    const std::uint32_t i =
-        search_from(y, head_, static_cast<int>(v), search_first_guess(a_, b_, static_cast<float>(v), head_));
+    const std::uint32_t i = column_of(v);
     return column_point(i, v - c[i]);
 }
 
