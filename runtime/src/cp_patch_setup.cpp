@@ -8,11 +8,15 @@
 namespace ctess::rt {
 
 CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
-                           PatchOptions options) noexcept
+                           PatchOptions options, bool counts_only) noexcept
     : options_(options) {
-    const unsigned max_factor = cp::pattern_max_factor(tables.max_factor);
-    const cp::LineState s[3] = {cp::clamp_line_state(s0, max_factor), cp::clamp_line_state(s1, max_factor),
-                                cp::clamp_line_state(s2, max_factor)};
+    // The two table sets' maxima as constants, so that the token count folds (no log2 loop per call).
+    auto clamp = [max = tables.max_factor](cp::LineState state) {
+        return max == 64    ? cp::clamp_line_state(state, 64)
+               : max == 256 ? cp::clamp_line_state(state, 256)
+                            : cp::clamp_line_state(state, max);
+    };
+    const cp::LineState s[3] = {clamp(s0), clamp(s1), clamp(s2)};
     cw_mask_ = options.winding == Winding::cw ? ~0u : 0u;
     unsigned shape[3];
     for (unsigned k = 0; k < 3; ++k) {
@@ -68,10 +72,12 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
         chunk.records[(shape[2] - chunk.first_shape2) * shapes + shape[0] - 1];
     c_ = chunk.pool + rec.offset;
     head_ = rec.head;
-    gap_ = tables.gap_word + tables.gap_offset[(shape[1] - 1) * shapes + shape[0] - 1];
-    const std::uint32_t last0 = point(e_[0], n0_ - 1);
-    const std::uint32_t v2 = point(e_[2], shape[2] >= 2 ? n2_ - 1 : 1u);
-    clamp_ = last0 < v2 ? last0 : v2;
+    if (!counts_only) {
+        gap_ = tables.gap_word + tables.gap_offset[(shape[1] - 1) * shapes + shape[0] - 1];
+        const std::uint32_t last0 = point(e_[0], n0_ - 1);
+        const std::uint32_t v2 = point(e_[2], shape[2] >= 2 ? n2_ - 1 : 1u);
+        clamp_ = last0 < v2 ? last0 : v2;
+    }
     const std::uint32_t ch = c_[head_];
     strips_ = 2 * ch + 1 - 2 * head_ - n2_;
     zipper_ = n0_ + n1_ - 1;
@@ -123,7 +129,7 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
 
 Counts cp_counts(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
                  PatchOptions options) noexcept {
-    return CpPatchSetup(tables, s0, s1, s2, options).counts();
+    return CpPatchSetup(tables, s0, s1, s2, options, true).counts();
 }
 
 bool CpPatchSetup::dropped(std::uint32_t r) const noexcept {

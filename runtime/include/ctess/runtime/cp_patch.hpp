@@ -66,7 +66,8 @@ class CpPatchSetup {
         : CpPatchSetup(tables, line_state(f0, tables.max_factor), line_state(f1, tables.max_factor),
                        line_state(f2, tables.max_factor), options) {}
     CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
-                 PatchOptions options = {}) noexcept;
+                 PatchOptions options = {}) noexcept
+        : CpPatchSetup(tables, s0, s1, s2, options, false) {}
 
     Counts counts() const noexcept { return {vertices_, triangles_}; }
     std::uint32_t vertex_count() const noexcept { return vertices_; }
@@ -78,6 +79,12 @@ class CpPatchSetup {
     bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept;
 
   protected:
+    friend Counts cp_counts(const CpTableSet&, cp::LineState, cp::LineState, cp::LineState,
+                            PatchOptions) noexcept;
+    // counts_only: only what counts() needs (no zipper words, no clamp line: what emit needs).
+    CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
+                 PatchOptions options, bool counts_only) noexcept;
+
     struct Edge {
         const std::uint16_t* points = nullptr; // interior points 1..n-1 of the shape token
         std::uint32_t t16 = 0;
