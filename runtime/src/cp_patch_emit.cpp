@@ -125,20 +125,22 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         const std::uint32_t first = i >= 1 && copies ? next_copy : a;
         // Each lane is first, a or b plus a constant: masks, no trip through memory (a vector loaded right
         // after scalar stores to it would stall on store forwarding).
-        const u32x4 sf = u32x4{} + first, sa = u32x4{} + a, sb = u32x4{} + b;
-        u32x4 v[6];
-        for (unsigned k = 0; k < 6; ++k)
-            v[k] =
-                ((sf & load(lanes.f + 4 * k)) | (sa & load(lanes.a + 4 * k)) | (sb & load(lanes.b + 4 * k))) +
-                load(lanes.add + 4 * k);
         const std::uint32_t cells = nb - 1;
         std::uint32_t j = 0;
-        for (; j + 4 <= cells; j += 4) {
-            for (unsigned k = 0; k < 6; ++k) {
-                store(o + 4 * k, v[k]);
-                v[k] += 4;
+        if (cells >= 4) { // the 24 lanes cost about 40 operations: only for a strip that uses them
+            const u32x4 sf = u32x4{} + first, sa = u32x4{} + a, sb = u32x4{} + b;
+            u32x4 v[6];
+            for (unsigned k = 0; k < 6; ++k)
+                v[k] = ((sf & load(lanes.f + 4 * k)) | (sa & load(lanes.a + 4 * k)) |
+                        (sb & load(lanes.b + 4 * k))) +
+                       load(lanes.add + 4 * k);
+            for (; j + 4 <= cells; j += 4) {
+                for (unsigned k = 0; k < 6; ++k) {
+                    store(o + 4 * k, v[k]);
+                    v[k] += 4;
+                }
+                o += 24;
             }
-            o += 24;
         }
         for (; j < cells; ++j) {
             o[0] = first + j, o[1 + swap] = b + j, o[2 - swap] = a + j + 1;
