@@ -160,10 +160,11 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
     for (std::uint32_t q = 0; q < zipper_; ++q) {
         const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
         const std::uint32_t step = (w >> (q % cp::tables::gap_bits_per_word)) & 1u;
+        const std::uint32_t on_l = 0u - step; // masks: GCC turns the ternaries into a branch
         a += step;
         const std::uint32_t next = col_start(n0_ - a) - 1;
-        o[0] = step ? next : rb + 1, o[1 + swap] = la, o[2 - swap] = rb;
-        la = step ? next : la;
+        o[0] = (next & on_l) | ((rb + 1) & ~on_l), o[1 + swap] = la, o[2 - swap] = rb;
+        la = (next & on_l) | (la & ~on_l);
         rb += step ^ 1u;
         o += 3;
     }
