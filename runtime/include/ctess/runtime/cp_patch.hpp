@@ -6,11 +6,11 @@
 // provoking vertex first: (a, b, c) becomes (a, c, b).
 //
 // Three entry points, each paying only for what it needs:
-// * cp_counts(): counts only (what a GPU's first pass and an allocator need);
+// * cp_counts(): counts only (what a GPU's first pass and an allocator need; about 26 ns);
 // * CpPatchSetup: counts and emit(), which writes the whole patch in one pass per part (columns, strips,
 //   zipper) without any lookup structure;
-// * CpPatch: a CpPatchSetup plus the strip buckets that make vertex(i) and triangle(p) O(1) (O(h) more
-//   setup): build a patch once, query it many times.
+// * CpPatch: a CpPatchSetup plus the strip and column buckets that make vertex(i) and triangle(p) O(1)
+//   (O(h) more setup): build a patch once, query it many times. Its emit() is CpPatchSetup's.
 //
 //   ctess::rt::CpPatch patch(ctess::rt::cp_tables_64, 5.0f, 9.0f, 3.0f, {ctess::Layout::shared});
 //   std::uint32_t n = patch.triangle_count();
@@ -22,8 +22,9 @@
 // vertex buffers (CpPatch(32, 32, 32): 561 vertices instead of 1,026).
 //
 // Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value
-// (CpPatchSetup about 300 bytes on LP64, CpPatch 264 more for the buckets). Construction and emit are in
-// runtime/src (ctess_runtime_core); the lookups are inline here.
+// (CpPatchSetup 264 bytes on LP64, CpPatch 800 with its two bucket tables). Construction and emit are
+// compiled into ctess_runtime_core (runtime/src/cp_patch_setup.cpp, cp_patch_emit.cpp), which both table
+// libraries link; the hot lookups are inline here.
 //
 // Bad input is never undefined behaviour:
 // * factors are clamped to [1, max_factor] exactly as cp::line_state does (NaN, -inf, zero, negatives -> 1;
