@@ -13,7 +13,6 @@ namespace ctess::rt {
 namespace {
 
 using u32x4 = std::uint32_t __attribute__((vector_size(16)));
-using i32x4 = std::int32_t __attribute__((vector_size(16)));
 
 inline void store(void* out, u32x4 v) noexcept {
     std::memcpy(out, &v, sizeof v);
@@ -67,8 +66,7 @@ bool CpPatchSetup::emit(std::span<DomainPoint> vertices, std::span<std::uint32_t
 
 void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) const noexcept {
     const std::uint16_t* c = c_;
-    // Column 0 as (0, v) pairs: every column i is min((0, v_j), (0, K - u_i)) | (u_i, 0), two rows a vector
-    // (points are at most 2^24, so a signed compare is exact).
+    // Column 0 as (0, v) pairs: column i is (u_i, min(v_j, K - u_i)), two rows a vector.
     alignas(16) std::uint32_t column0[2 * cp::max_segments + 4];
     column0[0] = 0, column0[1] = 0;
     for (std::uint32_t j = 1; j < n2_; ++j) {
@@ -83,20 +81,20 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         const std::uint32_t top = clamp_ > u ? clamp_ - u : 0u;
         const std::uint32_t rows = col_rows(i);
         DomainPoint* col = out_v + col_start(i);
-        const i32x4 limit = {0, static_cast<std::int32_t>(top), 0, static_cast<std::int32_t>(top)};
+        // v grows with the row, so the rows above the clamp line K - u are a suffix: usually the top row or
+        // none. Below it a pair of rows is column 0's pair with u put in; the rest take the clamp.
+        std::uint32_t free_rows = rows;
+        while (free_rows > 0 && column0[2 * free_rows - 1] > top) --free_rows;
         const u32x4 lane_u = {u, 0, u, 0};
-        auto pair = [&](std::uint32_t j) {
-            const i32x4 p = reinterpret_cast<i32x4>(load(column0 + 2 * j));
-            return reinterpret_cast<u32x4>(p < limit ? p : limit) | lane_u;
-        };
         auto one = [&](std::uint32_t j) {
             const std::uint32_t v = column0[2 * j + 1];
             return DomainPoint{u, v < top ? v : top};
         };
         std::uint32_t j = 0;
         if (copies && i < head_) { // rows 0..rows-2 provoke a triangle of strip i - 1 too: copies
-            for (; j + 2 < rows; j += 2) {
-                const u32x4 w = pair(j);
+            const std::uint32_t pairs_end = free_rows < rows - 1 ? free_rows : rows - 1;
+            for (; j + 2 <= pairs_end; j += 2) {
+                const u32x4 w = load(column0 + 2 * j) | lane_u;
                 store(col + j, w);
                 store(copy + j, w);
             }
@@ -107,8 +105,8 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
             }
             copy += rows - 1;
         } else {
-            for (; j + 2 <= rows; j += 2) store(col + j, pair(j));
-            if (j < rows) col[j] = one(j);
+            for (; j + 2 <= free_rows; j += 2) store(col + j, load(column0 + 2 * j) | lane_u);
+            for (; j < rows; ++j) col[j] = one(j);
         }
     }
     for (std::uint32_t b = 0; b <= n1_; ++b) out_v[e1_offset_ + b] = e1_point(point(e_[1], b));
