@@ -1,8 +1,9 @@
 // The CP triangle pattern from the compile-time tables (docs/algorithm.md §2): counts, a bulk emit into
 // caller spans, and random access to any vertex or triangle in O(1). Bit-identical to cp::tessellate with the
 // default PatternOptions (rule (b) columns, T0 collapse) in both layouts: Layout::provoking (the default) is
-// cp::tessellate's provoking layout, Layout::shared is its provoking_layout = false (one vertex per distinct
-// position, the same order without the appended copies). Winding::cw reverses every triangle and keeps the
+// cp::tessellate's provoking layout, Layout::shared is its provoking_layout = false (one vertex per slot,
+// the same order without the appended copies: one per distinct position except where transitional points
+// coincide, docs/algorithm.md §2.11). Winding::cw reverses every triangle and keeps the
 // provoking vertex first: (a, b, c) becomes (a, c, b).
 //
 // Three entry points, each paying only for what it needs:
@@ -17,9 +18,9 @@
 //   ctess::rt::CpTriangle t = patch.triangle(n - 1);   // three vertex indices
 //   ctess::DomainPoint p = patch.vertex(t[0]);         // exact barycentric (u, v), units of 2^-24
 //
-// Which layout: provoking where flat shading or per-primitive data reads the first vertex of each triangle
-// (each triangle's first vertex is its own); shared for smooth shading, welding-free meshes and the smallest
-// vertex buffers (CpPatch(32, 32, 32): 561 vertices instead of 1,026).
+// Which layout (docs/algorithm.md §2.11): provoking where flat shading or per-primitive data reads the first
+// vertex of each triangle (each triangle's first vertex is its own); shared for smooth shading, welding-free
+// meshes and the smallest vertex buffers (CpPatch(32, 32, 32): 561 vertices instead of 1,026).
 //
 // Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value
 // (CpPatchSetup 264 bytes on LP64, CpPatch 800 with its two bucket tables). Construction and emit are
