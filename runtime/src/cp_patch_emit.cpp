@@ -124,14 +124,16 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         // Each lane is first, a or b plus a constant: masks, no trip through memory (a vector loaded right
         // after scalar stores to it would stall on store forwarding).
         const std::uint32_t cells = nb - 1;
-        std::uint32_t j = 0;
-        if (cells >= 4) { // the 24 lanes cost about 40 operations: only for a strip that uses them
+        if (cells != 0) {
             const u32x4 sf = u32x4{} + first, sa = u32x4{} + a, sb = u32x4{} + b;
             u32x4 v[6];
-            for (unsigned k = 0; k < 6; ++k)
+            for (unsigned k = 0; k < 3; ++k) { // cells 0 and 1; cells 2 and 3 are the same plus 2
                 v[k] = ((sf & load(lanes.f + 4 * k)) | (sa & load(lanes.a + 4 * k)) |
                         (sb & load(lanes.b + 4 * k))) +
                        load(lanes.add + 4 * k);
+                v[k + 3] = v[k] + 2;
+            }
+            std::uint32_t j = 0;
             for (; j + 4 <= cells; j += 4) {
                 for (unsigned k = 0; k < 6; ++k) {
                     store(o + 4 * k, v[k]);
@@ -139,14 +141,19 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
                 }
                 o += 24;
             }
-        }
-        for (; j < cells; ++j) {
-            o[0] = first + j, o[1 + swap] = b + j, o[2 - swap] = a + j + 1;
-            o[3] = b + j, o[4 + swap] = b + j + 1, o[5 - swap] = a + j + 1;
-            o += 6;
+            // The last 1-3 cells (6 lanes each) in whole vectors: up to 2 lanes past them, which the fan, the
+            // next strip or the zipper (at least 5 triangles) rewrite.
+            const std::uint32_t rem = cells - j;
+            if (rem != 0) {
+                store(o, v[0]);
+                store(o + 4, v[1]);
+                if (rem >= 2) store(o + 8, v[2]);
+                if (rem == 3) store(o + 12, v[3]), store(o + 16, v[4]);
+                o += 6 * rem;
+            }
         }
         const std::uint32_t tip = b + nb - 1;
-        for (j = nb - 1; j + 1 < na; ++j) {
+        for (std::uint32_t j = nb - 1; j + 1 < na; ++j) {
             o[0] = first + j, o[1 + swap] = tip, o[2 - swap] = a + j + 1;
             o += 3;
         }
