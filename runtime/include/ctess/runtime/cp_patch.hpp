@@ -243,8 +243,9 @@ struct CpBuckets {
 class CpPatch : public CpPatchSetup {
   public:
     CpPatch(const CpTableSet& tables, float f0, float f1, float f2, PatchOptions options = {}) noexcept
-        : CpPatch(tables, line_state(f0, tables.max_factor), line_state(f1, tables.max_factor),
-                  line_state(f2, tables.max_factor), options) {}
+        : CpPatchSetup(tables, f0, f1, f2, options) {
+        build_buckets();
+    }
     CpPatch(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
             PatchOptions options = {}) noexcept
         : CpPatchSetup(tables, s0, s1, s2, options) {
