@@ -65,22 +65,28 @@ bool CpPatchSetup::emit(std::span<DomainPoint> vertices, std::span<std::uint32_t
 }
 
 void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) const noexcept {
-    const std::uint16_t* c = c_;
+    // The members as locals: the output is uint32_t too, so the compiler would reload them after every store.
+    const std::uint16_t* const c = c_;
+    const std::uint32_t n0 = n0_, n1 = n1_, n2 = n2_, head = head_, clamp = clamp_, e1_offset = e1_offset_;
+    auto start = [c, head](std::uint32_t i) { // col_start
+        const std::uint32_t k = i < head ? i : head;
+        return c[k] + (i - k);
+    };
     // Column 0 as (0, v) pairs: column i is (u_i, min(v_j, K - u_i)), two rows a vector.
     alignas(16) std::uint32_t column0[2 * cp::max_segments + 4];
     column0[0] = 0, column0[1] = 0;
-    for (std::uint32_t j = 1; j < n2_; ++j) {
+    for (std::uint32_t j = 1; j < n2; ++j) {
         column0[2 * j] = 0;
         column0[2 * j + 1] = interior_point(e_[2], e_[2].points[j - 1]);
     }
-    std::memcpy(out_v, column0, sizeof(DomainPoint) * n2_);
+    std::memcpy(out_v, column0, sizeof(DomainPoint) * n2);
     const bool copies = copy_mask_ != 0;
     DomainPoint* copy = out_v + unique_;
-    for (std::uint32_t i = 1; i < n0_; ++i) {
+    for (std::uint32_t i = 1; i < n0; ++i) {
         const std::uint32_t u = interior_point(e_[0], e_[0].points[i - 1]);
-        const std::uint32_t top = clamp_ > u ? clamp_ - u : 0u;
-        const std::uint32_t rows = col_rows(i);
-        DomainPoint* col = out_v + col_start(i);
+        const std::uint32_t top = clamp > u ? clamp - u : 0u;
+        const std::uint32_t first_row = start(i), rows = start(i + 1) - first_row;
+        DomainPoint* col = out_v + first_row;
         // v grows with the row, so the rows above the clamp line K - u are a suffix: usually the top row or
         // none. Below it a pair of rows is column 0's pair with u put in; the rest take the clamp.
         std::uint32_t free_rows = rows;
@@ -91,7 +97,7 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
             return DomainPoint{u, v < top ? v : top};
         };
         std::uint32_t j = 0;
-        if (copies && i < head_) { // rows 0..rows-2 provoke a triangle of strip i - 1 too: copies
+        if (copies && i < head) { // rows 0..rows-2 provoke a triangle of strip i - 1 too: copies
             const std::uint32_t pairs_end = free_rows < rows - 1 ? free_rows : rows - 1;
             for (; j + 2 <= pairs_end; j += 2) {
                 const u32x4 w = load(column0 + 2 * j) | lane_u;
@@ -109,7 +115,7 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
             for (; j < rows; ++j) col[j] = one(j);
         }
     }
-    for (std::uint32_t b = 0; b <= n1_; ++b) out_v[e1_offset_ + b] = e1_point(point(e_[1], b));
+    for (std::uint32_t b = 0; b <= n1; ++b) out_v[e1_offset + b] = e1_point(point(e_[1], b));
 
     // Strips: cells (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the fan (A_j, B_{nb-1}, A_{j+1}),
     // A_j's copy first in columns i >= 1 (provoking layout).
@@ -117,7 +123,7 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
     const CellLanes& lanes = cell_lanes[swap];
     std::uint32_t* o = out_i;
     std::uint32_t next_copy = unique_;
-    for (std::uint32_t i = 0; i < head_; ++i) {
+    for (std::uint32_t i = 0; i < head; ++i) {
         const std::uint32_t a = c[i], b = c[i + 1];
         const std::uint32_t na = b - a, nb = c[i + 2] - b;
         const std::uint32_t first = i >= 1 && copies ? next_copy : a;
@@ -161,13 +167,14 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
     }
     // Zipper: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point b; a gap bit says which side steps,
     // chosen by selects (the bits are a coin toss to a branch predictor).
-    std::uint32_t la = col_start(n0_) - 1, a = 0, rb = e1_offset_;
-    for (std::uint32_t q = 0; q < zipper_; ++q) {
-        const std::uint32_t w = gap_[q / cp::tables::gap_bits_per_word];
+    const std::uint32_t* const gap = gap_;
+    std::uint32_t la = start(n0) - 1, a = 0, rb = e1_offset;
+    for (std::uint32_t q = 0, zipper = zipper_; q < zipper; ++q) {
+        const std::uint32_t w = gap[q / cp::tables::gap_bits_per_word];
         const std::uint32_t step = (w >> (q % cp::tables::gap_bits_per_word)) & 1u;
         const std::uint32_t on_l = 0u - step; // masks: GCC turns the ternaries into a branch
         a += step;
-        const std::uint32_t next = col_start(n0_ - a) - 1;
+        const std::uint32_t next = start(n0 - a) - 1;
         o[0] = (next & on_l) | ((rb + 1) & ~on_l), o[1 + swap] = la, o[2 - swap] = rb;
         la = (next & on_l) | (la & ~on_l);
         rb += step ^ 1u;
