@@ -6,7 +6,7 @@
 namespace ctess::rt::probe {
 
 Counts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept {
-    return CpPatch(tables, f0, f1, f2).counts();
+    return cp_counts(tables, f0, f1, f2);
 }
 
 DomainPoint vertex(const CpTableSet& tables, float f0, float f1, float f2, std::uint32_t i) noexcept {
