@@ -3,15 +3,16 @@
 // 65536 and a seeded random one per edge, in both layouts and both windings: cp_counts, CpPatch's counts,
 // every vertex(i), every triangle(p), and the bulk emit of CpPatch and of CpPatchSetup equal cp::tessellate's
 // output (provoking_layout as the layout; clockwise = each reference triangle (a, b, c) as (a, c, b)),
-// element by element. The closed-form line state equals cp::line_state_fixed for every 16.16 factor.
+// element by element, and CpPatchSetup::emit into spans of exactly its counts writes nothing past them.
+// The closed-form line state equals cp::line_state_fixed for every 16.16 factor.
 #include <ctess/cp_pattern.hpp>
 #include <ctess/runtime/cp_line_state.hpp>
 #include <ctess/runtime/cp_patch.hpp>
 
 #include <algorithm>
 #include <cstdint>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -19,10 +20,10 @@
 #include "support/cp_harness.hpp"
 
 using ctess::DomainPoint;
-using ctess::cp::LineState;
 using ctess::Layout;
 using ctess::PatchOptions;
 using ctess::Winding;
+using ctess::cp::LineState;
 using ctess::rt::CpPatch;
 using ctess::rt::CpPatchSetup;
 using ctess::rt::CpTableSet;
@@ -31,9 +32,9 @@ using ctess::test::cat;
 namespace {
 
 const std::vector<PatchOptions> all_options = {{Layout::provoking, Winding::ccw},
-                                        {Layout::provoking, Winding::cw},
-                                        {Layout::shared, Winding::ccw},
-                                        {Layout::shared, Winding::cw}};
+                                               {Layout::provoking, Winding::cw},
+                                               {Layout::shared, Winding::ccw},
+                                               {Layout::shared, Winding::cw}};
 
 struct Comparer {
     const CpTableSet& tables;
@@ -44,15 +45,16 @@ struct Comparer {
     ctess::test::FailureLog log;
     std::uint64_t triples = 0, vertices = 0, triangles = 0;
     ctess::cp::PatternCounts last{};
+    static constexpr std::size_t guard = 8;
 
     Comparer(const CpTableSet& t, PatchOptions o) : tables(t), patch_options(o) {
         options.max_factor = t.max_factor;
         options.provoking_layout = o.layout == Layout::provoking;
         const auto cap = ctess::cp::max_pattern_counts(t.max_factor);
         ref_v.resize(cap.vertices);
-        rt_v.resize(cap.vertices);
+        rt_v.resize(cap.vertices + guard);
         ref_i.resize(3 * std::size_t{cap.triangles});
-        rt_i.resize(3 * std::size_t{cap.triangles});
+        rt_i.resize(3 * std::size_t{cap.triangles} + guard);
     }
 
     void check(LineState s0, LineState s1, LineState s2) {
@@ -61,9 +63,9 @@ struct Comparer {
         if (patch_options.winding == Winding::cw)
             for (std::uint32_t t = 0; t < ref.triangles; ++t) std::swap(ref_i[3 * t + 1], ref_i[3 * t + 2]);
         const CpPatch patch(tables, s0, s1, s2, patch_options);
-        const std::string where = cat(ctess::test::describe(s0, s1, s2), " layout ",
-                                      static_cast<int>(patch_options.layout), " winding ",
-                                      static_cast<int>(patch_options.winding));
+        const std::string where =
+            cat(ctess::test::describe(s0, s1, s2), " layout ", static_cast<int>(patch_options.layout),
+                " winding ", static_cast<int>(patch_options.winding));
         const ctess::Counts counts = ctess::rt::cp_counts(tables, s0, s1, s2, patch_options);
         if (patch.vertex_count() != ref.vertices || patch.triangle_count() != ref.triangles ||
             !(counts == patch.counts())) {
@@ -95,13 +97,22 @@ struct Comparer {
             return;
         }
         check_emitted(where);
-        std::fill(rt_v.begin(), rt_v.end(), DomainPoint{~0u, ~0u});
-        std::fill(rt_i.begin(), rt_i.end(), ~0u);
-        if (!CpPatchSetup(tables, s0, s1, s2, patch_options).emit(rt_v, rt_i)) {
-            log.add(cat(where, ": CpPatchSetup::emit refused buffers of the maximum size"));
+        // Spans of exactly the counts, with guard elements after them that emit must not touch.
+        const std::size_t nv = ref.vertices, ni = 3 * std::size_t{ref.triangles};
+        std::fill_n(rt_v.begin(), nv + guard, DomainPoint{~0u, ~0u});
+        std::fill_n(rt_i.begin(), ni + guard, ~0u);
+        if (!CpPatchSetup(tables, s0, s1, s2, patch_options)
+                 .emit(std::span(rt_v.data(), nv), std::span(rt_i.data(), ni))) {
+            log.add(cat(where, ": CpPatchSetup::emit refused spans of exactly its counts"));
             return;
         }
         check_emitted(cat(where, " (CpPatchSetup)"));
+        for (std::size_t k = 0; k < guard; ++k) {
+            if (!(rt_v[nv + k] == DomainPoint{~0u, ~0u}) || rt_i[ni + k] != ~0u) {
+                log.add(cat(where, ": CpPatchSetup::emit wrote past its spans"));
+                return;
+            }
+        }
     }
 
     void check_emitted(const std::string& where) {
