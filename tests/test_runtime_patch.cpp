@@ -3,7 +3,8 @@
 // 65536 and a seeded random one per edge, in both layouts and both windings: cp_counts, CpPatch's counts,
 // every vertex(i), every triangle(p), and the bulk emit of CpPatch and of CpPatchSetup equal cp::tessellate's
 // output (provoking_layout as the layout; clockwise = each reference triangle (a, b, c) as (a, c, b)),
-// element by element, and CpPatchSetup::emit into spans of exactly its counts writes nothing past them.
+// element by element, also the portable build of the fast path where emit() takes the AVX2 one; emit into
+// spans of exactly the counts writes nothing past them.
 // The closed-form line state equals cp::line_state_fixed for every 16.16 factor.
 #include <ctess/cp_pattern.hpp>
 #include <ctess/runtime/cp_line_state.hpp>
@@ -35,6 +36,12 @@ const std::vector<PatchOptions> all_options = {{Layout::provoking, Winding::ccw}
                                                {Layout::provoking, Winding::cw},
                                                {Layout::shared, Winding::ccw},
                                                {Layout::shared, Winding::cw}};
+
+// CpPatchSetup's portable fast path, reached through its protected member.
+struct BaselineEmit : CpPatchSetup {
+    using CpPatchSetup::CpPatchSetup;
+    using CpPatchSetup::emit_baseline;
+};
 
 struct Comparer {
     const CpTableSet& tables;
@@ -97,19 +104,32 @@ struct Comparer {
             return;
         }
         check_emitted(where);
-        // Spans of exactly the counts, with guard elements after them that emit must not touch.
-        const std::size_t nv = ref.vertices, ni = 3 * std::size_t{ref.triangles};
+        check_exact_spans(cat(where, " (CpPatchSetup)"),
+                          [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
+                              return CpPatchSetup(tables, s0, s1, s2, patch_options).emit(v, i);
+                          });
+        // The portable build of the fast path, which emit() skips on a machine with AVX2.
+        check_exact_spans(
+            cat(where, " (baseline)"), [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
+                BaselineEmit(tables, s0, s1, s2, patch_options).emit_baseline(v.data(), i.data());
+                return true;
+            });
+    }
+
+    // Spans of exactly the counts, with guard elements after them that emit must not touch.
+    template <class Emit>
+    void check_exact_spans(const std::string& where, Emit&& emit) {
+        const std::size_t nv = last.vertices, ni = 3 * std::size_t{last.triangles};
         std::fill_n(rt_v.begin(), nv + guard, DomainPoint{~0u, ~0u});
         std::fill_n(rt_i.begin(), ni + guard, ~0u);
-        if (!CpPatchSetup(tables, s0, s1, s2, patch_options)
-                 .emit(std::span(rt_v.data(), nv), std::span(rt_i.data(), ni))) {
-            log.add(cat(where, ": CpPatchSetup::emit refused spans of exactly its counts"));
+        if (!emit(std::span(rt_v.data(), nv), std::span(rt_i.data(), ni))) {
+            log.add(cat(where, ": emit refused spans of exactly its counts"));
             return;
         }
-        check_emitted(cat(where, " (CpPatchSetup)"));
+        check_emitted(where);
         for (std::size_t k = 0; k < guard; ++k) {
             if (!(rt_v[nv + k] == DomainPoint{~0u, ~0u}) || rt_i[ni + k] != ~0u) {
-                log.add(cat(where, ": CpPatchSetup::emit wrote past its spans"));
+                log.add(cat(where, ": emit wrote past its spans"));
                 return;
             }
         }

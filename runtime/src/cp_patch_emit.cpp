@@ -8,25 +8,44 @@
 
 #include <ctess/runtime/cp_patch.hpp>
 
+#define CTESS_ALWAYS_INLINE [[gnu::always_inline]] inline
+
+// x86-64 with GCC or Clang: an AVX2 build of the fast path (32-byte stores, half as many), chosen at run
+// time.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define CTESS_EMIT_AVX2 1
+#else
+#define CTESS_EMIT_AVX2 0
+#endif
+
 namespace ctess::rt {
 
 namespace {
 
 using u32x4 = std::uint32_t __attribute__((vector_size(16)));
 
-inline void store(void* out, u32x4 v) noexcept {
+// By reference and always inline: a 32-byte vector passed by value outside an AVX function would change the
+// ABI (-Wpsabi).
+template <class V>
+CTESS_ALWAYS_INLINE void store(void* out, const V& v) noexcept {
     std::memcpy(out, &v, sizeof v);
 }
 
-inline u32x4 load(const std::uint32_t* in) noexcept {
-    u32x4 v;
+// Out parameters, not return values, for the same reason.
+template <class V>
+CTESS_ALWAYS_INLINE void load(V& v, const std::uint32_t* in) noexcept {
     std::memcpy(&v, in, sizeof v);
-    return v;
+}
+
+template <class V>
+CTESS_ALWAYS_INLINE void even_lanes(V& m) noexcept {
+    m = V{};
+    for (unsigned k = 0; k < sizeof(V) / sizeof(std::uint32_t); k += 2) m[k] = ~0u;
 }
 
 // Four strip cells j..j+3 as 24 lanes: cell c is (A_{j+c}, B_{j+c}, A_{j+c+1}), (B_{j+c}, B_{j+c+1},
 // A_{j+c+1}), wound; lane k is (first, a or b by the masks) + add, with first = A_0 or its copy, a = C_i,
-// b = C_{i+1}. (32-byte vector types are no faster: GCC lowers them badly without AVX.)
+// b = C_{i+1}.
 struct CellLanes {
     std::uint32_t f[24], a[24], b[24], add[24];
 };
@@ -55,19 +74,44 @@ constexpr CellLanes cell_lanes[2] = {make_cell_lanes(false), make_cell_lanes(tru
 
 } // namespace
 
+// The fast path of a patch without a T0 edge, for a vector of W lanes; a friend of CpPatchSetup.
+struct CpPatchEmitter {
+    template <class V>
+    static void plain(const CpPatchSetup& p, DomainPoint* out_v, std::uint32_t* out_i) noexcept;
+    static void plain_baseline(const CpPatchSetup& p, DomainPoint* out_v, std::uint32_t* out_i) noexcept;
+#if CTESS_EMIT_AVX2
+    __attribute__((target("avx2"))) static void plain_avx2(const CpPatchSetup& p, DomainPoint* out_v,
+                                                           std::uint32_t* out_i) noexcept;
+#endif
+};
+
 bool CpPatchSetup::emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
     if (vertices.size() < vertices_ || indices.size() / 3 < triangles_) return false;
-    if (plain_)
-        emit_type2_plain(vertices.data(), indices.data());
+    if (!plain_) emit_collapsed(vertices.data(), indices.data());
+#if CTESS_EMIT_AVX2
+    else if (__builtin_cpu_supports("avx2"))
+        CpPatchEmitter::plain_avx2(*this, vertices.data(), indices.data());
+#endif
     else
-        emit_collapsed(vertices.data(), indices.data());
+        CpPatchEmitter::plain_baseline(*this, vertices.data(), indices.data());
     return true;
 }
 
-void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) const noexcept {
+void CpPatchSetup::emit_baseline(DomainPoint* vertices, std::uint32_t* indices) const noexcept {
+    if (plain_)
+        CpPatchEmitter::plain_baseline(*this, vertices, indices);
+    else
+        emit_collapsed(vertices, indices);
+}
+
+template <class V>
+CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoint* out_v,
+                                               std::uint32_t* out_i) noexcept {
+    constexpr unsigned W = sizeof(V) / sizeof(std::uint32_t); // lanes: 4 (SSE2, NEON) or 8 (AVX2)
     // The members as locals: the output is uint32_t too, so the compiler would reload them after every store.
-    const std::uint16_t* const c = c_;
-    const std::uint32_t n0 = n0_, n1 = n1_, n2 = n2_, head = head_, clamp = clamp_, e1_offset = e1_offset_;
+    const std::uint16_t* const c = p.c_;
+    const std::uint32_t n0 = p.n0_, n1 = p.n1_, n2 = p.n2_, head = p.head_, clamp = p.clamp_,
+                        e1_offset = p.e1_offset_;
     auto start = [c, head](std::uint32_t i) { // col_start
         const std::uint32_t k = i < head ? i : head;
         return c[k] + (i - k);
@@ -77,13 +121,13 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
     column0[0] = 0, column0[1] = 0;
     for (std::uint32_t j = 1; j < n2; ++j) {
         column0[2 * j] = 0;
-        column0[2 * j + 1] = interior_point(e_[2], e_[2].points[j - 1]);
+        column0[2 * j + 1] = CpPatchSetup::interior_point(p.e_[2], p.e_[2].points[j - 1]);
     }
     std::memcpy(out_v, column0, sizeof(DomainPoint) * n2);
-    const bool copies = copy_mask_ != 0;
-    DomainPoint* copy = out_v + unique_;
+    const bool copies = p.copy_mask_ != 0;
+    DomainPoint* copy = out_v + p.unique_;
     for (std::uint32_t i = 1; i < n0; ++i) {
-        const std::uint32_t u = interior_point(e_[0], e_[0].points[i - 1]);
+        const std::uint32_t u = CpPatchSetup::interior_point(p.e_[0], p.e_[0].points[i - 1]);
         const std::uint32_t top = clamp > u ? clamp - u : 0u;
         const std::uint32_t first_row = start(i), rows = start(i + 1) - first_row;
         DomainPoint* col = out_v + first_row;
@@ -91,7 +135,9 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         // none. Below it a pair of rows is column 0's pair with u put in; the rest take the clamp.
         std::uint32_t free_rows = rows;
         while (free_rows > 0 && column0[2 * free_rows - 1] > top) --free_rows;
-        const u32x4 lane_u = {u, 0, u, 0};
+        V lane_u;
+        even_lanes(lane_u);
+        lane_u &= V{} + u;
         auto one = [&](std::uint32_t j) {
             const std::uint32_t v = column0[2 * j + 1];
             return DomainPoint{u, v < top ? v : top};
@@ -99,30 +145,37 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         std::uint32_t j = 0;
         if (copies && i < head) { // rows 0..rows-2 provoke a triangle of strip i - 1 too: copies
             const std::uint32_t pairs_end = free_rows < rows - 1 ? free_rows : rows - 1;
-            for (; j + 2 <= pairs_end; j += 2) {
-                const u32x4 w = load(column0 + 2 * j) | lane_u;
+            for (; j + W / 2 <= pairs_end; j += W / 2) {
+                V w;
+                load(w, column0 + 2 * j);
+                w |= lane_u;
                 store(col + j, w);
                 store(copy + j, w);
             }
             for (; j < rows; ++j) {
-                const DomainPoint p = one(j); // not re-read from col: that would stall on store forwarding
-                col[j] = p;
-                if (j + 1 < rows) copy[j] = p;
+                const DomainPoint q = one(j); // not re-read from col: that would stall on store forwarding
+                col[j] = q;
+                if (j + 1 < rows) copy[j] = q;
             }
             copy += rows - 1;
         } else {
-            for (; j + 2 <= free_rows; j += 2) store(col + j, load(column0 + 2 * j) | lane_u);
+            for (; j + W / 2 <= free_rows; j += W / 2) {
+                V w;
+                load(w, column0 + 2 * j);
+                store(col + j, w | lane_u);
+            }
             for (; j < rows; ++j) col[j] = one(j);
         }
     }
-    for (std::uint32_t b = 0; b <= n1; ++b) out_v[e1_offset + b] = e1_point(point(e_[1], b));
+    for (std::uint32_t b = 0; b <= n1; ++b)
+        out_v[e1_offset + b] = CpPatchSetup::e1_point(CpPatchSetup::point(p.e_[1], b));
 
     // Strips: cells (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the fan (A_j, B_{nb-1}, A_{j+1}),
     // A_j's copy first in columns i >= 1 (provoking layout).
-    const std::uint32_t swap = cw_mask_ & 1u; // lane of b in (a, b, c): 1, or 2 when clockwise
+    const std::uint32_t swap = p.cw_mask_ & 1u; // lane of b in (a, b, c): 1, or 2 when clockwise
     const CellLanes& lanes = cell_lanes[swap];
     std::uint32_t* o = out_i;
-    std::uint32_t next_copy = unique_;
+    std::uint32_t next_copy = p.unique_;
     for (std::uint32_t i = 0; i < head; ++i) {
         const std::uint32_t a = c[i], b = c[i + 1];
         const std::uint32_t na = b - a, nb = c[i + 2] - b;
@@ -131,32 +184,36 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
         // after scalar stores to it would stall on store forwarding).
         const std::uint32_t cells = nb - 1;
         if (cells != 0) {
-            const u32x4 sf = u32x4{} + first, sa = u32x4{} + a, sb = u32x4{} + b;
-            u32x4 v[6];
-            for (unsigned k = 0; k < 3; ++k) { // cells 0 and 1; cells 2 and 3 are the same plus 2
-                v[k] = ((sf & load(lanes.f + 4 * k)) | (sa & load(lanes.a + 4 * k)) |
-                        (sb & load(lanes.b + 4 * k))) +
-                       load(lanes.add + 4 * k);
-                v[k + 3] = v[k] + 2;
+            // 24 lanes (four cells) in 24 / W vectors; with W = 4 the last three are the first three plus 2.
+            constexpr unsigned count = 24 / W, from_table = 12 % W == 0 ? 12 / W : count;
+            const V sf = V{} + first, sa = V{} + a, sb = V{} + b;
+            V v[count];
+#pragma GCC unroll 8
+            for (unsigned k = 0; k < from_table; ++k) {
+                V mask_f, mask_a, mask_b, add;
+                load(mask_f, lanes.f + W * k), load(mask_a, lanes.a + W * k), load(mask_b, lanes.b + W * k);
+                load(add, lanes.add + W * k);
+                v[k] = ((sf & mask_f) | (sa & mask_a) | (sb & mask_b)) + add;
             }
+#pragma GCC unroll 8
+            for (unsigned k = from_table; k < count; ++k) v[k] = v[k - from_table] + 2;
             std::uint32_t j = 0;
             for (; j + 4 <= cells; j += 4) {
-                for (unsigned k = 0; k < 6; ++k) {
-                    store(o + 4 * k, v[k]);
+#pragma GCC unroll 8
+                for (unsigned k = 0; k < count; ++k) {
+                    store(o + W * k, v[k]);
                     v[k] += 4;
                 }
                 o += 24;
             }
-            // The last 1-3 cells (6 lanes each) in whole vectors: up to 2 lanes past them, which the fan, the
-            // next strip or the zipper (at least 5 triangles) rewrite.
+            // The last 1-3 cells (6 lanes each) in whole vectors: up to W - 2 lanes past them, which the fan,
+            // the next strip or the zipper (at least 5 triangles, 15 indices) rewrite.
             const std::uint32_t rem = cells - j;
-            if (rem != 0) {
-                store(o, v[0]);
-                store(o + 4, v[1]);
-                if (rem >= 2) store(o + 8, v[2]);
-                if (rem == 3) store(o + 12, v[3]), store(o + 16, v[4]);
-                o += 6 * rem;
-            }
+            const unsigned stores = (6 * rem + W - 1) / W;
+#pragma GCC unroll 8
+            for (unsigned k = 0; k < count; ++k) // a fixed trip count keeps v in registers
+                if (k < stores) store(o + W * k, v[k]);
+            o += 6 * rem;
         }
         const std::uint32_t tip = b + nb - 1;
         for (std::uint32_t j = nb - 1; j + 1 < na; ++j) {
@@ -167,9 +224,9 @@ void CpPatchSetup::emit_type2_plain(DomainPoint* out_v, std::uint32_t* out_i) co
     }
     // Zipper: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point b; a gap bit says which side steps,
     // chosen by selects (the bits are a coin toss to a branch predictor).
-    const std::uint32_t* const gap = gap_;
+    const std::uint32_t* const gap = p.gap_;
     std::uint32_t la = start(n0) - 1, a = 0, rb = e1_offset;
-    for (std::uint32_t q = 0, zipper = zipper_; q < zipper; ++q) {
+    for (std::uint32_t q = 0, zipper = p.zipper_; q < zipper; ++q) {
         const std::uint32_t w = gap[q / cp::tables::gap_bits_per_word];
         const std::uint32_t step = (w >> (q % cp::tables::gap_bits_per_word)) & 1u;
         const std::uint32_t on_l = 0u - step; // masks: GCC turns the ternaries into a branch
@@ -221,5 +278,17 @@ void CpPatchSetup::emit_collapsed(DomainPoint* out_v, std::uint32_t* out_i) cons
     for (std::uint32_t q = 0; q < zipper_; ++q)
         if (!dropped(strips_ + q)) put(collapsed_zipper_triangle(q));
 }
+
+void CpPatchEmitter::plain_baseline(const CpPatchSetup& p, DomainPoint* out_v,
+                                    std::uint32_t* out_i) noexcept {
+    plain<u32x4>(p, out_v, out_i);
+}
+
+#if CTESS_EMIT_AVX2
+void CpPatchEmitter::plain_avx2(const CpPatchSetup& p, DomainPoint* out_v, std::uint32_t* out_i) noexcept {
+    using u32x8 = std::uint32_t __attribute__((vector_size(32)));
+    plain<u32x8>(p, out_v, out_i);
+}
+#endif
 
 } // namespace ctess::rt

@@ -201,8 +201,10 @@ class CpPatchSetup {
         const std::uint32_t odd = 0u - (m & 1u); // all ones: odd cell, whose first vertex is B_j
         return wind(first + ((b + s - 1 - first) & odd), b + s, a + j + 1);
     }
-    void emit_type2_plain(DomainPoint* vertices, std::uint32_t* indices) const noexcept;
+    friend struct CpPatchEmitter; // the fast path of emit (runtime/src/cp_patch_emit.cpp)
     void emit_collapsed(DomainPoint* vertices, std::uint32_t* indices) const noexcept;
+    // emit() without the run-time choice of an AVX2 build on x86-64 (for the tests); spans unchecked.
+    void emit_baseline(DomainPoint* vertices, std::uint32_t* indices) const noexcept;
     void add_triangle_skip(std::uint32_t begin, std::uint32_t end) noexcept {
         if (end > begin) tri_skip_[tri_skips_++] = {begin, end - begin};
     }
