@@ -89,7 +89,9 @@ bool CpPatchSetup::emit(std::span<DomainPoint> vertices, std::span<std::uint32_t
     if (vertices.size() < vertices_ || indices.size() / 3 < triangles_) return false;
     if (!plain_) emit_collapsed(vertices.data(), indices.data());
 #if CTESS_EMIT_AVX2
-    else if (__builtin_cpu_supports("avx2"))
+    // __builtin_cpu_init is a no-op once done; it makes the check valid even before libgcc's constructor ran
+    // (an emit() from another static constructor).
+    else if ((__builtin_cpu_init(), __builtin_cpu_supports("avx2")))
         CpPatchEmitter::plain_avx2(*this, vertices.data(), indices.data());
 #endif
     else
