@@ -1,9 +1,11 @@
 // CpPatchSetup::emit: the whole pattern in emission order, without the random-access lookups
-// (docs/algorithm.md §2). A patch without a T0 edge takes the fast path: the edge points once, each column
-// as a run of (u, min(v, K - u)) pairs written two at a time with its provoking copies, each strip's cells
-// as a template of two cells that grows by 2 per step (three 16-byte stores per four triangles), and the
-// zipper without a branch per triangle. The vector types are GCC/Clang vector extensions: SSE2 on x86-64,
-// NEON on AArch64, plain scalar code on a Cortex-M.
+// (docs/algorithm.md §2). A patch without a T0 edge takes the fast path: the edge points once; each column
+// as column 0's (0, v) pairs with u put in, a vector of rows at a time, written to the column and to its
+// provoking copies; each strip's cells four at a time (24 indices, lanes that grow by 4 per step); the
+// zipper without a branch per triangle. The vector types are GCC/Clang vector extensions, 16 bytes (SSE2 on
+// x86-64, NEON on AArch64, plain scalar code on a Cortex-M), and on x86-64 a second build of the same body
+// with 32-byte vectors for AVX2, chosen at run time. Patches with a T0 edge take the raw emission order and
+// skip what the collapse drops.
 #include <cstring>
 
 #include <ctess/runtime/cp_patch.hpp>

@@ -9,7 +9,8 @@
 // Three entry points, each paying only for what it needs:
 // * cp_counts(): counts only (what a GPU's first pass and an allocator need; about 26 ns);
 // * CpPatchSetup: counts and emit(), which writes the whole patch in one pass per part (columns, strips,
-//   zipper) without any lookup structure;
+//   zipper) without any lookup structure, with 16-byte vectors (and on x86-64 an AVX2 build, chosen at run
+//   time);
 // * CpPatch: a CpPatchSetup plus the strip and column buckets that make vertex(i) and triangle(p) O(1)
 //   (O(h) more setup): build a patch once, query it many times. Its emit() is CpPatchSetup's.
 //
