@@ -156,6 +156,16 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
                 store(col + j, w);
                 store(copy + j, w);
             }
+            if constexpr (W > 4) { // two more rows in a 16-byte vector
+                if (j + 2 <= pairs_end) {
+                    u32x4 w;
+                    load(w, column0 + 2 * j);
+                    w |= u32x4{u, 0, u, 0};
+                    store(col + j, w);
+                    store(copy + j, w);
+                    j += 2;
+                }
+            }
             for (; j < rows; ++j) {
                 const DomainPoint q = one(j); // not re-read from col: that would stall on store forwarding
                 col[j] = q;
@@ -167,6 +177,14 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
                 V w;
                 load(w, column0 + 2 * j);
                 store(col + j, w | lane_u);
+            }
+            if constexpr (W > 4) {
+                if (j + 2 <= free_rows) {
+                    u32x4 w;
+                    load(w, column0 + 2 * j);
+                    store(col + j, w | u32x4{u, 0, u, 0});
+                    j += 2;
+                }
             }
             for (; j < rows; ++j) col[j] = one(j);
         }
