@@ -1,12 +1,14 @@
-// The table-driven CP runtime: counts only (cp_counts), bulk emission (CpPatchSetup + emit, both layouts;
-// and CpPatch + emit, which also builds the random-access buckets), and random access to triangle(p) and
-// vertex(i) on a CpPatch, as independent calls (throughput) and as a dependent chain (latency: each call's
-// index waits for the previous call's result).
+// The table-driven CP runtime: counts only (cp_counts), bulk emission (CpPatchSetup + emit, both layouts; the
+// portable build of the fast path, which emit() skips where it has AVX2; and CpPatch + emit, which also builds
+// the random-access buckets), and random access to triangle(p) and vertex(i) on a CpPatch, as independent
+// calls (throughput) and as a dependent chain (latency: each call's index waits for the previous call's
+// result).
 #include <ctess/config.hpp>
 #include <ctess/domain_point.hpp>
 #include <ctess/runtime/cp_patch.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -40,6 +42,16 @@ void cp_emit(benchmark::State& state) {
     bench::count_triangles(state, probe.triangle_count());
     state.counters["verts"] = static_cast<double>(probe.vertex_count());
 }
+
+// The portable (16-byte vector) build of emit's fast path, which emit() skips on a machine with AVX2.
+struct PortableEmit : ctess::rt::CpPatchSetup {
+    using CpPatchSetup::CpPatchSetup;
+    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+        if (vertices.size() < vertex_count() || indices.size() / 3 < triangle_count()) return false;
+        emit_baseline(vertices.data(), indices.data());
+        return true;
+    }
+};
 
 // Counts only, per iteration: a GPU's first pass or an allocator. The factors change every call (the
 // lerp moves), so nothing is hoisted out of the loop.
@@ -95,6 +107,7 @@ using Setup = ctess::rt::CpPatchSetup;
 BENCHMARK(cp_emit<Setup>)->Name("cp_runtime/emit")->Apply(bench::bulk_factor_sets);
 BENCHMARK(cp_emit<Setup, ctess::Layout::shared>)->Name("cp_runtime/emit_shared")->Apply(bench::bulk_factor_sets);
 BENCHMARK(cp_emit<Current>)->Name("cp_runtime/patch_emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_emit<PortableEmit>)->Name("cp_runtime/emit_portable")->Apply(bench::bulk_factor_sets);
 BENCHMARK(cp_counts)->Name("cp_runtime/counts")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_triangle<Current, false>)->Name("cp_runtime/triangle")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_triangle<Current, true>)->Name("cp_runtime/triangle_chain")->Apply(bench::random_factor_sets);
