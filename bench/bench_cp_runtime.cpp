@@ -1,11 +1,14 @@
-// The table-driven CP runtime (ctess::rt::CpPatch): bulk emission, and random access to triangle(p) and
-// vertex(i), as independent calls (throughput) and as a dependent chain (latency: each call's index waits
-// for the previous call's result).
+// The table-driven CP runtime: counts only (cp_counts), bulk emission (CpPatchSetup + emit, both layouts; the
+// portable build of the fast path, which emit() skips where it has AVX2; and CpPatch + emit, which also builds
+// the random-access buckets), and random access to triangle(p) and vertex(i) on a CpPatch, as independent
+// calls (throughput) and as a dependent chain (latency: each call's index waits for the previous call's
+// result).
 #include <ctess/config.hpp>
 #include <ctess/domain_point.hpp>
 #include <ctess/runtime/cp_patch.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -22,19 +25,46 @@ const ctess::rt::CpTableSet& tables() {
 }
 
 // Construction plus emit, per iteration: what a renderer pays per patch.
-template <class Patch>
+template <class Patch, ctess::Layout layout = ctess::Layout::provoking>
 void cp_emit(benchmark::State& state) {
-    const Patch probe(tables(), bench::factor(state, 0), bench::factor(state, 1), bench::factor(state, 2));
+    const ctess::PatchOptions options{layout, ctess::Winding::ccw};
+    const Patch probe(tables(), bench::factor(state, 0), bench::factor(state, 1), bench::factor(state, 2),
+                      options);
     std::vector<DomainPoint> vertices(probe.vertex_count());
     std::vector<std::uint32_t> indices(3 * std::size_t{probe.triangle_count()});
     for (auto _ : state) {
         float f0 = bench::factor(state, 0), f1 = bench::factor(state, 1), f2 = bench::factor(state, 2);
         benchmark::DoNotOptimize(f0); // keeps the construction inside the loop
-        const Patch patch(tables(), f0, f1, f2);
+        const Patch patch(tables(), f0, f1, f2, options);
         benchmark::DoNotOptimize(patch.emit(vertices, indices));
         benchmark::ClobberMemory();
     }
     bench::count_triangles(state, probe.triangle_count());
+    state.counters["verts"] = static_cast<double>(probe.vertex_count());
+}
+
+// The portable (16-byte vector) build of emit's fast path, which emit() skips on a machine with AVX2.
+struct PortableEmit : ctess::rt::CpPatchSetup {
+    using CpPatchSetup::CpPatchSetup;
+    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+        if (vertices.size() < vertex_count() || indices.size() / 3 < triangle_count()) return false;
+        emit_baseline(vertices.data(), indices.data());
+        return true;
+    }
+};
+
+// Counts only, per iteration: a GPU's first pass or an allocator. The factors change every call (the
+// lerp moves), so nothing is hoisted out of the loop.
+void cp_counts(benchmark::State& state) {
+    const float f[3] = {bench::factor(state, 0), bench::factor(state, 1), bench::factor(state, 2)};
+    std::uint32_t k = 0, sum = 0;
+    for (auto _ : state) {
+        const float nudge = static_cast<float>(k++ & 15u) * (1.0f / 64.0f);
+        const ctess::Counts n = ctess::rt::cp_counts(tables(), f[0] - nudge, f[1] - nudge, f[2] - nudge);
+        sum += n.vertices + n.triangles;
+    }
+    benchmark::DoNotOptimize(sum);
+    bench::count_calls(state);
 }
 
 // Random triangle(p) on one patch: independent calls (chain = false) or a dependent chain.
@@ -70,10 +100,15 @@ void cp_vertex(benchmark::State& state) {
 }
 
 using Current = ctess::rt::CpPatch;
+using Setup = ctess::rt::CpPatchSetup;
 
 } // namespace
 
-BENCHMARK(cp_emit<Current>)->Name("cp_runtime/emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_emit<Setup>)->Name("cp_runtime/emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_emit<Setup, ctess::Layout::shared>)->Name("cp_runtime/emit_shared")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_emit<Current>)->Name("cp_runtime/patch_emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_emit<PortableEmit>)->Name("cp_runtime/emit_portable")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_counts)->Name("cp_runtime/counts")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_triangle<Current, false>)->Name("cp_runtime/triangle")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_triangle<Current, true>)->Name("cp_runtime/triangle_chain")->Apply(bench::random_factor_sets);
 BENCHMARK(cp_vertex<Current, false>)->Name("cp_runtime/vertex")->Apply(bench::random_factor_sets);

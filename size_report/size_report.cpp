@@ -166,7 +166,7 @@ struct Flash {
     std::size_t verify = 0; // verify_tables' code and nibble table (arm_verify_probe.cpp)
 };
 
-// text + rodata of the Cortex-M4 objects: the tables, the runtime (probe), and the linked program.
+// text + rodata of the Cortex-M4 objects: the tables, the runtime (probe and the CpPatch sources), and the linked program.
 Flash flash([[maybe_unused]] unsigned max_factor) {
     Flash f;
 #ifdef CTESS_ARM_SIZE
@@ -187,7 +187,7 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
         }
         if (obj.find("cp_tables_") != std::string::npos)
             f.tables += sum;
-        else if (obj.find("cp_runtime_probe") != std::string::npos)
+        else if (obj.find("cp_runtime_probe") != std::string::npos || obj.find("cp_patch_") != std::string::npos)
             f.runtime += sum;
         else if (obj.find("arm_verify_probe") != std::string::npos)
             f.verify += sum;

@@ -90,9 +90,11 @@ TEST_CASE("runtime bad input: out-of-range vertex and triangle indices give zero
     }
 }
 
-TEST_CASE("runtime bad input: emit refuses spans that are too small and leaves them untouched",
-          "[runtime][bad_input]") {
-    const CpPatch p(ctess::rt::cp_tables_64, 12.0f, 7.0f, 9.0f);
+namespace {
+
+// emit() with a span one element short returns false and writes nothing; with exact spans it writes.
+template <class Patch>
+void check_refuses_small_spans(const Patch& p) {
     const std::uint32_t nv = p.vertex_count(), nt = p.triangle_count();
     const DomainPoint sentinel{0xDEADu, 0xBEEFu};
     std::vector<DomainPoint> v(nv, sentinel);
@@ -104,4 +106,40 @@ TEST_CASE("runtime bad input: emit refuses spans that are too small and leaves t
     for (std::uint32_t x : i) REQUIRE(x == 0xABCDu);
     CHECK(p.emit(v, i));
     CHECK(i[0] != 0xABCDu);
+}
+
+} // namespace
+
+TEST_CASE("runtime bad input: emit refuses spans that are too small and leaves them untouched",
+          "[runtime][bad_input]") {
+    check_refuses_small_spans(CpPatch(ctess::rt::cp_tables_64, 12.0f, 7.0f, 9.0f));
+}
+
+TEST_CASE("runtime bad input: CpPatchSetup::emit refuses small spans in every layout and winding",
+          "[runtime][bad_input]") {
+    using ctess::Layout;
+    using ctess::Winding;
+    for (const ctess::PatchOptions o : {ctess::PatchOptions{Layout::provoking, Winding::cw},
+                                        ctess::PatchOptions{Layout::shared, Winding::ccw},
+                                        ctess::PatchOptions{Layout::shared, Winding::cw}}) {
+        // A plain patch (the fast path) and one with a T0 edge (the collapse path).
+        for (const float f1 : {7.0f, 1.0f})
+            check_refuses_small_spans(ctess::rt::CpPatchSetup(ctess::rt::cp_tables_64, 12.0f, f1, 9.0f, o));
+    }
+}
+
+TEST_CASE("runtime bad input: cp_counts clamps factors as CpPatch does", "[runtime][bad_input]") {
+    for (const CpTableSet* t : {&ctess::rt::cp_tables_64, &ctess::rt::cp_tables_256}) {
+        const float m = static_cast<float>(t->max_factor);
+        for (const ctess::Layout layout : {ctess::Layout::provoking, ctess::Layout::shared}) {
+            const ctess::PatchOptions o{layout, ctess::Winding::ccw};
+            CHECK(ctess::rt::cp_counts(*t, nan_f, -inf_f, -5.0f, o) ==
+                  ctess::rt::cp_counts(*t, 1.0f, 1.0f, 1.0f, o));
+            CHECK(ctess::rt::cp_counts(*t, inf_f, 1e30f, m + 1.0f, o) == CpPatch(*t, m, m, m, o).counts());
+        }
+        // The shared layout of the triforce M: (M+1)(M+2)/2 distinct positions, M^2 triangles.
+        const std::uint32_t mi = t->max_factor;
+        CHECK(ctess::rt::cp_counts(*t, inf_f, inf_f, inf_f, {ctess::Layout::shared, ctess::Winding::ccw}) ==
+              ctess::Counts{(mi + 1) * (mi + 2) / 2, mi * mi});
+    }
 }

@@ -5,8 +5,8 @@
 
 namespace ctess::rt::probe {
 
-CpCounts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept {
-    return CpPatch(tables, f0, f1, f2).counts();
+Counts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept {
+    return cp_counts(tables, f0, f1, f2);
 }
 
 DomainPoint vertex(const CpTableSet& tables, float f0, float f1, float f2, std::uint32_t i) noexcept {

@@ -7,7 +7,7 @@
 
 namespace ctess::rt::probe {
 
-CpCounts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept;
+Counts counts(const CpTableSet& tables, float f0, float f1, float f2) noexcept;
 DomainPoint vertex(const CpTableSet& tables, float f0, float f1, float f2, std::uint32_t i) noexcept;
 CpTriangle triangle(const CpTableSet& tables, float f0, float f1, float f2, std::uint32_t p) noexcept;
 bool emit(const CpTableSet& tables, float f0, float f1, float f2, std::span<DomainPoint> vertices,

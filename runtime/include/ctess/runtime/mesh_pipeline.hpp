@@ -168,9 +168,9 @@ inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, s
         rec.token[k] = s[k].token;
         rec.t16[k] = s[k].t16;
     }
-    const CpPatch patch(tables, s[0], s[1], s[2]);
-    rec.vertex_count = patch.vertex_count();
-    rec.triangle_count = patch.triangle_count();
+    const Counts counts = cp_counts(tables, s[0], s[1], s[2]);
+    rec.vertex_count = counts.vertices;
+    rec.triangle_count = counts.triangles;
     const PatchSetupBlock block = patch_setup_block(tables, s[0], s[1], s[2]);
     for (unsigned k = 0; k < setup_word::words; ++k) rec.setup[k] = block.word[k];
     return rec;
@@ -232,7 +232,7 @@ inline PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh,
         const PatchRecord& rec = patches[t];
         std::uint32_t w[3];
         const bool culled = !detail::base_triangle(mesh, t, w);
-        const CpCounts counts = culled ? CpCounts{} : patch_of(tables, rec).counts();
+        const Counts counts = culled ? Counts{} : patch_of(tables, rec).counts();
         if (rec.rotation > 2 || rec.first_vertex != vertex_sum || rec.first_triangle != triangle_sum ||
             rec.vertex_count != counts.vertices || rec.triangle_count != counts.triangles)
             return PipelineStatus::bad_patch_record;
