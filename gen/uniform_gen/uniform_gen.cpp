@@ -723,7 +723,7 @@ void write_header(const std::string& path, int max_factor, const std::vector<Tri
     s += "// Do not edit; regenerate with the command in gen/uniform_gen/README.md. A ctest regenerates it "
          "and\n";
     s += "// compares byte for byte.\n";
-    s += "#pragma once\n#include <cstdint>\n\nnamespace ctess::uniform::data {\n\n";
+    s += "// clang-format off\n#pragma once\n#include <cstdint>\n\nnamespace ctess::uniform::data {\n\n";
     s += "// One sorted factor triple f0 >= f1 >= f2 (the factors of e0, e1, e2) and its interior vertex "
          "count.\n";
     s += "struct PatternRecord {\n    std::uint8_t f0, f1, f2, interior;\n};\n";
@@ -765,7 +765,7 @@ void write_header(const std::string& path, int max_factor, const std::vector<Tri
         }
         s += line + "\n";
     }
-    s += "};\n\n} // namespace ctess::uniform::data\n";
+    s += "};\n\n} // namespace ctess::uniform::data\n// clang-format on\n";
     FILE* f = std::fopen(path.c_str(), "wb");
     if (!f) {
         std::fprintf(stderr, "uniform_gen: cannot write %s\n", path.c_str());
