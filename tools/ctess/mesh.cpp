@@ -15,7 +15,7 @@ namespace ctess::cli {
 
 const std::vector<std::string>& pattern_modes() {
     static const std::vector<std::string> modes = {"cp", "d3d11-integer", "d3d11-pow2", "d3d11-odd",
-                                                   "d3d11-even"};
+                                                   "d3d11-even", "uniform"};
     return modes;
 }
 
@@ -149,6 +149,7 @@ Mesh tessellate_cp(const PatternRequest& r) {
 Mesh tessellate(const PatternRequest& request) {
     choice(request.mode, pattern_modes(), "--mode");
     choice(request.domain, {"tri", "quad", "iso"}, "--domain");
+    if (request.mode == "uniform") return tessellate_uniform(request);
     return is_d3d11_mode(request.mode) ? tessellate_d3d11(request) : tessellate_cp(request);
 }
 

@@ -19,3 +19,14 @@ extern const UniformTableSet uniform_tables_11; // ctess_uniform_runtime_11
 extern const UniformTableSet uniform_tables_16; // ctess_uniform_runtime_16
 
 } // namespace ctess::rt
+
+#if defined(CTESS_UNIFORM_MAX_FACTOR)
+namespace ctess::rt {
+// The table set the build configured (CTESS_UNIFORM_MAX_FACTOR, 16 or 11); link ctess::uniform_runtime.
+#if CTESS_UNIFORM_MAX_FACTOR == 11
+inline constexpr const UniformTableSet& uniform_tables = uniform_tables_11;
+#else
+inline constexpr const UniformTableSet& uniform_tables = uniform_tables_16;
+#endif
+} // namespace ctess::rt
+#endif
