@@ -15,6 +15,7 @@
 #include <ctess/runtime/cp_table_set.hpp>
 
 #include "cp_table_objects.hpp"
+#include "uniform_table_objects.hpp"
 
 namespace {
 
@@ -36,6 +37,7 @@ struct Config {
     unsigned max_factor;
     std::vector<TableObject> objects;
     std::string object_paths;
+    std::string family = "cp"; // or "uniform"
 };
 
 template <class A>
@@ -59,6 +61,17 @@ std::vector<TableObject> token_and_gap(const tables::TokenTable<Max>& tok, const
               table("gap T1 fans", gap.t1_last_fan)}}};
 }
 
+template <unsigned Max>
+Config uniform_config(const ctess::uniform::tables::UniformTables<Max>& t, const char* paths) {
+    return {Max,
+            {{fmt::format("uniform_table_{}", Max),
+              sizeof(t),
+              {table("uniform offsets", t.offsets), table("uniform interior", t.interior),
+               table("uniform indices", t.indices)}}},
+            paths,
+            "uniform"};
+}
+
 std::vector<Config> configs() {
     namespace d = ctess::rt::detail;
     Config c64{64, token_and_gap(d::token_table_64, d::gap_table_64), CTESS_TABLE_OBJECTS_64};
@@ -68,7 +81,8 @@ std::vector<Config> configs() {
     c256.objects.push_back(column_object(d::column_chunk_256_1, "column_chunk_256_1"));
     c256.objects.push_back(column_object(d::column_chunk_256_2, "column_chunk_256_2"));
     c256.objects.push_back(column_object(d::column_chunk_256_3, "column_chunk_256_3"));
-    return {c64, c256};
+    return {c64, c256, uniform_config(d::uniform_table_11, CTESS_UNIFORM_TABLE_OBJECTS_11),
+            uniform_config(d::uniform_table_16, CTESS_UNIFORM_TABLE_OBJECTS_16)};
 }
 
 // The merged rows of a configuration (column chunks summed) and the total.
@@ -212,10 +226,10 @@ int main(int argc, char** argv) {
         std::string why;
         const bool verified = verify(c, why);
         ok = ok && verified;
-        const Flash f = flash(c.max_factor);
+        const Flash f = c.family == "cp" ? flash(c.max_factor) : Flash{};
         if (json) {
-            report +=
-                fmt::format("{}\n  {{\"max_tess_factor\": {}, \"tables\": [", k ? "," : "", c.max_factor);
+            report += fmt::format("{}\n  {{\"family\": \"{}\", \"max_tess_factor\": {}, \"tables\": [",
+                                  k ? "," : "", c.family, c.max_factor);
             for (std::size_t r = 0; r < rows.size(); ++r)
                 report += fmt::format("{}\n    {{\"name\": \"{}\", \"entries\": {}, \"bytes\": {}}}",
                                       r ? "," : "", rows[r].name, rows[r].entries, rows[r].bytes);
@@ -227,15 +241,17 @@ int main(int argc, char** argv) {
                     f.tables, f.runtime, f.program);
             report += "}";
         } else {
-            report += fmt::format("max_tess_factor {}\n  {:<16} {:>9} {:>9}\n", c.max_factor, "table",
-                                  "entries", "bytes");
+            report +=
+                fmt::format("{}max_tess_factor {}\n  {:<16} {:>9} {:>9}\n",
+                            c.family == "cp" ? "" : "uniform ", c.max_factor, "table", "entries", "bytes");
             for (const Table& t : rows)
                 report += fmt::format("  {:<16} {:>9} {:>9}\n", t.name, t.entries, t.bytes);
             report += fmt::format("  {:<16} {:>9} {:>9}  ({:.1f} KiB, with alignment padding)\n", "total", "",
                                   total, static_cast<double>(total) / 1024.0);
             report += verified ? "  checked: every table object's nm size equals its type's size\n"
                                : fmt::format("  CHECK FAILED: {}\n", why);
-            if (f.available)
+            if (c.family != "cp") {
+            } else if (f.available)
                 report += fmt::format(
                     "  Cortex-M4 (-Os, thumb, no exceptions/RTTI), text + rodata: tables {} B, runtime "
                     "{} B; linked bare-metal program text {} B\n",

@@ -561,41 +561,44 @@ std::map<int, Pattern> candidates(const Triple& t) {
     base.nb = int(base.p.size());
     base.t = dp_triangulation(t, b);
     const V2 corners[3] = {e.c0, e.c1, e.c2};
-    for (int edge = 0; edge < 3; ++edge)
-        for (int sp = 0; sp < 7; ++sp) {
-            const double s = 0.85 + 0.07 * sp;
-            const V2 o = corners[edge], dir = corners[(edge + 1) % 3] - o;
-            const V2 ex = (1.0 / dist(corners[(edge + 1) % 3], o)) * dir;
-            const V2 ey{-ex.y, ex.x};
-            const V2 l1 = s * ex, l2 = s * (0.5 * ex + (std::sqrt(3.0) / 2) * ey);
-            Mesh m = base;
-            const int span = t.f0 * 3 + 3;
-            for (int j = 1; j <= span; ++j)
-                for (int i = -span; i <= span; ++i) {
-                    const V2 q = o + double(i) * l1 + double(j) * l2;
-                    // keep half a spacing from every domain edge
-                    bool inside = true;
-                    for (int k = 0; k < 3; ++k) {
-                        const V2 a = corners[k], c = corners[(k + 1) % 3];
-                        if (orient(a, c, q) / dist(a, c) < 0.5 * s) inside = false;
+    // Lattice starts: three orientations (along each edge), seven spacings, three distances kept from the
+    // domain edges (in spacings). The closer margins find the sparser patterns.
+    for (const double margin : {0.2, 0.3, 0.4})
+        for (int edge = 0; edge < 3; ++edge)
+            for (int sp = 0; sp < 7; ++sp) {
+                const double s = 0.85 + 0.07 * sp;
+                const V2 o = corners[edge], dir = corners[(edge + 1) % 3] - o;
+                const V2 ex = (1.0 / dist(corners[(edge + 1) % 3], o)) * dir;
+                const V2 ey{-ex.y, ex.x};
+                const V2 l1 = s * ex, l2 = s * (0.5 * ex + (std::sqrt(3.0) / 2) * ey);
+                Mesh m = base;
+                const int span = t.f0 * 3 + 3;
+                for (int j = 1; j <= span; ++j)
+                    for (int i = -span; i <= span; ++i) {
+                        const V2 q = o + double(i) * l1 + double(j) * l2;
+                        // keep the margin from every domain edge
+                        bool inside = true;
+                        for (int k = 0; k < 3; ++k) {
+                            const V2 a = corners[k], c = corners[(k + 1) % 3];
+                            if (orient(a, c, q) / dist(a, c) < margin * s) inside = false;
+                        }
+                        if (inside) insert_point(m, q);
                     }
-                    if (inside) insert_point(m, q);
+                flip_edges(m, true, 0);
+                polish(m, 30);
+                offer(from_mesh(t, m, e));
+                // decimate while the longest edge stays reasonable
+                while (int(m.p.size()) > m.nb) {
+                    int v = -1, n = -1;
+                    if (!best_collapse(m, v, n)) break;
+                    m = collapse(m, v, n);
+                    flip_edges(m, false, 5.0 * pi / 180.0);
+                    polish(m, 12);
+                    const Pattern p = from_mesh(t, m, e);
+                    if (p.longest > 1.8) break;
+                    offer(Pattern(p));
                 }
-            flip_edges(m, true, 0);
-            polish(m, 30);
-            offer(from_mesh(t, m, e));
-            // decimate while the longest edge stays reasonable
-            while (int(m.p.size()) > m.nb) {
-                int v = -1, n = -1;
-                if (!best_collapse(m, v, n)) break;
-                m = collapse(m, v, n);
-                flip_edges(m, false, 5.0 * pi / 180.0);
-                polish(m, 12);
-                const Pattern p = from_mesh(t, m, e);
-                if (p.longest > 1.8) break;
-                offer(Pattern(p));
             }
-        }
     return best;
 }
 
