@@ -5,7 +5,8 @@
 // Deterministic: fixed processing orders, no randomness, no threads; the same compiler and flags give the
 // same bytes (a ctest regenerates the data and compares).
 //
-//   uniform_gen [--max N] [--out FILE] [--stats]
+//   uniform_gen [--max N] [--out FILE] [--stats]   (writes the data)
+//   uniform_gen --check K                          (regenerates the triples with f0 <= K and compares)
 //
 // Method per triple: (1) a dynamic-programming min-max triangulation of the boundary polygon (the only
 // candidate for non-Euclidean triples a >= b + c); (2) Euclidean triples: triangular lattice starts inserted
@@ -24,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include <ctess/uniform_pattern.hpp>
 #include <ctess/uniform_quantise.hpp>
 
 namespace {
@@ -795,6 +797,42 @@ Totals totals(const std::vector<Triple>& triples, const std::vector<Pattern>& ch
     return r;
 }
 
+// Regenerates the candidates of every triple with f0 <= check_max and compares the checked-in pattern
+// (compiled into this program) with the candidate of the same interior count, ordered for the cache: the
+// cheap form of the regenerate-and-compare test (the knapsack choice itself needs every triple).
+int check_data(int check_max) {
+    int bad = 0, checked = 0;
+    for (int a = 1; a <= check_max; ++a)
+        for (int b = 1; b <= a; ++b)
+            for (int c = 1; c <= b; ++c) {
+                const Triple t{a, b, c};
+                const ctess::uniform::Pattern stored = ctess::uniform::pattern(unsigned(a), unsigned(b), unsigned(c));
+                const auto cands = candidates(t);
+                const auto it = cands.find(int(stored.interior_count()));
+                bool same = it != cands.end();
+                if (same) {
+                    Pattern p = it->second;
+                    order_for_cache(p, boundary_count(t));
+                    same = p.tris.size() == stored.triangle_count();
+                    for (unsigned k = 0; same && k < stored.interior_count(); ++k) {
+                        const ctess::DomainPoint q = stored.vertex(stored.boundary_count() + k);
+                        same = int(q.u) == p.interior[k][0] && int(q.v) == p.interior[k][1];
+                    }
+                    for (unsigned k = 0; same && k < stored.triangle_count(); ++k) {
+                        const auto tri = stored.triangle(k);
+                        same = int(tri[0]) == p.tris[k][0] && int(tri[1]) == p.tris[k][1] && int(tri[2]) == p.tris[k][2];
+                    }
+                }
+                if (!same) {
+                    std::fprintf(stderr, "uniform_gen: pattern %d,%d,%d differs from the checked-in data\n", a, b, c);
+                    ++bad;
+                }
+                ++checked;
+            }
+    std::fprintf(stderr, "uniform_gen: %d patterns regenerated, %d differ\n", checked, bad);
+    return bad == 0 ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -808,8 +846,10 @@ int main(int argc, char** argv) {
             out = argv[++i];
         else if (!std::strcmp(argv[i], "--stats"))
             stats = true;
+        else if (!std::strcmp(argv[i], "--check") && i + 1 < argc)
+            return check_data(std::atoi(argv[++i]));
         else {
-            std::fprintf(stderr, "usage: uniform_gen [--max N] [--out FILE] [--stats]\n");
+            std::fprintf(stderr, "usage: uniform_gen [--max N] [--out FILE] [--stats] | --check N\n");
             return 2;
         }
     }

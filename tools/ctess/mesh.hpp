@@ -32,7 +32,7 @@ bool is_d3d11_mode(const std::string& mode);
 Mesh tessellate(const PatternRequest& request);
 // The uniform-density mode (mesh_uniform.cpp): three edge factors, the configured table's patterns.
 Mesh tessellate_uniform(const PatternRequest& request);
-// Twice the signed area of triangle t, in units of fixed_one^2 (exact).
+// Twice the signed area of triangle t, in units of fixed_one^2 (exact; saturated beyond 64 bits).
 std::int64_t doubled_area(const Mesh& mesh, std::size_t t);
 std::size_t degenerate_triangles(const Mesh& mesh);
 

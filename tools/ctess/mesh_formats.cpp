@@ -81,8 +81,9 @@ struct Frame {
 
 void shape_uniform_frame(Frame& fr, const std::vector<float>& f, unsigned max_factor) {
     if (f.size() != 3) return;
-    const double a = rt::uniform_factor(f[0], max_factor), b = rt::uniform_factor(f[1], max_factor),
-                 c = rt::uniform_factor(f[2], max_factor);
+    const std::uint32_t top = max_factor * max_factor; // split patches go up to N^2 (docs/algorithm.md §6.5)
+    const double a = rt::uniform_factor(f[0], top), b = rt::uniform_factor(f[1], top),
+                 c = rt::uniform_factor(f[2], top);
     if (!(a < b + c && b < a + c && c < a + b)) return; // non-Euclidean: keep the equilateral frame
     const double x2 = (a * a + c * c - b * b) / (2 * a), y2 = std::sqrt(std::max(0.0, c * c - x2 * x2));
     const double lo = std::min(0.0, x2), hi = std::max(a, x2), width = hi - lo;
