@@ -16,7 +16,9 @@ int run_efficiency(int argc, char** argv) {
     if (choice(args.get_or("family", "cp"), {"cp", "uniform"}, "--family") == "uniform") {
         const auto rows = uniform_efficiency_rows(max);
         write_text(args.get_or("out", "-"),
-                   format == "json" ? uniform_efficiency_json(rows) : uniform_efficiency_markdown(rows));
+                   format == "json"
+                       ? uniform_efficiency_json(rows)
+                       : uniform_efficiency_markdown(rows) + uniform_split_markdown(uniform_split_rows()));
         return 0;
     }
     const auto rows = efficiency_rows(max, random, seed);

@@ -3,6 +3,10 @@
 #include <ctess/cp_pattern.hpp>
 #include <ctess/d3d11_tessellator.hpp>
 #include <ctess/runtime/uniform_patch.hpp>
+#include <ctess/runtime/uniform_split.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 #include <fmt/core.h>
 
@@ -36,7 +40,64 @@ Totals totals(const std::vector<UniformEfficiencyRow>& rows, unsigned up_to) {
     return t;
 }
 
+// Binary (longest-edge) splitting, the comparison of seed 001: halve the longest edge (factor T / 2 on each
+// half, the median's intrinsic length on the new edge) until every factor is at most n; returns the leaves.
+std::uint64_t binary_split_leaves(std::array<double, 3> f, double n, int depth = 0) {
+    if ((f[0] <= n + 0.5 && f[1] <= n + 0.5 && f[2] <= n + 0.5) || depth > 40) return 1;
+    const int k = f[0] >= f[1] && f[0] >= f[2] ? 0 : f[1] >= f[2] ? 1 : 2;
+    const double a = f[k], b = f[(k + 1) % 3], c = f[(k + 2) % 3];
+    const double median = 0.5 * std::sqrt(std::max(0.0, 2 * b * b + 2 * c * c - a * a));
+    return binary_split_leaves({a / 2, b, median}, n, depth + 1) +
+           binary_split_leaves({a / 2, c, median}, n, depth + 1);
+}
+
 } // namespace
+
+std::vector<UniformSplitRow> uniform_split_rows() {
+    std::vector<UniformSplitRow> rows;
+    const unsigned n = rt::uniform_tables.max_factor;
+    std::uint32_t state = 2026u; // a fixed linear congruential sequence: the same triples everywhere
+    auto next = [&]() {
+        state = state * 1664525u + 1013904223u;
+        return state >> 8;
+    };
+    for (int i = 0; i < 200; ++i) {
+        std::array<float, 3> f{};
+        const unsigned top = i < 100 ? 64u : n * n; // half within D3D11's range
+        for (float& x : f) x = float(n + 1 + next() % (top - n));
+        UniformSplitRow r;
+        r.factors = f;
+        const rt::UniformSplit split(rt::uniform_tables, f[0], f[1], f[2]);
+        r.subpatches = split.subpatch_count();
+        r.triangles = split.counts().triangles;
+        r.binary_subpatches = binary_split_leaves({f[0], f[1], f[2]}, n);
+        if (f[0] <= 64 && f[1] <= 64 && f[2] <= 64)
+            r.d3d_max = d3d_integer_triangles(f, std::max({f[0], f[1], f[2]}));
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+std::string uniform_split_markdown(const std::vector<UniformSplitRow>& rows) {
+    double sub = 0, bin = 0, tri = 0, d3d = 0;
+    std::size_t with_d3d = 0;
+    for (const auto& r : rows) {
+        sub += double(r.subpatches), bin += double(r.binary_subpatches);
+        if (r.d3d_max != 0) tri += double(r.triangles), d3d += double(r.d3d_max), ++with_d3d;
+    }
+    std::string out = fmt::format(
+        "\nSplitting above the table: {} seeded random triples above {}, half up to 64, half up to {}\n\n",
+        rows.size(), rt::uniform_tables.max_factor,
+        rt::uniform_tables.max_factor * rt::uniform_tables.max_factor);
+    out += fmt::format("- uniform subpatches / binary longest-edge subpatches (same dice limit): {:.3f} "
+                       "(seed 001: 0.68)\n",
+                       sub / bin);
+    out += fmt::format(
+        "- final triangles / D3D11 integer (inside = max), the {} triples with every factor <= 64: "
+        "{:.3f}\n",
+        with_d3d, with_d3d ? tri / d3d : 0.0);
+    return out;
+}
 
 std::vector<UniformEfficiencyRow> uniform_efficiency_rows(unsigned cp_max_factor) {
     std::vector<UniformEfficiencyRow> rows;

@@ -15,6 +15,15 @@ struct UniformEfficiencyRow {
 };
 
 std::vector<UniformEfficiencyRow> uniform_efficiency_rows(unsigned cp_max_factor);
+
+// Splitting above the table (§6.5): subpatches against binary longest-edge splitting to the same dice limit,
+// and final triangles against D3D11 integer partitioning.
+struct UniformSplitRow {
+    std::array<float, 3> factors{};
+    std::uint64_t subpatches = 0, binary_subpatches = 0, triangles = 0, d3d_max = 0;
+};
+std::vector<UniformSplitRow> uniform_split_rows();
+std::string uniform_split_markdown(const std::vector<UniformSplitRow>& rows);
 std::string uniform_efficiency_markdown(const std::vector<UniformEfficiencyRow>& rows);
 std::string uniform_efficiency_json(const std::vector<UniformEfficiencyRow>& rows);
 
