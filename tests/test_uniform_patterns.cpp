@@ -1,4 +1,4 @@
-// The uniform-density pattern data and its compile-time tables (docs/algorithm.md §6), checked exhaustively
+// The uniform-density pattern data and its compile-time tables (docs/algorithm.md §3), checked exhaustively
 // for every sorted triple at N = 11 and N = 16: exact coverage, one winding, no zero-area triangle, the
 // boundary split into exactly f_i segments at the shared symmetric parameters, the regular n^2 grid for
 // (n, n, n), the longest intrinsic edge against NVIDIA's table (1.433 overall, 1.137 mean of per-pattern
@@ -150,13 +150,10 @@ TEST_CASE("uniform: longest intrinsic edge and triangle count against NVIDIA's t
             triangles += p.triangle_count();
         }
         const double mean = sum / double(all.size());
+        // NVIDIA's table: 1.433 and 1.137; the issue's target at N = 11: at most 7,400 triangles (NVIDIA 8,398).
         CHECK(mean <= 1.137);
-        if (n == 11) {
-            CHECK(longest <= 1.433);
-            CHECK(triangles < 8398);
-        } else {
-            CHECK(longest <= 1.5);
-        }
+        CHECK(longest <= 1.433);
+        if (n == 11) CHECK(triangles <= 7400);
     }
 }
 

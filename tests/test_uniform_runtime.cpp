@@ -1,4 +1,4 @@
-// ctess::rt::UniformPatch against the constexpr patterns (docs/algorithm.md §6.4): for every sorted triple of
+// ctess::rt::UniformPatch against the constexpr patterns (docs/algorithm.md §3.4): for every sorted triple of
 // both table sets and every order of its factors, the patch is the stored pattern with its corners mapped so
 // that output edge i has f_i segments, counter-clockwise (or clockwise on request); neighbouring patches weld
 // bit for bit; bad input gets the documented clamp.

@@ -1,4 +1,4 @@
-// Uniform-density splitting above the table (docs/algorithm.md §6.5): exact coverage without inverted or
+// Uniform-density splitting above the table (docs/algorithm.md §3.5): exact coverage without inverted or
 // zero-area triangles, bounded depth, counts equal to what emit writes, crack-free neighbours at any depth
 // (shared-edge positions equal bit for bit), the patch itself below N, and bad input clamped.
 #include <ctess/runtime/uniform_split.hpp>

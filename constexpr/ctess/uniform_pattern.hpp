@@ -1,4 +1,4 @@
-// Uniform-density patterns (docs/algorithm.md §6): the checked-in pattern data of gen/uniform_gen, read in
+// Uniform-density patterns (docs/algorithm.md §3): the checked-in pattern data of gen/uniform_gen, read in
 // constant expressions. A pattern exists for every sorted factor triple f0 >= f1 >= f2 in [1, 16], on the
 // edges e0 = v0 -> v1 (v = 0), e1 = v1 -> v2 (u + v = 1) and e2 = v0 -> v2 (u = 0). Its vertices use the
 // canonical numbering: the f0 + f1 + f2 boundary vertices counter-clockwise (v0, e0's points, v1, e1's

@@ -1,5 +1,5 @@
 // The uniform-density storage tables for maximum factor N (11 or 16), built in constant expressions from the
-// pattern data (docs/algorithm.md §6.3): only interior vertices are stored (the boundary is implicit at the
+// pattern data (docs/algorithm.md §3.3): only interior vertices are stored (the boundary is implicit at the
 // symmetric i/f), as (v << 16) | u words; triangles as three 8-bit canonical indices; one offset record per
 // pattern plus a sentinel. The pattern of a sorted triple is offsets[pattern_index(f0, f1, f2)].
 #pragma once

@@ -1,4 +1,4 @@
-// Offline generator of the uniform-density pattern data (docs/algorithm.md §"Uniform density"): for every
+// Offline generator of the uniform-density pattern data (docs/algorithm.md §3): for every
 // sorted factor triple a >= b >= c in [1, N] the fewest triangles whose longest edge, in the intrinsic metric
 // with the factors as edge lengths, stays short. Writes constexpr/ctess/uniform_patterns_data.hpp.
 //
@@ -806,7 +806,8 @@ int check_data(int check_max) {
         for (int b = 1; b <= a; ++b)
             for (int c = 1; c <= b; ++c) {
                 const Triple t{a, b, c};
-                const ctess::uniform::Pattern stored = ctess::uniform::pattern(unsigned(a), unsigned(b), unsigned(c));
+                const ctess::uniform::Pattern stored =
+                    ctess::uniform::pattern(unsigned(a), unsigned(b), unsigned(c));
                 const auto cands = candidates(t);
                 const auto it = cands.find(int(stored.interior_count()));
                 bool same = it != cands.end();
@@ -820,11 +821,13 @@ int check_data(int check_max) {
                     }
                     for (unsigned k = 0; same && k < stored.triangle_count(); ++k) {
                         const auto tri = stored.triangle(k);
-                        same = int(tri[0]) == p.tris[k][0] && int(tri[1]) == p.tris[k][1] && int(tri[2]) == p.tris[k][2];
+                        same = int(tri[0]) == p.tris[k][0] && int(tri[1]) == p.tris[k][1] &&
+                               int(tri[2]) == p.tris[k][2];
                     }
                 }
                 if (!same) {
-                    std::fprintf(stderr, "uniform_gen: pattern %d,%d,%d differs from the checked-in data\n", a, b, c);
+                    std::fprintf(stderr, "uniform_gen: pattern %d,%d,%d differs from the checked-in data\n",
+                                 a, b, c);
                     ++bad;
                 }
                 ++checked;
@@ -866,20 +869,24 @@ int main(int argc, char** argv) {
     const size_t first = std::min<size_t>(triples.size(), 286); // a <= 11
     std::vector<std::vector<Option>> opts;
     for (const auto& c : cands) opts.push_back(pareto(c, cap));
-    if (stats) { // Pareto front at N = 11: total triangles against the mean of per-pattern maxima
-        for (double m : {1.06, 1.08, 1.10, 1.12, 1.137, 1.16, 1.18, 1.20, 1.25}) {
-            std::vector<std::vector<Option>> o(opts.begin(), opts.begin() + first);
-            const auto pick = knapsack(o, m * double(first));
-            if (pick.empty()) continue;
-            long tri = 0;
-            double mx = 0;
-            for (size_t i = 0; i < first; ++i) {
-                tri += triangle_count(triples[i], pick[i]);
-                mx = std::max(mx, cands[i].at(pick[i]).longest);
+    if (stats) { // Pareto front at N = 11: total triangles against the longest edge (cap) and the mean
+        for (double c : {1.25, 1.30, 1.35, 1.40, cap})
+            for (double m : {1.04, 1.06, 1.08, 1.10, 1.12, 1.137, 1.16, 1.20}) {
+                std::vector<std::vector<Option>> o;
+                for (size_t i = 0; i < first; ++i) o.push_back(pareto(cands[i], c));
+                const auto pick = knapsack(o, m * double(first));
+                if (pick.empty()) continue;
+                long tri = 0;
+                double mx = 0, sum = 0;
+                for (size_t i = 0; i < first; ++i) {
+                    tri += triangle_count(triples[i], pick[i]);
+                    mx = std::max(mx, cands[i].at(pick[i]).longest);
+                    sum += cands[i].at(pick[i]).longest;
+                }
+                std::fprintf(
+                    stderr, "front N=%zu: cap %.3f, mean <= %.3f: %ld triangles, longest %.3f, mean %.4f\n",
+                    first == 286 ? size_t(11) : size_t(max_factor), c, m, tri, mx, sum / double(first));
             }
-            std::fprintf(stderr, "front N=%zu: mean <= %.3f: %ld triangles, longest %.3f\n",
-                         first == 286 ? size_t(11) : size_t(max_factor), m, tri, mx);
-        }
     }
     std::vector<int> pick;
     {

@@ -1,4 +1,4 @@
-// The uniform-density efficiency report (docs/algorithm.md §6): uniform triangle counts against D3D11
+// The uniform-density efficiency report (docs/algorithm.md §3): uniform triangle counts against D3D11
 // integer partitioning (inside = max of the edges and inside = average) and against CP, over every sorted
 // triple of the configured table (seed 001 reports 69 % of D3D11's uniform topology).
 #pragma once
@@ -16,7 +16,7 @@ struct UniformEfficiencyRow {
 
 std::vector<UniformEfficiencyRow> uniform_efficiency_rows(unsigned cp_max_factor);
 
-// Splitting above the table (§6.5): subpatches against binary longest-edge splitting to the same dice limit,
+// Splitting above the table (§3.5): subpatches against binary longest-edge splitting to the same dice limit,
 // and final triangles against D3D11 integer partitioning.
 struct UniformSplitRow {
     std::array<float, 3> factors{};

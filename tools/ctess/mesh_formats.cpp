@@ -81,7 +81,7 @@ struct Frame {
 
 void shape_uniform_frame(Frame& fr, const std::vector<float>& f, unsigned max_factor) {
     if (f.size() != 3) return;
-    const std::uint32_t top = max_factor * max_factor; // split patches go up to N^2 (docs/algorithm.md §6.5)
+    const std::uint32_t top = max_factor * max_factor; // split patches go up to N^2 (docs/algorithm.md §3.5)
     const double a = rt::uniform_factor(f[0], top), b = rt::uniform_factor(f[1], top),
                  c = rt::uniform_factor(f[2], top);
     if (!(a < b + c && b < a + c && c < a + b)) return; // non-Euclidean: keep the equilateral frame

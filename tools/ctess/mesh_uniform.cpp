@@ -1,4 +1,4 @@
-// The uniform-density mode of `ctess pattern` (docs/algorithm.md §6): the configured table's pattern through
+// The uniform-density mode of `ctess pattern` (docs/algorithm.md §3): the configured table's pattern through
 // ctess::rt::UniformPatch. Only parses the request and calls the library.
 #include "cli_args.hpp"
 #include "mesh.hpp"
@@ -41,7 +41,7 @@ Mesh tessellate_uniform(const PatternRequest& r) {
     const bool above = r.factors[0] >= float(rt::uniform_tables.max_factor) + 0.5f ||
                        r.factors[1] >= float(rt::uniform_tables.max_factor) + 0.5f ||
                        r.factors[2] >= float(rt::uniform_tables.max_factor) + 0.5f;
-    if (above) { // split with the table's own patterns (§6.5); every subpatch's own vertices
+    if (above) { // split with the table's own patterns (§3.5); every subpatch's own vertices
         const rt::UniformSplit split(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
         mesh.fixed_one = rt::uniform_split_fixed_one;
         mesh.vertices.resize(split.counts().vertices);

@@ -1,4 +1,4 @@
-// A uniform-density pattern from the compile-time tables (docs/algorithm.md §6): counts, random access to any
+// A uniform-density pattern from the compile-time tables (docs/algorithm.md §3): counts, random access to any
 // vertex or triangle in O(1), and a bulk emit into caller spans. Bit-identical to the constexpr pattern
 // (ctess::uniform::pattern) of the sorted factors, with the corners unswizzled and the winding restored, so
 // that edge i of the output (e0 = v0 -> v1, e1 = v1 -> v2, e2 = v0 -> v2) always has factor f_i segments.
@@ -13,10 +13,10 @@
 //
 // Factors are rounded to the nearest integer (halves up) and clamped to [1, tables.max_factor]: NaN, -inf,
 // zero, negatives and anything below 1.5 give 1; +inf and anything at or above max_factor - 0.5 give
-// max_factor. Factors above the table go through ctess::rt::uniform_split instead (§6.5).
+// max_factor. Factors above the table go through ctess::rt::uniform_split instead (§3.5).
 // Vertices: the canonical numbering of the sorted pattern (boundary first, then interior); every position
 // once (Layout::shared). Layout::provoking is accepted and gives the same shared layout (documented in
-// §6.4: a uniform pattern has about twice as many triangles as vertices, so a provoking layout would need
+// §3.4: a uniform pattern has about twice as many triangles as vertices, so a provoking layout would need
 // copies of most vertices). vertex(i) with i >= vertices returns {0, 0}; triangle(p) with p >= triangles
 // returns {0, 0, 0}; emit() returns false and writes nothing when a span is too small.
 #pragma once

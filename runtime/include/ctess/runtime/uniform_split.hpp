@@ -1,4 +1,4 @@
-// Uniform-density splitting above the table (docs/algorithm.md §6.5, seed 001): a patch whose factors exceed
+// Uniform-density splitting above the table (docs/algorithm.md §3.5, seed 001): a patch whose factors exceed
 // the table's maximum N is split with the table's own pattern for the split factors, and each subpatch is
 // diced (or split once more) with the table.
 //

@@ -1,4 +1,4 @@
-// A view of the compile-time uniform-density tables of one maximum factor (docs/algorithm.md §6.3), as the
+// A view of the compile-time uniform-density tables of one maximum factor (docs/algorithm.md §3.3), as the
 // runtime reads them. uniform_tables_11 and uniform_tables_16 are constant-initialised objects in the
 // ctess_uniform_runtime_11 and ctess_uniform_runtime_16 libraries; the tables themselves are in .rodata.
 #pragma once
