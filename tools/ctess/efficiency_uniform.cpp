@@ -41,14 +41,20 @@ Totals totals(const std::vector<UniformEfficiencyRow>& rows, unsigned up_to) {
 }
 
 // Binary (longest-edge) splitting, the comparison of seed 001: halve the longest edge (factor T / 2 on each
-// half, the median's intrinsic length on the new edge) until every factor is at most n; returns the leaves.
-std::uint64_t binary_split_leaves(std::array<double, 3> f, double n, int depth = 0) {
-    if ((f[0] <= n + 0.5 && f[1] <= n + 0.5 && f[2] <= n + 0.5) || depth > 40) return 1;
+// half, the median's intrinsic length on the new edge) until every factor is at most n, with the same
+// tolerance as UniformSplit for edges inside the root (inside[i]); returns the leaves.
+std::uint64_t binary_split_leaves(std::array<double, 3> f, std::array<bool, 3> inside, double n,
+                                  int depth = 0) {
+    bool fits = true;
+    for (int i = 0; i < 3; ++i)
+        fits = fits && f[i] < (inside[i] ? n * rt::uniform_split_interior_tolerance : n + 0.5);
+    if (fits || depth > 40) return 1;
     const int k = f[0] >= f[1] && f[0] >= f[2] ? 0 : f[1] >= f[2] ? 1 : 2;
-    const double a = f[k], b = f[(k + 1) % 3], c = f[(k + 2) % 3];
+    const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    const double a = f[k], b = f[k1], c = f[k2];
     const double median = 0.5 * std::sqrt(std::max(0.0, 2 * b * b + 2 * c * c - a * a));
-    return binary_split_leaves({a / 2, b, median}, n, depth + 1) +
-           binary_split_leaves({a / 2, c, median}, n, depth + 1);
+    return binary_split_leaves({a / 2, b, median}, {inside[k], inside[k1], true}, n, depth + 1) +
+           binary_split_leaves({a / 2, c, median}, {inside[k], inside[k2], true}, n, depth + 1);
 }
 
 } // namespace
@@ -70,7 +76,7 @@ std::vector<UniformSplitRow> uniform_split_rows() {
         const rt::UniformSplit split(rt::uniform_tables, f[0], f[1], f[2]);
         r.subpatches = split.subpatch_count();
         r.triangles = split.counts().triangles;
-        r.binary_subpatches = binary_split_leaves({f[0], f[1], f[2]}, n);
+        r.binary_subpatches = binary_split_leaves({f[0], f[1], f[2]}, {false, false, false}, n);
         if (f[0] <= 64 && f[1] <= 64 && f[2] <= 64)
             r.d3d_max = d3d_integer_triangles(f, std::max({f[0], f[1], f[2]}));
         rows.push_back(r);

@@ -10,6 +10,8 @@
 //   factors as side lengths): on a parent edge that is T_i times the edge's parameter span, i.e. a function
 //   of that edge's own factor and position only; inside the parent it is computed from the edge's endpoints
 //   in either direction with the same result. Neighbours therefore agree bit for bit at any depth: no cracks.
+// * A subpatch is diced when its factors are at most N; below the root, edges inside the root patch are also
+//   diced at N while their factor is at most 1.433 N (the table's own longest edge, §3.1).
 // * Depth is at most 2; at depth 2 factors are clamped to N (an interior edge may then stay longer than one).
 // * Output: every subpatch's own vertices (not welded; shared positions are bit-identical), positions in
 //   units of fixed_one = 65534^2 on the root patch. Depth-2 positions are rounded to that unit from an exact
@@ -32,6 +34,8 @@
 namespace ctess::rt {
 
 inline constexpr std::uint32_t uniform_split_max_depth = 2;
+// Edges inside the root patch dice at N up to this factor / N: the table's own longest edge (§3.1).
+inline constexpr double uniform_split_interior_tolerance = 1.433;
 inline constexpr std::uint32_t uniform_split_fixed_one = uniform::fixed_one * uniform::fixed_one;
 
 class UniformSplit {
@@ -138,7 +142,10 @@ class UniformSplit {
     template <class Visitor>
     void visit(Visitor& visitor, const Sub& s) const noexcept {
         const std::uint32_t n = tables_->max_factor;
-        const bool fits = s.factor[0] < n + 0.5 && s.factor[1] < n + 0.5 && s.factor[2] < n + 0.5;
+        // Below the root every factor above N belongs to an edge inside the root (a sub-edge of a root edge
+        // is at most N): it is diced at N while within the table's own longest-edge tolerance.
+        const double limit = s.depth == 0 ? n + 0.5 : n * uniform_split_interior_tolerance;
+        const bool fits = s.factor[0] < limit && s.factor[1] < limit && s.factor[2] < limit;
         if (fits || s.depth == uniform_split_max_depth) {
             const UniformPatch p(*tables_, {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])},
                                  options_);
