@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/emit_all.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace uf = ctess::uniform;
@@ -54,18 +55,8 @@ std::vector<Keyed> keyed(const std::vector<DomainPoint>& v, const std::vector<st
     return out;
 }
 
-struct Emitted {
-    std::vector<DomainPoint> vertices;
-    std::vector<std::uint32_t> indices;
-};
-
-Emitted emit(const UniformPatch& p) {
-    Emitted e;
-    e.vertices.resize(p.counts().vertices);
-    e.indices.resize(p.counts().index_count());
-    REQUIRE(p.emit(e.vertices, e.indices));
-    return e;
-}
+using ctess::test::emit_all;
+using ctess::test::Emitted;
 
 // The stored pattern mapped by every corner permutation that carries canonical edge factors onto the output
 // edges; the patch must equal one of them.
@@ -118,7 +109,7 @@ TEST_CASE("uniform runtime: every triple in every order is the stored pattern wi
                             const ctess::PatchOptions opt{ctess::Layout::shared,
                                                           cw ? ctess::Winding::cw : ctess::Winding::ccw};
                             const UniformPatch patch(*set, float(f[0]), float(f[1]), float(f[2]), opt);
-                            const Emitted e = emit(patch);
+                            const Emitted e = emit_all(patch);
                             REQUIRE(patch.counts().triangles == uf::pattern(a, b, c).triangle_count());
                             REQUIRE(matches_some_mapping(e, f, cw));
                             // random access equals the bulk emit

@@ -13,6 +13,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/emit_all.hpp"
+
 using ctess::DomainPoint;
 using ctess::rt::UniformSplit;
 
@@ -20,18 +22,8 @@ namespace {
 
 __extension__ using int128 = __int128;
 
-struct Emitted {
-    std::vector<DomainPoint> vertices;
-    std::vector<std::uint32_t> indices;
-};
-
-Emitted emit(const UniformSplit& s) {
-    Emitted e;
-    e.vertices.resize(s.counts().vertices);
-    e.indices.resize(s.counts().index_count());
-    REQUIRE(s.emit(e.vertices, e.indices));
-    return e;
-}
+using ctess::test::emit_all;
+using ctess::test::Emitted;
 
 int128 area2(DomainPoint a, DomainPoint b, DomainPoint c) {
     const int128 bu = int128{b.u} - a.u, bv = int128{b.v} - a.v, cu = int128{c.u} - a.u,
@@ -56,7 +48,7 @@ TEST_CASE("uniform split: exact coverage, positive triangles, bounded depth", "[
         INFO("factors " << f[0] << "," << f[1] << "," << f[2]);
         const UniformSplit s(set, f[0], f[1], f[2]);
         REQUIRE(s.depth() <= ctess::rt::uniform_split_max_depth);
-        const Emitted e = emit(s);
+        const Emitted e = emit_all(s);
         int128 sum = 0;
         for (std::size_t t = 0; t < e.indices.size(); t += 3) {
             const int128 a =
@@ -99,7 +91,7 @@ TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any dep
         for (float other : {1.0f, 12.0f, 40.0f, 150.0f, 256.0f}) {
             const UniformSplit a(set, other, shared, 256.0f - other / 2);
             const UniformSplit b(set, shared, other / 3 + 1, 200.0f);
-            const Emitted ea = emit(a), eb = emit(b);
+            const Emitted ea = emit_all(a), eb = emit_all(b);
             std::set<Pos> on_a, on_b;
             for (const DomainPoint& d : ea.vertices)
                 if (std::uint64_t{d.u} + d.v == ctess::rt::uniform_split_fixed_one)
@@ -121,7 +113,7 @@ TEST_CASE("uniform split: below the table it is the plain patch, scaled", "[unif
     REQUIRE(s.subpatch_count() == 1);
     REQUIRE(s.depth() == 0);
     REQUIRE(s.counts() == p.counts());
-    const Emitted e = emit(s);
+    const Emitted e = emit_all(s);
     for (std::uint32_t i = 0; i < p.counts().vertices; ++i) {
         const DomainPoint q = p.vertex(i);
         REQUIRE(e.vertices[i] ==

@@ -340,6 +340,17 @@ V2 enclosing_centre(const std::vector<V2>& q) {
 
 constexpr double angle_guard = 15.0 * pi / 180.0;
 
+// The neighbours of v, sorted.
+std::vector<int> ring_of(const Mesh& m, const std::vector<std::vector<int>>& inc, int v) {
+    std::vector<int> ring;
+    for (int ti : inc[v])
+        for (int k = 0; k < 3; ++k)
+            if (m.t[ti][k] != v) ring.push_back(m.t[ti][k]);
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    return ring;
+}
+
 // Minimax polish: each interior vertex to the centre of the smallest circle around its neighbours, if every
 // incident triangle stays positive and its smallest angle stays above min(15 degrees, the current one).
 void polish(Mesh& m, int sweeps) {
@@ -347,12 +358,7 @@ void polish(Mesh& m, int sweeps) {
         auto inc = incidence(m);
         bool moved = false;
         for (int v = m.nb; v < int(m.p.size()); ++v) {
-            std::vector<int> ring;
-            for (int ti : inc[v])
-                for (int k = 0; k < 3; ++k)
-                    if (m.t[ti][k] != v) ring.push_back(m.t[ti][k]);
-            std::sort(ring.begin(), ring.end());
-            ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+            const std::vector<int> ring = ring_of(m, inc, v);
             std::vector<V2> q;
             for (int r : ring) q.push_back(m.p[r]);
             const V2 c = enclosing_centre(q);
@@ -410,12 +416,7 @@ bool best_collapse(const Mesh& m, int& out_v, int& out_n) {
     double best = 1e300;
     bool found = false;
     for (int v = m.nb; v < int(m.p.size()); ++v) {
-        std::vector<int> ring;
-        for (int ti : inc[v])
-            for (int k = 0; k < 3; ++k)
-                if (m.t[ti][k] != v) ring.push_back(m.t[ti][k]);
-        std::sort(ring.begin(), ring.end());
-        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+        const std::vector<int> ring = ring_of(m, inc, v);
         for (int n : ring) {
             // link condition: v and n share exactly two neighbours
             int common = 0;
