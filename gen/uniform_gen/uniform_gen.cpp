@@ -564,12 +564,12 @@ std::map<int, Pattern> candidates(const Triple& t) {
     base.nb = int(base.p.size());
     base.t = dp_triangulation(t, b);
     const V2 corners[3] = {e.c0, e.c1, e.c2};
-    // Lattice starts: three orientations (along each edge), seven spacings, three distances kept from the
-    // domain edges (in spacings). The closer margins find the sparser patterns.
-    for (const double margin : {0.2, 0.3, 0.4})
+    // Lattice starts: three orientations (along each edge), ten spacings (0.82 to 1.27), three distances kept
+    // from the domain edges (in spacings). The closer margins find the sparser patterns.
+    for (const double margin : {0.15, 0.25, 0.35})
         for (int edge = 0; edge < 3; ++edge)
-            for (int sp = 0; sp < 7; ++sp) {
-                const double s = 0.85 + 0.07 * sp;
+            for (int sp = 0; sp < 10; ++sp) {
+                const double s = 0.82 + 0.05 * sp;
                 const V2 o = corners[edge], dir = corners[(edge + 1) % 3] - o;
                 const V2 ex = (1.0 / dist(corners[(edge + 1) % 3], o)) * dir;
                 const V2 ey{-ex.y, ex.x};
