@@ -18,6 +18,7 @@
 #include <ctess/runtime/cp_table_set.hpp>
 
 #include "cp_table_objects.hpp"
+#include "uniform_table_objects.hpp"
 
 namespace {
 
@@ -39,6 +40,7 @@ struct Config {
     unsigned max_factor;
     std::vector<TableObject> objects;
     std::string object_paths;
+    std::string family = "cp"; // or "uniform"
 };
 
 template <class A>
@@ -62,15 +64,28 @@ std::vector<TableObject> token_and_gap(const tables::TokenTable<Max>& tok, const
               table("gap T1 fans", gap.t1_last_fan)}}};
 }
 
+template <unsigned Max>
+Config uniform_config(const ctess::uniform::tables::UniformTables<Max>& t, const char* paths) {
+    return {Max,
+            {{fmt::format("uniform_table_{}", Max),
+              sizeof(t),
+              {table("uniform offsets", t.offsets), table("uniform interior", t.interior),
+               table("uniform indices", t.indices)}}},
+            paths,
+            "uniform"};
+}
+
 std::vector<Config> configs() {
     namespace d = ctess::rt::detail;
     Config c64{64, token_and_gap(d::token_table_64, d::gap_table_64), CTESS_TABLE_OBJECTS_64};
     c64.objects.push_back(column_object(d::column_chunk_64_0, "column_chunk_64_0"));
     Config c256{256, token_and_gap(d::token_table_256, d::gap_table_256), CTESS_TABLE_OBJECTS_256};
-#define CTESS_REPORT_CHUNK_256(k) c256.objects.push_back(column_object(d::column_chunk_256_##k, "column_chunk_256_" #k));
+#define CTESS_REPORT_CHUNK_256(k)                                                                            \
+    c256.objects.push_back(column_object(d::column_chunk_256_##k, "column_chunk_256_" #k));
     CTESS_FOR_EACH_COLUMN_CHUNK_256(CTESS_REPORT_CHUNK_256)
 #undef CTESS_REPORT_CHUNK_256
-    return {c64, c256};
+    return {c64, c256, uniform_config(d::uniform_table_11, CTESS_UNIFORM_TABLE_OBJECTS_11),
+            uniform_config(d::uniform_table_16, CTESS_UNIFORM_TABLE_OBJECTS_16)};
 }
 
 // The merged rows of a configuration (column chunks summed) and the total.
@@ -166,7 +181,8 @@ struct Flash {
     std::size_t verify = 0; // verify_tables' code and nibble table (arm_verify_probe.cpp)
 };
 
-// text + rodata of the Cortex-M4 objects: the tables, the runtime (probe and the CpPatch sources), and the linked program.
+// text + rodata of the Cortex-M4 objects: the tables, the runtime (probe and the CpPatch sources), and the
+// linked program.
 Flash flash([[maybe_unused]] unsigned max_factor) {
     Flash f;
 #ifdef CTESS_ARM_SIZE
@@ -187,7 +203,8 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
         }
         if (obj.find("cp_tables_") != std::string::npos)
             f.tables += sum;
-        else if (obj.find("cp_runtime_probe") != std::string::npos || obj.find("cp_patch_") != std::string::npos)
+        else if (obj.find("cp_runtime_probe") != std::string::npos ||
+                 obj.find("cp_patch_") != std::string::npos)
             f.runtime += sum;
         else if (obj.find("arm_verify_probe") != std::string::npos)
             f.verify += sum;
@@ -220,7 +237,9 @@ Integrity integrity(unsigned max_factor) {
         const auto start = std::chrono::steady_clock::now();
         const volatile bool ok = static_cast<bool>(ctess::rt::verify_tables(t));
         (void)ok;
-        best = std::min(best, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+        best = std::min(
+            best,
+            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
     }
     r.microseconds = best;
     r.data_bytes = sizeof(ctess::rt::CpTableDigest) + t.digest->chunks * sizeof(std::uint32_t);
@@ -241,12 +260,12 @@ int main(int argc, char** argv) {
         std::string why;
         const bool verified = verify(c, why);
         ok = ok && verified;
-        const Flash f = flash(c.max_factor);
-        const Integrity check = integrity(c.max_factor);
+        const Flash f = c.family == "cp" ? flash(c.max_factor) : Flash{};
+        const Integrity check = c.family == "cp" ? integrity(c.max_factor) : Integrity{true, 0, 0};
         ok = ok && check.ok;
         if (json) {
-            report +=
-                fmt::format("{}\n  {{\"max_tess_factor\": {}, \"tables\": [", k ? "," : "", c.max_factor);
+            report += fmt::format("{}\n  {{\"family\": \"{}\", \"max_tess_factor\": {}, \"tables\": [",
+                                  k ? "," : "", c.family, c.max_factor);
             for (std::size_t r = 0; r < rows.size(); ++r)
                 report += fmt::format("{}\n    {{\"name\": \"{}\", \"entries\": {}, \"bytes\": {}}}",
                                       r ? "," : "", rows[r].name, rows[r].entries, rows[r].bytes);
@@ -257,19 +276,23 @@ int main(int argc, char** argv) {
                     ", \"cortex_m4_flash\": {{\"tables\": {}, \"runtime\": {}, \"program_text\": {}, "
                     "\"verify_tables\": {}}}",
                     f.tables, f.runtime, f.program, f.verify);
-            report += fmt::format(", \"verify_tables\": {{\"ok\": {}, \"microseconds\": {:.1f}, \"data_bytes\": {}}}",
-                                  check.ok, check.microseconds, check.data_bytes);
+            if (c.family == "cp")
+                report += fmt::format(
+                    ", \"verify_tables\": {{\"ok\": {}, \"microseconds\": {:.1f}, \"data_bytes\": {}}}",
+                    check.ok, check.microseconds, check.data_bytes);
             report += "}";
         } else {
-            report += fmt::format("max_tess_factor {}\n  {:<16} {:>9} {:>9}\n", c.max_factor, "table",
-                                  "entries", "bytes");
+            report +=
+                fmt::format("{}max_tess_factor {}\n  {:<16} {:>9} {:>9}\n",
+                            c.family == "cp" ? "" : "uniform ", c.max_factor, "table", "entries", "bytes");
             for (const Table& t : rows)
                 report += fmt::format("  {:<16} {:>9} {:>9}\n", t.name, t.entries, t.bytes);
             report += fmt::format("  {:<16} {:>9} {:>9}  ({:.1f} KiB, with alignment padding)\n", "total", "",
                                   total, static_cast<double>(total) / 1024.0);
             report += verified ? "  checked: every table object's nm size equals its type's size\n"
                                : fmt::format("  CHECK FAILED: {}\n", why);
-            if (f.available)
+            if (c.family != "cp") {
+            } else if (f.available)
                 report += fmt::format(
                     "  Cortex-M4 (-Os, thumb, no exceptions/RTTI), text + rodata: tables {} B, runtime "
                     "{} B; linked bare-metal program text {} B\n",
@@ -277,12 +300,14 @@ int main(int argc, char** argv) {
             else
                 report += "  Cortex-M4 footprint: not built (install gcc-arm-none-eabi, "
                           "libstdc++-arm-none-eabi-newlib)\n";
-            report += fmt::format("  verify_tables: {}, {:.1f} us on this machine (fastest of 50); {} B of digest "
-                                  "and CRC constants{}\n",
-                                  check.ok ? "ok" : "FAILED (the tables differ from their compile-time CRC)",
-                                  check.microseconds, check.data_bytes,
-                                  f.available ? fmt::format(", {} B of Cortex-M4 code and CRC table", f.verify)
-                                              : std::string());
+            if (c.family == "cp")
+                report += fmt::format(
+                    "  verify_tables: {}, {:.1f} us on this machine (fastest of 50); {} B of digest "
+                    "and CRC constants{}\n",
+                    check.ok ? "ok" : "FAILED (the tables differ from their compile-time CRC)",
+                    check.microseconds, check.data_bytes,
+                    f.available ? fmt::format(", {} B of Cortex-M4 code and CRC table", f.verify)
+                                : std::string());
         }
     }
     report += json ? "\n]\n" : "";

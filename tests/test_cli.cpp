@@ -4,6 +4,7 @@
 #include <ctess/cp_pattern.hpp>
 #include <ctess/d3d11_tessellator.hpp>
 #include <ctess/grid_strip.hpp>
+#include <ctess/uniform_pattern.hpp>
 
 #include <array>
 #include <cstdio>
@@ -368,4 +369,59 @@ TEST_CASE("surface refuses bad thresholds, levels and names with a clear error",
     const Run cube = ctess_cli("surface --name cube");
     CHECK(cube.exit_code == 2);
     CHECK(cube.out.find("sphere, torus, ripple") != std::string::npos);
+}
+
+// --- uniform density (docs/algorithm.md §3) ---
+
+TEST_CASE("cli: pattern --mode uniform is the stored pattern, in any factor order", "[cli][uniform]") {
+    const auto p = ctess::uniform::pattern(11, 9, 6);
+    for (const char* factors : {"11,9,6", "6,11,9", "9,6,11", "10.6,9.4,6"}) {
+        INFO(factors);
+        const Run r = ctess_cli(std::string("pattern --mode uniform --factors ") + factors + " --format json");
+        REQUIRE(r.exit_code == 0);
+        CHECK(json_number(r.out, "fixed_one") == 65534);
+        CHECK(json_number(r.out, "vertex_count") == long(p.vertex_count()));
+        CHECK(json_number(r.out, "triangle_count") == long(p.triangle_count()));
+        CHECK(json_number(r.out, "degenerate_triangle_count") == 0);
+    }
+    const Run svg = ctess_cli("pattern --mode uniform --factors 11,9,6 --format svg");
+    REQUIRE(svg.exit_code == 0);
+    CHECK(svg.out.find("<svg") != std::string::npos);
+    const Run obj = ctess_cli("pattern --mode uniform --factors 11,9,6 --format obj");
+    REQUIRE(obj.exit_code == 0);
+    CHECK(obj.out.find("\nf ") != std::string::npos);
+}
+
+TEST_CASE("cli: pattern --mode uniform above the table splits (units 65534^2, welded when shared)",
+          "[cli][uniform]") {
+    const Run shared = ctess_cli("pattern --mode uniform --factors 40,30,20 --format json");
+    const Run separate = ctess_cli("pattern --mode uniform --factors 40,30,20 --format json --layout provoking");
+    REQUIRE(shared.exit_code == 0);
+    REQUIRE(separate.exit_code == 0);
+    CHECK(json_number(shared.out, "fixed_one") == 4294705156L);
+    CHECK(json_number(shared.out, "degenerate_triangle_count") == 0);
+    CHECK(json_number(shared.out, "triangle_count") == json_number(separate.out, "triangle_count"));
+    CHECK(json_number(shared.out, "vertex_count") < json_number(separate.out, "vertex_count"));
+}
+
+TEST_CASE("cli: pattern --mode uniform bad input is a usage error", "[cli][uniform][bad_input]") {
+    for (const char* args : {"--factors 1,2", "--factors 1,2,3,4", "--factors 3,3,3 --domain quad",
+                             "--factors 3,3,3 --max 64", "--factors 3,3,3 --column-rule staircase",
+                             "--factors 3,-1,3", "--factors 3,nan,3"}) {
+        INFO(args);
+        const Run r = ctess_cli(std::string("pattern --mode uniform ") + args);
+        CHECK(r.exit_code != 0);
+        CHECK(r.out.find("error") != std::string::npos);
+    }
+}
+
+TEST_CASE("cli: efficiency --family uniform totals the stored patterns", "[cli][uniform]") {
+    unsigned total = 0;
+    for (unsigned a = 1; a <= 11; ++a)
+        for (unsigned b = 1; b <= a; ++b)
+            for (unsigned c = 1; c <= b; ++c) total += ctess::uniform::pattern(a, b, c).triangle_count();
+    const Run r = ctess_cli("efficiency --family uniform");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("| a <= 11 | 286 | " + std::to_string(total) + " |") != std::string::npos);
+    CHECK(r.out.find("binary longest-edge") != std::string::npos);
 }

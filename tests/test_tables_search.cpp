@@ -1,5 +1,5 @@
 // The O(1) reverse lookups over the column table, checked for every element of every token pair of both
-// table sets (docs/algorithm.md §3.2): vertex -> column, strip triangle -> strip and provoking
+// table sets (docs/algorithm.md §4.2): vertex -> column, strip triangle -> strip and provoking
 // copy -> column. The first guess is also moved by -1 and +1, so that a target whose float square root or
 // division differs by a few ulp still lands inside the window. Every Newton step must leave a residual in
 // [0, search_window].

@@ -1,4 +1,4 @@
-// All compile-time CP tables of one maximum factor (docs/algorithm.md §2, §3):
+// All compile-time CP tables of one maximum factor (docs/algorithm.md §2, §4):
 // the token table, the interior column table (in chunks) and the gap table. This header only gathers the
 // builders and the chunk counts; the objects are emitted once, into .rodata, by runtime/src/cp_tables_*.cpp.
 #pragma once

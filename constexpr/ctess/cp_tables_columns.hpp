@@ -1,6 +1,6 @@
 // Interior column table builder: per token pair (shape0, shape2) the column starts C_k of the Type 2
 // parallelogram (docs/algorithm.md §2.3-2.4, rule (b), the default) and a least-squares quadratic that gives
-// the reverse lookups their first guess (docs/algorithm.md §3.4).
+// the reverse lookups their first guess (docs/algorithm.md §4.4).
 //
 // The table is split into chunks by shape2 ranges, so that the heavy constant evaluation can run in several
 // translation units. Sizes come from a cheap closed pass (the first column with one point); the fill pass

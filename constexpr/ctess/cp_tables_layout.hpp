@@ -1,4 +1,4 @@
-// Record layouts of the compile-time CP tables (docs/algorithm.md §2, §3) and the
+// Record layouts of the compile-time CP tables (docs/algorithm.md §2, §4) and the
 // constants that builders and the runtime must agree on.
 //
 // Tables are indexed by *shape* token: a T0 edge uses T1's points at t = 0 (cp_edge_line.hpp), so T1..T(n-1)

@@ -6,6 +6,7 @@
 //   cp::line_state          one CP edge: token and lerp of a float factor
 //   cp::smallest_edge_rotation   the orientation rule for a base triangle
 //   d3d11::tessellate_tri   the D3D11 fixed-function tessellator (and _quad, _isoline)
+//   uniform::pattern        the uniform-density pattern of a sorted integer triple (seed 001)
 //   grid::fill_strip_indices    a U x V grid as one triangle strip (seed 002)
 //   adaptive::ConformingBintree   crack-free adaptive bisection of the parameter square (seed 004)
 //   ctess::Counts, ctess::PatchOptions   the vocabulary every pattern family shares
@@ -24,6 +25,9 @@
 #include "d3d11_tessellator.hpp"
 
 #include "line_modes.hpp"
+
+#include "uniform_pattern.hpp"
+#include "uniform_quantise.hpp"
 
 #include "conforming_bintree.hpp"
 #include "grid_eval.hpp"

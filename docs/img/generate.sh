@@ -37,5 +37,10 @@ cp_anim_2.6 cp 2.6,2.6,2.6 --layout shared
 cp_8_8_8_provoking cp 8,8,8 --provoking
 cp_5_5_5_provoking cp 5,5,5 --provoking
 cp_quad_12_5_12_30 cp 12,5,12,30 --domain quad --layout shared
+uniform_11_9_6 uniform 11,9,6
+uniform_7_6_3 uniform 7,6,3
+uniform_11_4_2 uniform 11,4,2
+uniform_16_13_9 uniform 16,13,9
+uniform_40_30_20 uniform 40,30,20
 LIST
 echo "figures written to $here"

@@ -1,7 +1,7 @@
 // The table objects behind cp_tables_64 and cp_tables_256, declared for the translation units that define
 // them or point at them. Each object is defined `constexpr` right after its `extern` declaration: constexpr
 // makes a limit hit a compile error instead of a silent run-time initialiser, and the prior extern
-// declaration gives it external linkage (docs/algorithm.md §3.5).
+// declaration gives it external linkage (docs/algorithm.md §4.5).
 #pragma once
 #include <ctess/cp_tables.hpp>
 #include <ctess/runtime/cp_table_integrity.hpp>

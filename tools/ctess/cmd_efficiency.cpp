@@ -2,16 +2,25 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "efficiency.hpp"
+#include "efficiency_uniform.hpp"
 #include "file_output.hpp"
 
 namespace ctess::cli {
 
 int run_efficiency(int argc, char** argv) {
-    const Args args(argc, argv, 2, {"max", "random", "seed", "format", "out"});
+    const Args args(argc, argv, 2, {"max", "random", "seed", "format", "out", "family"});
     const unsigned max = max_factor_from(args);
     const unsigned random = parse_unsigned(args.get_or("random", "40"), "--random", 1, 100000);
     const unsigned seed = parse_unsigned(args.get_or("seed", "2026"), "--seed", 0, 4294967295u);
     const std::string format = choice(args.get_or("format", "markdown"), {"markdown", "json"}, "--format");
+    if (choice(args.get_or("family", "cp"), {"cp", "uniform"}, "--family") == "uniform") {
+        const auto rows = uniform_efficiency_rows(max);
+        write_text(args.get_or("out", "-"),
+                   format == "json"
+                       ? uniform_efficiency_json(rows)
+                       : uniform_efficiency_markdown(rows) + uniform_split_markdown(uniform_split_rows()));
+        return 0;
+    }
     const auto rows = efficiency_rows(max, random, seed);
     const auto summary = summarize(rows);
     write_text(args.get_or("out", "-"), format == "json" ? efficiency_json(rows, summary, max)

@@ -24,6 +24,13 @@ PatternRequest pattern_request_from(const Args& args, const std::string& factors
                                  "--column-rule") == "staircase";
     if (is_d3d11_mode(r.mode) && (args.has("layout") || args.has("max") || args.has("column-rule")))
         throw UsageError("--layout, --max and --column-rule apply to the cp mode only");
+    if (r.mode == "uniform") {
+        if (args.has("max") || args.has("column-rule"))
+            throw UsageError("--max and --column-rule apply to the cp mode only");
+        r.max_factor = CTESS_UNIFORM_MAX_FACTOR; // the configured uniform table
+        // one vertex per position by default; provoking keeps each split subpatch's own vertices
+        r.provoking_layout = args.get_or("layout", "shared") == "provoking";
+    }
     return r;
 }
 

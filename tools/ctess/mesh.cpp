@@ -7,6 +7,8 @@
 #include <ctess/d3d11_tessellator.hpp>
 
 #include <array>
+#include <limits>
+#include <map>
 
 #include <fmt/core.h>
 
@@ -14,7 +16,7 @@ namespace ctess::cli {
 
 const std::vector<std::string>& pattern_modes() {
     static const std::vector<std::string> modes = {"cp", "d3d11-integer", "d3d11-pow2", "d3d11-odd",
-                                                   "d3d11-even"};
+                                                   "d3d11-even", "uniform"};
     return modes;
 }
 
@@ -113,6 +115,7 @@ Mesh tessellate_cp(const PatternRequest& r) {
 Mesh tessellate(const PatternRequest& request) {
     choice(request.mode, pattern_modes(), "--mode");
     choice(request.domain, {"tri", "quad", "iso"}, "--domain");
+    if (request.mode == "uniform") return tessellate_uniform(request);
     return is_d3d11_mode(request.mode) ? tessellate_d3d11(request) : tessellate_cp(request);
 }
 
@@ -122,7 +125,12 @@ std::int64_t doubled_area(const Mesh& mesh, std::size_t t) {
     const DomainPoint& c = mesh.vertices[mesh.indices[3 * t + 2]];
     const std::int64_t bx = std::int64_t{b.u} - a.u, by = std::int64_t{b.v} - a.v;
     const std::int64_t cx = std::int64_t{c.u} - a.u, cy = std::int64_t{c.v} - a.v;
-    return bx * cy - by * cx;
+    // 128-bit products: split uniform patches use fixed_one = 65534^2, whose squares exceed 64 bits; the
+    // result saturates (sign and zero kept).
+    __extension__ using wide = __int128;
+    const wide area = wide{bx} * cy - wide{by} * cx;
+    constexpr std::int64_t top = std::numeric_limits<std::int64_t>::max();
+    return area > top ? top : area < -top ? -top : static_cast<std::int64_t>(area);
 }
 
 std::size_t degenerate_triangles(const Mesh& mesh) {

@@ -9,7 +9,7 @@
 namespace ctess::cli {
 
 struct PatternRequest {
-    std::string mode = "cp";        // cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
+    std::string mode = "cp";        // cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even, uniform
     std::string domain = "tri";     // tri; quad and iso for D3D11 modes
     std::vector<float> factors;     // cp: n0,n1,n2; D3D11 in the reference's order
     bool ccw = false;               // output winding
@@ -30,7 +30,9 @@ const std::vector<std::string>& pattern_modes();
 bool is_d3d11_mode(const std::string& mode);
 // Validates the factor count for the mode and domain (UsageError otherwise), then tessellates.
 Mesh tessellate(const PatternRequest& request);
-// Twice the signed area of triangle t, in units of fixed_one^2 (exact).
+// The uniform-density mode (mesh_uniform.cpp): three edge factors, the configured table's patterns.
+Mesh tessellate_uniform(const PatternRequest& request);
+// Twice the signed area of triangle t, in units of fixed_one^2 (exact; saturated beyond 64 bits).
 std::int64_t doubled_area(const Mesh& mesh, std::size_t t);
 std::size_t degenerate_triangles(const Mesh& mesh);
 

@@ -1,5 +1,7 @@
 #include "mesh_formats.hpp"
 
+#include <ctess/runtime/uniform_patch.hpp>
+
 #include "svg_writer.hpp"
 
 #include <cmath>
@@ -66,14 +68,27 @@ namespace {
 
 constexpr double kWidth = 720, kHeight = 700, kMargin = 70, kTop = 96;
 
-// Domain -> picture. Triangles are drawn equilateral: (0,0) bottom left, (1,0) bottom right, (0,1) top.
-// Quads are drawn as a square with (0,0) bottom left.
+// Domain -> picture. Triangles are drawn equilateral: (0,0) bottom left, (1,0) bottom right, (0,1) top;
+// uniform-density triangles with their factors as side lengths (when those make a Euclidean triangle), so
+// that equal intrinsic lengths look equal. Quads are drawn as a square with (0,0) bottom left.
 struct Frame {
     bool square = false;
     double side = kWidth - 2 * kMargin;
-    double x(double u, double v) const { return kMargin + side * (square ? u : u + 0.5 * v); }
-    double y(double v) const { return kHeight - kMargin - side * (square ? v : v * std::sqrt(3.0) / 2.0); }
+    double ux = 1, vx = 0.5, vy = std::sqrt(3.0) / 2.0, x0 = 0; // v1 = (ux, 0), v2 = (vx, vy), unit width
+    double x(double u, double v) const { return kMargin + side * (square ? u : x0 + u * ux + v * vx); }
+    double y(double v) const { return kHeight - kMargin - side * (square ? v : v * vy); }
 };
+
+void shape_uniform_frame(Frame& fr, const std::vector<float>& f, unsigned max_factor) {
+    if (f.size() != 3) return;
+    const std::uint32_t top = max_factor * max_factor; // split patches go up to N^2 (docs/algorithm.md §3.5)
+    const double a = rt::uniform_factor(f[0], top), b = rt::uniform_factor(f[1], top),
+                 c = rt::uniform_factor(f[2], top);
+    if (!(a < b + c && b < a + c && c < a + b)) return; // non-Euclidean: keep the equilateral frame
+    const double x2 = (a * a + c * c - b * b) / (2 * a), y2 = std::sqrt(std::max(0.0, c * c - x2 * x2));
+    const double lo = std::min(0.0, x2), hi = std::max(a, x2), width = hi - lo;
+    fr.ux = a / width, fr.vx = x2 / width, fr.vy = y2 / width, fr.x0 = -lo / width;
+}
 
 } // namespace
 
@@ -81,8 +96,9 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
     SvgWriter svg(kWidth, kHeight);
     Frame fr;
     fr.square = r.domain != "tri";
+    if (r.mode == "uniform" && !fr.square) shape_uniform_frame(fr, r.factors, r.max_factor);
     if (!fr.square)
-        fr.side = std::min(kWidth - 2 * kMargin, (kHeight - kMargin - kTop) / (std::sqrt(3.0) / 2.0));
+        fr.side = std::min(kWidth - 2 * kMargin, (kHeight - kMargin - kTop) / fr.vy);
     else
         fr.side = std::min(kWidth - 2 * kMargin, kHeight - kMargin - kTop);
     const double one = mesh.fixed_one;

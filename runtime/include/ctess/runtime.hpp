@@ -1,6 +1,7 @@
 // ctess's front door for the embedded runtime: O(1) patches over the compile-time tables, the CPU mesh
 // pipeline and crack-free surface evaluation. Link ctess::runtime (the configured tables, named
-// ctess::rt::cp_tables in code) or ctess::runtime_64 / ctess::runtime_256 (cp_tables_64 / cp_tables_256).
+// ctess::rt::cp_tables and ctess::rt::uniform_tables in code), or pick per table set: ctess::runtime_64 /
+// ctess::runtime_256 (cp_tables_64 / cp_tables_256), ctess::uniform_runtime_11 / _16.
 //
 //   ctess::rt::CpPatch patch(ctess::rt::cp_tables, 10.3f, 6.0f, 3.0f);
 //   ctess::Counts n = patch.counts();                  // size the buffers, then fill
@@ -18,3 +19,6 @@
 #include "runtime/parametric_surfaces.hpp"
 #include "runtime/surface_eval.hpp"
 #include "runtime/tess_factor.hpp"
+#include "runtime/uniform_patch.hpp"
+#include "runtime/uniform_split.hpp"
+#include "runtime/uniform_table_set.hpp"

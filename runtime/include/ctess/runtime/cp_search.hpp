@@ -1,6 +1,6 @@
 // O(1) reverse lookup in a concave prefix sequence Y_0 = 0 <= Y_1 <= ... (column starts, strip starts):
 // the largest k in [0, h-1] with Y_k <= e, from a float first guess on a stored quadratic, one integer Newton
-// step and a fixed window of compares (docs/algorithm.md §3.4). No loop depends on the data, and
+// step and a fixed window of compares (docs/algorithm.md §4.4). No loop depends on the data, and
 // the Newton step's two directions are written as selects. The GPU shaders use it (no per-patch state);
 // CpPatch uses per-patch bucket searches for strips and columns instead (cp_patch.hpp), which cost fewer
 // instructions on a CPU.

@@ -1,0 +1,130 @@
+// A uniform-density pattern from the compile-time tables (docs/algorithm.md §3): counts, random access to any
+// vertex or triangle in O(1), and a bulk emit into caller spans. Bit-identical to the constexpr pattern
+// (ctess::uniform::pattern) of the sorted factors, with the corners unswizzled and the winding restored, so
+// that edge i of the output (e0 = v0 -> v1, e1 = v1 -> v2, e2 = v0 -> v2) always has factor f_i segments.
+//
+//   ctess::rt::UniformPatch patch(ctess::rt::uniform_tables_16, 6.0f, 11.0f, 9.0f);
+//   ctess::Counts n = patch.counts();
+//   std::array<std::uint32_t, 3> t = patch.triangle(0);  // counter-clockwise by default
+//   ctess::DomainPoint p = patch.vertex(t[0]);            // exact (u, v), units of uniform::fixed_one =
+//   65534
+//
+// Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value.
+//
+// Factors are rounded to the nearest integer (halves up) and clamped to [1, tables.max_factor]: NaN, -inf,
+// zero, negatives and anything below 1.5 give 1; +inf and anything at or above max_factor - 0.5 give
+// max_factor. Factors above the table go through ctess::rt::uniform_split instead (§3.5).
+// Vertices: the canonical numbering of the sorted pattern (boundary first, then interior); every position
+// once (Layout::shared). Layout::provoking is accepted and gives the same shared layout (documented in
+// §3.4: a uniform pattern has about twice as many triangles as vertices, so a provoking layout would need
+// copies of most vertices). vertex(i) with i >= vertices returns {0, 0}; triangle(p) with p >= triangles
+// returns {0, 0, 0}; emit() returns false and writes nothing when a span is too small.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include <ctess/counts.hpp>
+#include <ctess/domain_point.hpp>
+#include <ctess/patch_options.hpp>
+#include <ctess/uniform_pattern.hpp>
+
+#include "uniform_table_set.hpp"
+
+namespace ctess::rt {
+
+using UniformTriangle = std::array<std::uint32_t, 3>;
+
+// A factor rounded and clamped to [1, max_factor] as documented above.
+constexpr std::uint32_t uniform_factor(float f, std::uint32_t max_factor) noexcept {
+    if (!(f >= 1.5f)) return 1u; // NaN, -inf, negatives, zero, [0, 1.5)
+    if (!(f < static_cast<float>(max_factor) - 0.5f)) return max_factor;
+    return static_cast<std::uint32_t>(f + 0.5f);
+}
+
+class UniformPatch {
+  public:
+    UniformPatch(const UniformTableSet& tables, float f0, float f1, float f2,
+                 PatchOptions options = {}) noexcept
+        : UniformPatch(tables,
+                       std::array<std::uint32_t, 3>{uniform_factor(f0, tables.max_factor),
+                                                    uniform_factor(f1, tables.max_factor),
+                                                    uniform_factor(f2, tables.max_factor)},
+                       options) {}
+    // Integer factors, each already in [1, tables.max_factor] (out-of-range values are clamped).
+    UniformPatch(const UniformTableSet& tables, std::array<std::uint32_t, 3> factors,
+                 PatchOptions options = {}) noexcept;
+
+    Counts counts() const noexcept { return {vertices_, triangles_}; }
+    // The sorted factors of the stored pattern (f0 >= f1 >= f2).
+    std::array<std::uint32_t, 3> sorted_factors() const noexcept { return sorted_; }
+
+    // Vertex i as an exact point (u, v), units of 65534; {0, 0} when i >= counts().vertices.
+    DomainPoint vertex(std::uint32_t i) const noexcept {
+        if (i >= vertices_) return {};
+        const std::uint32_t boundary = sorted_[0] + sorted_[1] + sorted_[2];
+        DomainPoint c;
+        if (i < boundary)
+            c = uniform::boundary_vertex(sorted_[0], sorted_[1], sorted_[2], i);
+        else {
+            const std::uint32_t word = interior_[i - boundary];
+            c = {word & 0xFFFFu, word >> 16};
+        }
+        const std::uint32_t weight[3] = {uniform::fixed_one - c.u - c.v, c.u, c.v}; // canonical v0, v1, v2
+        return {weight[source_[1]], weight[source_[2]]};
+    }
+    // Triangle p's three vertex indices in the requested winding; {0, 0, 0} when p >= counts().triangles.
+    UniformTriangle triangle(std::uint32_t p) const noexcept {
+        if (p >= triangles_) return {0, 0, 0};
+        const std::uint8_t* t = indices_ + 3 * p;
+        return flip_ ? UniformTriangle{t[0], t[2], t[1]} : UniformTriangle{t[0], t[1], t[2]};
+    }
+    // Writes every vertex and every triangle (3 indices each). Returns false and writes nothing when either
+    // span is too small.
+    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+        if (vertices.size() < vertices_ || indices.size() < 3u * triangles_) return false;
+        for (std::uint32_t i = 0; i < vertices_; ++i) vertices[i] = vertex(i);
+        for (std::uint32_t p = 0; p < triangles_; ++p) {
+            const UniformTriangle t = triangle(p);
+            indices[3 * p] = t[0], indices[3 * p + 1] = t[1], indices[3 * p + 2] = t[2];
+        }
+        return true;
+    }
+
+  private:
+    std::array<std::uint32_t, 3> sorted_{1, 1, 1};
+    std::array<std::uint8_t, 3> source_{0, 1, 2}; // output corner -> canonical corner
+    bool flip_ = false;
+    std::uint32_t vertices_ = 0;
+    std::uint32_t triangles_ = 0;
+    const std::uint32_t* interior_ = nullptr;
+    const std::uint8_t* indices_ = nullptr;
+};
+
+inline UniformPatch::UniformPatch(const UniformTableSet& tables, std::array<std::uint32_t, 3> factors,
+                                  PatchOptions options) noexcept {
+    for (std::uint32_t& f : factors) f = f < 1 ? 1u : f > tables.max_factor ? tables.max_factor : f;
+    // order[k]: the output edge that gets the canonical edge k (descending factors, ties by edge index).
+    std::array<std::uint8_t, 3> order{0, 1, 2};
+    if (factors[order[1]] > factors[order[0]]) std::swap(order[0], order[1]);
+    if (factors[order[2]] > factors[order[1]]) std::swap(order[1], order[2]);
+    if (factors[order[1]] > factors[order[0]]) std::swap(order[0], order[1]);
+    for (int k = 0; k < 3; ++k) sorted_[k] = factors[order[k]];
+    // The corner opposite an edge: e0 -> v2, e1 -> v0, e2 -> v1. Canonical v2, v0, v1 sit opposite the
+    // canonical e0, e1, e2; each goes to the output corner opposite the output edge of the same factor.
+    constexpr std::uint8_t opposite[3] = {2, 0, 1};
+    const std::uint8_t target[3] = {opposite[order[1]], opposite[order[2]],
+                                    opposite[order[0]]}; // of v0, v1, v2
+    for (std::uint8_t c = 0; c < 3; ++c) source_[target[c]] = c;
+    const bool odd = (target[1] + 3 - target[0]) % 3 != 1; // a reflection reverses the winding
+    flip_ = odd != (options.winding == Winding::cw);
+    const std::uint32_t index = uniform::pattern_index(sorted_[0], sorted_[1], sorted_[2]);
+    const uniform::tables::Offset first = tables.offsets[index], next = tables.offsets[index + 1];
+    const std::uint32_t interior = static_cast<std::uint32_t>(next.interior - first.interior);
+    vertices_ = sorted_[0] + sorted_[1] + sorted_[2] + interior;
+    triangles_ = static_cast<std::uint32_t>(next.triangle - first.triangle);
+    interior_ = tables.interior + first.interior;
+    indices_ = tables.indices + 3u * first.triangle;
+}
+
+} // namespace ctess::rt

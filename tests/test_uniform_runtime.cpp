@@ -1,0 +1,205 @@
+// ctess::rt::UniformPatch against the constexpr patterns (docs/algorithm.md §3.4): for every sorted triple of
+// both table sets and every order of its factors, the patch is the stored pattern with its corners mapped so
+// that output edge i has f_i segments, counter-clockwise (or clockwise on request); neighbouring patches weld
+// bit for bit; bad input gets the documented clamp.
+#include <ctess/runtime/uniform_patch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "support/emit_all.hpp"
+#include "support/mesh_checks.hpp"
+
+namespace uf = ctess::uniform;
+using ctess::DomainPoint;
+using ctess::rt::UniformPatch;
+using ctess::rt::UniformTableSet;
+
+namespace {
+
+using Factors = std::array<std::uint32_t, 3>;
+using Keyed = std::array<std::uint64_t, 3>;
+
+// The corner permutations: perm[c] = output corner of canonical corner c.
+constexpr std::array<std::array<int, 3>, 6> permutations = {
+    {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+
+// Edge (a, b) of corners -> edge index: {0,1} e0, {1,2} e1, {0,2} e2.
+int edge_of(int a, int b) {
+    const int lo = std::min(a, b), hi = std::max(a, b);
+    return lo == 0 ? (hi == 1 ? 0 : 2) : 1;
+}
+
+DomainPoint map_point(DomainPoint c, const std::array<int, 3>& perm) {
+    const std::uint32_t weight[3] = {uf::fixed_one - c.u - c.v, c.u, c.v};
+    std::uint32_t out[3] = {};
+    for (int k = 0; k < 3; ++k) out[perm[k]] = weight[k];
+    return {out[1], out[2]};
+}
+
+// The triangles of a mesh as rotated position keys, sorted (winding kept).
+std::vector<Keyed> keyed(const std::vector<DomainPoint>& v, const std::vector<std::uint32_t>& idx) {
+    std::vector<Keyed> out;
+    for (std::size_t t = 0; t < idx.size(); t += 3) {
+        const auto r = ctess::test::canonical_rotation({v[idx[t]], v[idx[t + 1]], v[idx[t + 2]]});
+        out.push_back({ctess::test::position_key(r[0]), ctess::test::position_key(r[1]),
+                       ctess::test::position_key(r[2])});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+using ctess::test::emit_all;
+using ctess::test::Emitted;
+
+// The stored pattern mapped by every corner permutation that carries canonical edge factors onto the output
+// edges; the patch must equal one of them.
+bool matches_some_mapping(const Emitted& e, const Factors& f, bool cw) {
+    std::array<std::uint32_t, 3> s = f;
+    std::sort(s.begin(), s.end(), std::greater<>());
+    const uf::Pattern p = uf::pattern(s[0], s[1], s[2]);
+    const auto got = keyed(e.vertices, e.indices);
+    for (const auto& perm : permutations) {
+        // canonical e0 = (0,1), e1 = (1,2), e2 = (0,2)
+        if (f[edge_of(perm[0], perm[1])] != s[0] || f[edge_of(perm[1], perm[2])] != s[1] ||
+            f[edge_of(perm[0], perm[2])] != s[2])
+            continue;
+        std::vector<DomainPoint> v;
+        for (unsigned k = 0; k < p.vertex_count(); ++k) v.push_back(map_point(p.vertex(k), perm));
+        std::vector<std::uint32_t> idx;
+        for (unsigned t = 0; t < p.triangle_count(); ++t) {
+            auto tri = p.triangle(t);
+            // orient counter-clockwise in the output plane (or clockwise on request)
+            const bool ccw = ctess::test::signed_area2(v[tri[0]], v[tri[1]], v[tri[2]]) > 0;
+            if (ccw == cw) std::swap(tri[1], tri[2]);
+            idx.insert(idx.end(), tri.begin(), tri.end());
+        }
+        if (keyed(v, idx) == got) return true;
+    }
+    return false;
+}
+
+std::vector<std::uint32_t> parameters(unsigned f) {
+    std::vector<std::uint32_t> out;
+    for (unsigned i = 0; i <= f; ++i) out.push_back(uf::edge_parameter(i, f));
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("uniform runtime: every triple in every order is the stored pattern with edge i at f_i",
+          "[uniform][runtime]") {
+    for (const UniformTableSet* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16}) {
+        const unsigned n = set->max_factor;
+        std::size_t checked = 0;
+        for (unsigned a = 1; a <= n; ++a)
+            for (unsigned b = 1; b <= a; ++b)
+                for (unsigned c = 1; c <= b; ++c)
+                    for (const auto& order : permutations) {
+                        const Factors sorted{a, b, c};
+                        const Factors f{sorted[order[0]], sorted[order[1]], sorted[order[2]]};
+                        INFO("max " << n << " factors " << f[0] << "," << f[1] << "," << f[2]);
+                        for (bool cw : {false, true}) {
+                            const ctess::PatchOptions opt{ctess::Layout::shared,
+                                                          cw ? ctess::Winding::cw : ctess::Winding::ccw};
+                            const UniformPatch patch(*set, float(f[0]), float(f[1]), float(f[2]), opt);
+                            const Emitted e = emit_all(patch);
+                            REQUIRE(patch.counts().triangles == uf::pattern(a, b, c).triangle_count());
+                            REQUIRE(matches_some_mapping(e, f, cw));
+                            // random access equals the bulk emit
+                            for (std::uint32_t t = 0; t < patch.counts().triangles; ++t) {
+                                const auto tri = patch.triangle(t);
+                                REQUIRE((tri[0] == e.indices[3 * t] && tri[1] == e.indices[3 * t + 1] &&
+                                         tri[2] == e.indices[3 * t + 2]));
+                            }
+                            if (!cw) { // edge i carries exactly f_i segments
+                                const auto loop = ctess::test::boundary_loop_edges(
+                                    parameters(f[0]), parameters(f[1]), parameters(f[2]), uf::fixed_one);
+                                const auto topo =
+                                    ctess::test::surface_topology({e.vertices, e.indices}, loop);
+                                REQUIRE(topo.boundary_matches);
+                                REQUIRE(topo.edges_unique);
+                            }
+                        }
+                        ++checked;
+                    }
+        REQUIRE(checked == 6 * uf::pattern_count(n));
+    }
+}
+
+TEST_CASE("uniform runtime: two patches sharing an edge weld bit for bit", "[uniform][runtime]") {
+    // Patch A on corners (P0, P1, P2); patch B on (P2, P1, Q) shares A's e1 (P1 -> P2) as its e0 (P2 -> P1).
+    // Positions are exact integer interpolations of integer corners.
+    using Pos = std::array<std::int64_t, 2>;
+    const Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
+    auto position = [](DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
+        const std::int64_t w = uf::fixed_one - d.u - d.v;
+        return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
+    };
+    const UniformTableSet& set = ctess::rt::uniform_tables_16;
+    for (std::uint32_t shared = 1; shared <= 16; ++shared)
+        for (std::uint32_t a0 = 1; a0 <= 16; ++a0)
+            for (std::uint32_t a2 = 1; a2 <= 16; ++a2)
+                for (std::uint32_t b1 = 1; b1 <= 16; b1 += 3) {
+                    const UniformPatch a(set, float(a0), float(shared), float(a2));
+                    const UniformPatch b(set, float(shared), float(b1), float(a2 == 1 ? 16 : a2 - 1));
+                    std::set<Pos> on_a, on_b;
+                    for (std::uint32_t i = 0; i < a.counts().vertices; ++i) {
+                        const DomainPoint d = a.vertex(i);
+                        if (d.u + d.v == uf::fixed_one) on_a.insert(position(d, P0, P1, P2));
+                    }
+                    for (std::uint32_t i = 0; i < b.counts().vertices; ++i) {
+                        const DomainPoint d = b.vertex(i);
+                        if (d.v == 0) on_b.insert(position(d, P2, P1, Q));
+                    }
+                    INFO("shared " << shared << " a " << a0 << "," << a2 << " b " << b1);
+                    REQUIRE(on_a.size() == shared + 1);
+                    REQUIRE(on_a == on_b);
+                }
+}
+
+TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",
+          "[uniform][runtime][bad_input]") {
+    const UniformTableSet& set = ctess::rt::uniform_tables_16;
+    constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+    constexpr float inf_f = std::numeric_limits<float>::infinity();
+    for (float f :
+         {nan_f, -inf_f, -5.0f, -0.0f, 0.0f, std::numeric_limits<float>::denorm_min(), 1.0f, 1.49f}) {
+        INFO("f = " << f);
+        CHECK(ctess::rt::uniform_factor(f, 16) == 1);
+        const UniformPatch p(set, f, f, f);
+        CHECK(p.counts() == ctess::Counts{3, 1});
+    }
+    for (float f : {inf_f, 1e30f, 16.0f, 15.5f, 17.0f, float(std::numeric_limits<std::uint32_t>::max())}) {
+        INFO("f = " << f);
+        CHECK(ctess::rt::uniform_factor(f, 16) == 16);
+        CHECK(UniformPatch(set, f, f, f).counts().triangles == 256);
+    }
+    CHECK(ctess::rt::uniform_factor(1.5f, 16) == 2);
+    CHECK(ctess::rt::uniform_factor(2.49f, 16) == 2);
+    CHECK(ctess::rt::uniform_factor(2.5f, 16) == 3);
+    CHECK(ctess::rt::uniform_factor(12.0f, 11) == 11);
+    CHECK(UniformPatch(ctess::rt::uniform_tables_11, 16.0f, 16.0f, 16.0f).counts().triangles == 121);
+    CHECK(UniformPatch(set, Factors{0, 99, 5}).sorted_factors() == Factors{16, 5, 1});
+
+    const UniformPatch p(set, 11.0f, 9.0f, 6.0f);
+    const ctess::Counts n = p.counts();
+    CHECK(p.vertex(n.vertices) == DomainPoint{0, 0});
+    CHECK(p.vertex(0xFFFFFFFFu) == DomainPoint{0, 0});
+    CHECK(p.triangle(n.triangles) == ctess::rt::UniformTriangle{0, 0, 0});
+    std::vector<DomainPoint> v(n.vertices - 1, DomainPoint{7, 7});
+    std::vector<std::uint32_t> idx(n.index_count(), 7u);
+    CHECK_FALSE(p.emit(v, idx));
+    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+    CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
+    v.resize(n.vertices);
+    idx.resize(n.index_count() - 1);
+    CHECK_FALSE(p.emit(v, idx));
+    CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
+}

@@ -1,0 +1,144 @@
+// Uniform-density splitting above the table (docs/algorithm.md §3.5): exact coverage without inverted or
+// zero-area triangles, bounded depth, counts equal to what emit writes, crack-free neighbours at any depth
+// (shared-edge positions equal bit for bit), the patch itself below N, and bad input clamped.
+#include <ctess/runtime/uniform_split.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "support/emit_all.hpp"
+
+using ctess::DomainPoint;
+using ctess::rt::UniformSplit;
+
+namespace {
+
+__extension__ using int128 = __int128;
+
+using ctess::test::emit_all;
+using ctess::test::Emitted;
+
+int128 area2(DomainPoint a, DomainPoint b, DomainPoint c) {
+    const int128 bu = int128{b.u} - a.u, bv = int128{b.v} - a.v, cu = int128{c.u} - a.u,
+                 cv = int128{c.v} - a.v;
+    return bu * cv - bv * cu;
+}
+
+} // namespace
+
+TEST_CASE("uniform split: exact coverage, positive triangles, bounded depth", "[uniform][split]") {
+    const auto& set = ctess::rt::uniform_tables_16;
+    const std::array<std::array<float, 3>, 9> cases = {{{40, 30, 20},
+                                                        {17, 1, 16},
+                                                        {100, 3, 99},
+                                                        {256, 256, 256},
+                                                        {255.4f, 17, 200},
+                                                        {33, 64, 31},
+                                                        {16, 16, 17},
+                                                        {250, 9, 250},
+                                                        {1e9f, 5, 200}}};
+    for (const auto& f : cases) {
+        INFO("factors " << f[0] << "," << f[1] << "," << f[2]);
+        const UniformSplit s(set, f[0], f[1], f[2]);
+        REQUIRE(s.depth() <= ctess::rt::uniform_split_max_depth);
+        const Emitted e = emit_all(s);
+        int128 sum = 0;
+        for (std::size_t t = 0; t < e.indices.size(); t += 3) {
+            const int128 a =
+                area2(e.vertices[e.indices[t]], e.vertices[e.indices[t + 1]], e.vertices[e.indices[t + 2]]);
+            REQUIRE(a > 0);
+            sum += a;
+        }
+        const int128 one = ctess::rt::uniform_split_fixed_one;
+        REQUIRE(sum == one * one);
+        // A split edge with factor T gets S = ceil(T / 16) sub-edges of factor T * span (at most 16 each,
+        // so they never split again); each rounds on its own, so the edge carries T segments within S / 2.
+        std::set<std::uint32_t> on_e0, on_e1, on_e2;
+        for (const DomainPoint& p : e.vertices) {
+            if (p.v == 0) on_e0.insert(p.u);
+            if (std::uint64_t{p.u} + p.v == ctess::rt::uniform_split_fixed_one) on_e1.insert(p.v);
+            if (p.u == 0) on_e2.insert(p.v);
+        }
+        const auto r = s.factors();
+        const std::size_t counts[3] = {on_e0.size() - 1, on_e1.size() - 1, on_e2.size() - 1};
+        for (int i = 0; i < 3; ++i) {
+            const double sub_edges = r[i] <= 16 ? 1.0 : std::ceil(r[i] / 16);
+            INFO("edge " << i << ": " << counts[i] << " segments for factor " << r[i]);
+            CHECK(std::fabs(double(counts[i]) - r[i]) <= (r[i] <= 16 ? 0.0 : sub_edges / 2));
+        }
+    }
+}
+
+TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any depth", "[uniform][split]") {
+    // Patch A (P0, P1, P2) and patch B (P2, P1, Q) share A's e1 as B's e0; integer corners, exact positions.
+    using Pos = std::array<int128, 2>;
+    const Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
+    const int128 one = ctess::rt::uniform_split_fixed_one;
+    auto position = [&](DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
+        const int128 w = one - d.u - d.v;
+        return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
+    };
+    const auto& set = ctess::rt::uniform_tables_16;
+    std::size_t checked = 0;
+    for (float shared : {1.0f, 7.0f, 16.0f, 17.0f, 31.0f, 32.0f, 33.0f, 97.0f, 200.0f, 256.0f})
+        for (float other : {1.0f, 12.0f, 40.0f, 150.0f, 256.0f}) {
+            const UniformSplit a(set, other, shared, 256.0f - other / 2);
+            const UniformSplit b(set, shared, other / 3 + 1, 200.0f);
+            const Emitted ea = emit_all(a), eb = emit_all(b);
+            std::set<Pos> on_a, on_b;
+            for (const DomainPoint& d : ea.vertices)
+                if (std::uint64_t{d.u} + d.v == ctess::rt::uniform_split_fixed_one)
+                    on_a.insert(position(d, P0, P1, P2));
+            for (const DomainPoint& d : eb.vertices)
+                if (d.v == 0) on_b.insert(position(d, P2, P1, Q));
+            INFO("shared " << shared << " other " << other);
+            REQUIRE(on_a.size() >= 2);
+            REQUIRE(on_a == on_b);
+            ++checked;
+        }
+    REQUIRE(checked == 50);
+}
+
+TEST_CASE("uniform split: below the table it is the plain patch, scaled", "[uniform][split]") {
+    const auto& set = ctess::rt::uniform_tables_16;
+    const UniformSplit s(set, 11, 9, 6);
+    const ctess::rt::UniformPatch p(set, 11, 9, 6);
+    REQUIRE(s.subpatch_count() == 1);
+    REQUIRE(s.depth() == 0);
+    REQUIRE(s.counts() == p.counts());
+    const Emitted e = emit_all(s);
+    for (std::uint32_t i = 0; i < p.counts().vertices; ++i) {
+        const DomainPoint q = p.vertex(i);
+        REQUIRE(e.vertices[i] ==
+                DomainPoint{q.u * ctess::uniform::fixed_one, q.v * ctess::uniform::fixed_one});
+    }
+}
+
+TEST_CASE("uniform split bad input: clamps, bounded output, emit refuses small spans",
+          "[uniform][split][bad_input]") {
+    const auto& set = ctess::rt::uniform_tables_11;
+    constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+    constexpr float inf_f = std::numeric_limits<float>::infinity();
+    for (float f : {nan_f, -inf_f, -1.0f, 0.0f, 1.4f}) {
+        const UniformSplit s(set, f, f, f);
+        CHECK(s.counts() == ctess::Counts{3, 1});
+    }
+    for (float f : {inf_f, 1e30f, 121.0f, 500.0f}) {
+        const UniformSplit s(set, f, f, f);
+        CHECK(s.factors()[0] == 121.0);
+        CHECK(s.counts().triangles == 121u * 121u); // regular grids of regular grids
+        CHECK(s.depth() <= 2);
+    }
+    const UniformSplit s(set, 50, 40, 30);
+    std::vector<DomainPoint> v(s.counts().vertices - 1, DomainPoint{7, 7});
+    std::vector<std::uint32_t> idx(s.counts().index_count(), 7u);
+    CHECK_FALSE(s.emit(v, idx));
+    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+}
