@@ -20,5 +20,6 @@ int run_pattern(int argc, char** argv);
 int run_sweep(int argc, char** argv);
 int run_animate(int argc, char** argv);
 int run_efficiency(int argc, char** argv);
+int run_serve(int argc, char** argv);
 
 } // namespace ctess::cli

@@ -20,6 +20,7 @@ commands:
   sweep    --mode M --from a --to b [--steps n] --svg out.svg [--max 64|256]
   animate  --mode M --from a,b,c --to d,e,f --frames n --out DIR [pattern options]
   efficiency [--max 64|256] [--random n] [--seed s] [--format markdown|json] [--out FILE]
+  serve    [--port N] [--viewer DIR] [--shaders DIR]   the browser viewer on 127.0.0.1 (docs/viewer.md)
 
 pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
 line modes:    the pattern modes plus pow2-subdivision, one-at-a-time, even-spacing
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
         if (command == "sweep") return ctess::cli::run_sweep(argc, argv);
         if (command == "animate") return ctess::cli::run_animate(argc, argv);
         if (command == "efficiency") return ctess::cli::run_efficiency(argc, argv);
+        if (command == "serve") return ctess::cli::run_serve(argc, argv);
         fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
         return 2;
     } catch (const ctess::cli::UsageError& e) {
