@@ -153,7 +153,9 @@ async function redraw() {
 async function redrawPattern() {
     const { mode, max } = state;
     const factors = state.factors.slice();
+    const t0 = performance.now();
     const p = await computePattern(mode, factors, max);
+    const t1 = performance.now();
     let ratio = null;
     try {
         const even = await apiPattern('d3d11-even', factors);
@@ -164,14 +166,16 @@ async function redrawPattern() {
             state.sweep.trail.push([toX(p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one), toY(p.uv[2 * i + 1] / p.one)]);
         if (state.sweep.trail.length > 400000) state.sweep.trail.splice(0, 200000);
     }
+    const t2 = performance.now();
     const zero = drawPattern(p, state.sweep ? state.sweep.trail : []);
+    const ms = { compute: t1 - t0, ratio: t2 - t1, draw: performance.now() - t2 };
     $('count-vertices').textContent = p.vertices;
     $('count-triangles').textContent = p.triangles;
     $('count-zero').textContent = zero;
     $('count-ratio').textContent = ratio === null ? 'n/a (needs ctess serve)' : `${ratio.toFixed(3)}×`;
     window.ctessViewer = {
         view: 'pattern', mode, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
-        ratioToD3d11Even: ratio, readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
+        ratioToD3d11Even: ratio, ms, readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
     };
     setStatus(`${mode} · factors ${factorText(factors)} · max ${max}` +
               (mode === 'cp' ? ' · computed by the generated WGSL on WebGPU' : ' · computed by ctess serve'));
