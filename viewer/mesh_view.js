@@ -154,5 +154,6 @@ export class MeshView {
             view: 'mesh', mode: 'cp', max: maxFactor, surface: ['flat', 'pn', 'phong'][surface], diceRate: dice,
             vertices: out.vertexCount, triangles: out.triangleCount,
         };
+        return window.ctessViewer;
     }
 }

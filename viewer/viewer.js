@@ -41,7 +41,12 @@ const apiCache = new Map();
 async function apiPattern(mode, factors) {
     const key = `${mode}:${factors.join(',')}`;
     if (!apiCache.has(key)) {
-        const p = fetch(`api/pattern?mode=${mode}&factors=${factors.map(String).join(',')}`).then(async (r) => {
+        const url = `api/pattern?mode=${mode}&factors=${factors.map(String).join(',')}`;
+        const p = fetch(url).catch(() => {
+            throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern), which did not answer');
+        }).then(async (r) => {
+            if (!(r.headers.get('content-type') ?? '').includes('json'))
+                throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern); this server has none');
             const json = await r.json();
             if (!r.ok) throw new Error(json.error ?? `HTTP ${r.status}`);
             return json;
@@ -128,6 +133,15 @@ function drawPattern(p, trail) {
     ctx.fillText(cp ? 'v0' : 'W', toX(0, 0) - 26, toY(0) + 18);
     ctx.fillText(cp ? 'v1' : 'U', toX(1, 0) + 8, toY(0) + 18);
     ctx.fillText(cp ? 'v2' : 'V', toX(0, 1) - 8, toY(1) - 10);
+    // Edge labels as in the SVGs: CP e0 = v0v1 (bottom), e1 = v1v2, e2 = v2v0; D3D11 Veq0 bottom, Ueq0 left, Weq0 right.
+    const f = (k) => String(Number(state.factors[k].toPrecision(7)));
+    ctx.fillStyle = '#2a6f3a';
+    ctx.font = 'bold 14px DejaVu Sans, sans-serif';
+    ctx.fillText(cp ? `e0 = ${f(0)}` : `Veq0 = ${f(1)}`, toX(0.5, 0) - 40, toY(0) + 34);
+    ctx.fillText(cp ? `e1 = ${f(1)}` : `Weq0 = ${f(2)}`, toX(0.5, 0.5) + 14, toY(0.5));
+    ctx.textAlign = 'right';
+    ctx.fillText(cp ? `e2 = ${f(2)}` : `Ueq0 = ${f(0)}`, toX(0, 0.5) - 14, toY(0.5));
+    ctx.textAlign = 'left';
     return zero;
 }
 
@@ -140,7 +154,10 @@ async function redraw() {
         do {
             pending = false;
             if (state.view === 'pattern') await redrawPattern();
-            else await meshView.redraw(state.max);
+            else {
+                const m = await meshView.redraw(state.max);
+                setStatus(`mesh · ${m.surface} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
+            }
         } while (pending);
     } catch (e) {
         setStatus(`Error: ${e.message}`, true);
@@ -186,6 +203,7 @@ function showFactors() {
     for (let k = 0; k < 3; k++) {
         $(`f${k}`).max = String(state.max);
         $(`f${k}`).value = String(state.factors[k]);
+        $(`f${k}-value`).textContent = String(Number(state.factors[k].toPrecision(7)));
     }
     $('factors').value = factorText(state.factors);
     $('mode').value = state.mode;

@@ -42,6 +42,11 @@ int run_serve(int argc, char** argv) {
     const std::string shaders = args.get_or("shaders", CTESS_SHADER_DIR);
 
     httplib::Server server;
+    // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, which lets a second server share a busy port.
+    server.set_socket_options([](socket_t sock) {
+        int yes = 1;
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+    });
     if (!server.set_mount_point("/shaders", shaders))
         throw std::runtime_error("--shaders: cannot serve '" + shaders + "' (not a directory)");
     if (!server.set_mount_point("/", viewer))
