@@ -48,12 +48,11 @@ export class CpPipeline {
             entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < 4 ? 'read-only-storage' : 'storage' } });
         p.layout = device.createBindGroupLayout({ entries });
         const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
-        const make = (entryPoint) => device.createComputePipeline({ layout: pipelineLayout, compute: { module, entryPoint } });
-        p.explicitSetup = make('viewer_explicit_setup');
-        p.setup = make('ctess_patch_setup');
-        p.scan = make('ctess_prefix_sum');
-        p.emitVertices = make('ctess_emit_vertices');
-        p.emitTriangles = make('ctess_emit_triangles');
+        // Compiled concurrently (each pipeline compiles the whole module: seconds on a software adapter).
+        const make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
+        [p.explicitSetup, p.setup, p.scan, p.emitVertices, p.emitTriangles] = await Promise.all([
+            make('viewer_explicit_setup'), make('ctess_patch_setup'), make('ctess_prefix_sum'),
+            make('ctess_emit_vertices'), make('ctess_emit_triangles')]);
         const err = await device.popErrorScope();
         if (err) throw new Error(err.message);
         p.tables = p.storage(new Uint32Array(blob));

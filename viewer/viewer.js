@@ -148,6 +148,7 @@ function drawPattern(p, trail) {
 // ---- redraw loop: the latest state wins; window.ctessViewer is set after every redraw ----
 let busy = false, pending = false;
 async function redraw() {
+    if (!device) return; // controls moved before WebGPU is up: the first redraw uses the latest state
     if (busy) { pending = true; return; }
     busy = true;
     try {

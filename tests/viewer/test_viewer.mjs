@@ -112,6 +112,7 @@ const cases = [
 ];
 let compared = 0;
 await page.goto(`${base}?mode=cp&max=64&factors=10.3,6,3`);
+await viewerState(() => window.ctessViewer);
 for (const [mode, max, triples] of cases) {
     await page.selectOption('#mode', mode);
     await page.selectOption('#max', String(max));
@@ -121,7 +122,7 @@ for (const [mode, max, triples] of cases) {
         const state = await viewerState(factorsMatch, { mode, factors, max });
         if (sameAsCli(state, mode, factors, max)) compared++;
         console.log(`${mode} max ${max} factors ${factors}: ${state.vertices} vertices, ${state.triangles} ` +
-                    `triangles, ${Date.now() - t0} ms`);
+                    `triangles, ${Date.now() - t0} ms (page: ${JSON.stringify(state.ms, (k, v) => (typeof v === "number" ? Math.round(v) : v))})`);
     }
 }
 check(compared >= 20, `only ${compared} patterns matched`);
