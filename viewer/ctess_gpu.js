@@ -112,7 +112,7 @@ export class CpPipeline {
         const patchWords = n * PATCH_WORDS + 2;
         const bPatches = this.storage(null, patchWords);
         const none = [this.storage(null, 4), this.storage(null, 4)];
-        const setup = explicit ? [this.explicitSetup, 1] : [this.setup, Math.ceil(n / 64)];
+        const setup = explicit ? [this.explicitSetup, n] : [this.setup, Math.ceil(n / 64)];
         this.dispatch([bParams, this.tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
         const patches = await this.read(bPatches, patchWords);
         const vertexCount = patches[n * PATCH_WORDS], triangleCount = patches[n * PATCH_WORDS + 1];
@@ -124,22 +124,30 @@ export class CpPipeline {
         return { patches, vertexCount, triangleCount, vertices, indices };
     }
 
-    // One CP triangle with edge factors f0, f1, f2 (floats): the pattern's (u, v) in 2^-24 and its
-    // provoking-first, counter-clockwise triangles, read back from the GPU.
+    // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0): the
+    // pattern's (u, v) in 2^-24 and its provoking-first, counter-clockwise triangles, read back from the GPU.
+    // A quad is the two triangles of cp::split_quad (constexpr/ctess/cp_quad.hpp): A = (q0, q1, q3) with
+    // factors (f0, f0, f3) and B = (q2, q3, q1) with (f2, f0, f1), the diagonal taking f0; B's points map to
+    // (1 - u, 1 - v). Both halves keep their own diagonal points, as the CLI's provoking layout does.
     async pattern(factors) {
-        const params = new Uint32Array(13);
-        params.set([1, 0, 0, f32Bits(1), 0, 0, 0, 3, 0, 1]);
-        params.set(factors.map(f32Bits), 10);
+        const halves = factors.length === 4 ? [[factors[0], factors[0], factors[3]], [factors[2], factors[0], factors[1]]] : [factors];
+        const n = halves.length;
+        const params = new Uint32Array(10 + 3 * n);
+        params.set([n, 0, 0, f32Bits(1), 0, 0, 0, 3, 0, n]);
+        params.set(halves.flat().map(f32Bits), 10);
         const mesh = new Float32Array([0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1]);
-        const out = await this.run(params, new Uint32Array(mesh.buffer), new Uint32Array([0, 1, 2]), true);
+        const out = await this.run(params, new Uint32Array(mesh.buffer), new Uint32Array(halves.flatMap(() => [0, 1, 2])), true);
         const words = await this.read(out.vertices, out.vertexCount * VERTEX_WORDS);
         const indices = await this.read(out.indices, out.triangleCount * 3);
         out.vertices.destroy();
         out.indices.destroy();
+        const one = 1 << 24;
+        const secondHalf = n === 2 ? out.patches[PATCH_WORDS + 9] : out.vertexCount;
         const uv = new Uint32Array(out.vertexCount * 2);
         for (let i = 0; i < out.vertexCount; i++) {
-            uv[2 * i] = words[i * VERTEX_WORDS];
-            uv[2 * i + 1] = words[i * VERTEX_WORDS + 1];
+            const u = words[i * VERTEX_WORDS], v = words[i * VERTEX_WORDS + 1];
+            uv[2 * i] = i < secondHalf ? u : one - u;
+            uv[2 * i + 1] = i < secondHalf ? v : one - v;
         }
         return { uv, indices, vertexCount: out.vertexCount, triangleCount: out.triangleCount };
     }

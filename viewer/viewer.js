@@ -18,13 +18,18 @@ const state = {
     view: query.get('view') === 'mesh' ? 'mesh' : 'pattern',
     mode: MODES.includes(query.get('mode')) ? query.get('mode') : 'cp',
     max: query.get('max') === '256' ? 256 : 64,
-    factors: parseFactors(query.get('factors') ?? '10.3,6,3') ?? [10.3, 6, 3],
+    domain: query.get('domain') === 'quad' ? 'quad' : 'tri',
+    factors: null,
     sweep: null, // {from, to, start, trail: [[x, y], ...]} while playing
 };
 
-function parseFactors(text) {
+state.factors = parseFactors(query.get('factors') ?? '', state.domain) ?? (state.domain === 'quad' ? [12, 5, 12, 30] : [10.3, 6, 3]);
+
+// Three factors for a triangle, four for a quad (q0q1, q1q2, q2q3, q3q0), each finite and > 0.
+function parseFactors(text, domain = state.domain) {
     const f = text.split(',').map((s) => Number(s.trim()));
-    return f.length === 3 && f.every((x) => Number.isFinite(x) && x > 0) ? f.map(Math.fround) : null;
+    const count = domain === 'quad' ? 4 : 3;
+    return f.length === count && f.every((x) => Number.isFinite(x) && x > 0) ? f.map(Math.fround) : null;
 }
 const factorText = (f) => f.map((x) => String(Number(x.toPrecision(7)))).join(',');
 
@@ -39,9 +44,10 @@ function pipelineFor(max) {
 // The CLI's JSON for a D3D11 mode (three factors: inside = the largest, as in `ctess pattern`).
 const apiCache = new Map();
 async function apiPattern(mode, factors) {
-    const key = `${mode}:${factors.join(',')}`;
+    const domain = factors.length === 4 ? 'quad' : 'tri';
+    const key = `${mode}:${domain}:${factors.join(',')}`;
     if (!apiCache.has(key)) {
-        const url = `api/pattern?mode=${mode}&factors=${factors.map(String).join(',')}`;
+        const url = `api/pattern?mode=${mode}&domain=${domain}&factors=${factors.map(String).join(',')}`;
         const p = fetch(url).catch(() => {
             throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern), which did not answer');
         }).then(async (r) => {
@@ -74,9 +80,11 @@ async function computePattern(mode, factors, max) {
 const canvas = $('pattern-canvas');
 const ctx = canvas.getContext('2d');
 const MARGIN = 50;
-const side = Math.min(canvas.width - 2 * MARGIN, (canvas.height - 2 * MARGIN) / (Math.sqrt(3) / 2));
-const toX = (u, v) => MARGIN + side * (u + 0.5 * v);
-const toY = (v) => canvas.height - MARGIN - side * v * Math.sqrt(3) / 2;
+// Triangles equilateral with (0,0) bottom left, (1,0) bottom right, (0,1) top; quads square, (0,0) bottom left.
+const triSide = Math.min(canvas.width - 2 * MARGIN, (canvas.height - 2 * MARGIN) / (Math.sqrt(3) / 2));
+const quadSide = Math.min(canvas.width, canvas.height) - 2 * MARGIN;
+const toX = (u, v) => (state.domain === 'quad' ? MARGIN + quadSide * u : MARGIN + triSide * (u + 0.5 * v));
+const toY = (v) => canvas.height - MARGIN - (state.domain === 'quad' ? quadSide * v : triSide * v * Math.sqrt(3) / 2);
 
 function doubledArea(uv, a, b, c) {
     // exact: coordinates are below 2^25, so the products stay below 2^53
@@ -130,11 +138,33 @@ function drawPattern(p, trail) {
     }
     ctx.font = '15px DejaVu Sans, sans-serif';
     const cp = state.mode === 'cp';
+    const f = (k) => String(Number(state.factors[k].toPrecision(7)));
+    if (state.domain === 'quad') {
+        const corner = cp ? ['q0', 'q1', 'q2', 'q3'] : ['(0,0)', 'u = 1', '(1,1)', 'v = 1'];
+        ctx.fillText(corner[0], toX(0, 0) - 26, toY(0) + 18);
+        ctx.fillText(corner[1], toX(1, 0) + 6, toY(0) + 18);
+        ctx.fillText(corner[2], toX(1, 1) + 6, toY(1) - 6);
+        ctx.fillText(corner[3], toX(0, 1) - 26, toY(1) - 6);
+        ctx.fillStyle = '#2a6f3a';
+        ctx.font = 'bold 14px DejaVu Sans, sans-serif';
+        ctx.fillText(`f0 = ${f(0)}`, toX(0.5, 0) - 30, toY(0) + 34);
+        ctx.fillText(`f2 = ${f(2)}`, toX(0.5, 1) - 30, toY(1) - 12);
+        ctx.save();
+        ctx.translate(toX(1, 0.5) + 16, toY(0.5) - 24);
+        ctx.rotate(Math.PI / 2);
+        ctx.fillText(`f1 = ${f(1)}`, 0, 0);
+        ctx.restore();
+        ctx.save();
+        ctx.translate(toX(0, 0.5) - 16, toY(0.5) + 24);
+        ctx.rotate(-Math.PI / 2);
+        ctx.fillText(`f3 = ${f(3)}`, 0, 0);
+        ctx.restore();
+        return zero;
+    }
     ctx.fillText(cp ? 'v0' : 'W', toX(0, 0) - 26, toY(0) + 18);
     ctx.fillText(cp ? 'v1' : 'U', toX(1, 0) + 8, toY(0) + 18);
     ctx.fillText(cp ? 'v2' : 'V', toX(0, 1) - 8, toY(1) - 10);
     // Edge labels as in the SVGs: CP e0 = v0v1 (bottom), e1 = v1v2, e2 = v2v0; D3D11 Veq0 bottom, Ueq0 left, Weq0 right.
-    const f = (k) => String(Number(state.factors[k].toPrecision(7)));
     ctx.fillStyle = '#2a6f3a';
     ctx.font = 'bold 14px DejaVu Sans, sans-serif';
     ctx.fillText(cp ? `e0 = ${f(0)}` : `Veq0 = ${f(1)}`, toX(0.5, 0) - 40, toY(0) + 34);
@@ -169,7 +199,7 @@ async function redraw() {
 }
 
 async function redrawPattern() {
-    const { mode, max } = state;
+    const { mode, max, domain } = state;
     const factors = state.factors.slice();
     const t0 = performance.now();
     const p = await computePattern(mode, factors, max);
@@ -192,16 +222,18 @@ async function redrawPattern() {
     $('count-zero').textContent = zero;
     $('count-ratio').textContent = ratio === null ? 'n/a (needs ctess serve)' : `${ratio.toFixed(3)}×`;
     window.ctessViewer = {
-        view: 'pattern', mode, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
+        view: 'pattern', mode, domain, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
         ratioToD3d11Even: ratio, ms, readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
     };
-    setStatus(`${mode} · factors ${factorText(factors)} · max ${max}` +
+    setStatus(`${mode} · ${domain} · factors ${factorText(factors)} · max ${max}` +
               (mode === 'cp' ? ' · computed by the generated WGSL on WebGPU' : ' · computed by ctess serve'));
 }
 
 // ---- controls ----
 function showFactors() {
-    for (let k = 0; k < 3; k++) {
+    $('f3-label').hidden = state.domain !== 'quad';
+    $('domain').value = state.domain;
+    for (let k = 0; k < state.factors.length; k++) {
         $(`f${k}`).max = String(state.max);
         $(`f${k}`).value = String(state.factors[k]);
         $(`f${k}-value`).textContent = String(Number(state.factors[k].toPrecision(7)));
@@ -211,7 +243,7 @@ function showFactors() {
     $('max').value = String(state.max);
 }
 function syncUrl() {
-    const q = new URLSearchParams({ view: state.view, mode: state.mode, factors: factorText(state.factors), max: state.max });
+    const q = new URLSearchParams({ view: state.view, mode: state.mode, domain: state.domain, factors: factorText(state.factors), max: state.max });
     history.replaceState(null, '', `?${q}`);
 }
 function changed() {
@@ -219,18 +251,27 @@ function changed() {
     syncUrl();
     redraw();
 }
-for (let k = 0; k < 3; k++)
+for (let k = 0; k < 4; k++)
     $(`f${k}`).addEventListener('input', (e) => {
         state.factors[k] = Math.fround(Number(e.target.value));
         changed();
     });
 $('factors').addEventListener('change', (e) => {
     const f = parseFactors(e.target.value);
-    if (!f) return setStatus('Factors: three numbers > 0, e.g. 10.3,6,3', true);
+    if (!f) return setStatus(state.domain === 'quad' ? 'Factors: four numbers > 0, e.g. 12,5,12,30' : 'Factors: three numbers > 0, e.g. 10.3,6,3', true);
     state.factors = f;
     changed();
 });
 $('mode').addEventListener('change', (e) => { state.mode = e.target.value; changed(); });
+$('domain').addEventListener('change', (e) => {
+    state.domain = e.target.value;
+    state.factors = state.domain === 'quad' ? [...state.factors.slice(0, 3), state.factors[0]] : state.factors.slice(0, 3);
+    state.sweep = null;
+    $('play').textContent = 'play';
+    $('sweep-from').value = state.domain === 'quad' ? '1,1,1,1' : '1,1,1';
+    $('sweep-to').value = state.domain === 'quad' ? '8,8,8,8' : '8,8,8';
+    changed();
+});
 $('max').addEventListener('change', (e) => {
     state.max = Number(e.target.value);
     state.factors = state.factors.map((f) => Math.min(f, state.max));
@@ -254,7 +295,7 @@ $('play').addEventListener('click', () => {
         return;
     }
     const from = parseFactors($('sweep-from').value), to = parseFactors($('sweep-to').value);
-    if (!from || !to) return setStatus('Sweep: three numbers > 0 in each field', true);
+    if (!from || !to) return setStatus(`Sweep: ${state.factors.length} numbers > 0 in each field`, true);
     state.sweep = { from, to, start: performance.now(), trail: [] };
     $('play').textContent = 'pause';
     const step = async () => {
@@ -275,6 +316,10 @@ const meshView = new MeshView($('mesh-canvas'), {
 }, () => pipelineFor(state.max), redraw);
 
 // ---- start ----
+if (state.domain === 'quad') {
+    $('sweep-from').value = '1,1,1,1';
+    $('sweep-to').value = '8,8,8,8';
+}
 showFactors();
 document.querySelector(`input[name=view][value=${state.view}]`).checked = true;
 $('pattern-view').hidden = state.view !== 'pattern';

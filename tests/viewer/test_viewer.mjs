@@ -50,7 +50,7 @@ check(exitOf(['serve', '--port', base.match(/:(\d+)\//)[1]]) === 1, 'serve on a 
 check(exitOf(['serve', '--port', '70000']) === 2, 'serve --port 70000 must exit 2');
 
 const cli = (mode, factors, max) => JSON.parse(execFileSync(ctess, ['pattern', '--mode', mode, '--factors',
-    factors.join(','), ...(mode === 'cp' ? ['--max', String(max)] : []), '--format', 'json'], { encoding: 'utf8', maxBuffer: 1 << 28 }));
+    factors.join(','), '--domain', factors.length === 4 ? 'quad' : 'tri', ...(mode === 'cp' ? ['--max', String(max)] : []), '--format', 'json'], { encoding: 'utf8', maxBuffer: 1 << 28 }));
 
 function sameAsCli(state, mode, factors, max) {
     const ref = cli(mode, factors, max);
@@ -91,7 +91,8 @@ async function viewerState(pred, arg) {
 }
 const factorsMatch = ({ mode, factors, max }) => {
     const v = window.ctessViewer;
-    return v && v.mode === mode && v.max === max && v.factors.every((f, k) => f === Math.fround(factors[k]));
+    return v && v.mode === mode && v.max === max && v.factors.length === factors.length &&
+           v.factors.every((f, k) => f === Math.fround(factors[k]));
 };
 // A new state through the exact-factors field (as a person types it).
 async function typeFactors(factors) {
@@ -109,6 +110,8 @@ const cases = [
     ['d3d11-odd', 64, [[2.5, 3.7, 5.1], [64, 1, 1]]],
     ['d3d11-even', 64, [[8, 16, 4], [10.3, 6, 3], [2, 2, 2]]],
     ['cp', 256, [[10.3, 6, 3], [256, 256, 256], [150.5, 3, 40.25], [1, 256, 17.25], [70, 70.5, 71]]],
+    ['cp', 64, [[12, 5, 12, 30], [8, 8, 8, 8], [1, 1, 1, 1], [2.5, 40, 1.5, 6.25]]], // quads
+    ['d3d11-even', 64, [[12, 5, 12, 30]]],
 ];
 let compared = 0;
 await page.goto(`${base}?mode=cp&max=64&factors=10.3,6,3`);
@@ -116,6 +119,7 @@ await viewerState(() => window.ctessViewer);
 for (const [mode, max, triples] of cases) {
     await page.selectOption('#mode', mode);
     await page.selectOption('#max', String(max));
+    await page.selectOption('#domain', triples[0].length === 4 ? 'quad' : 'tri');
     for (const factors of triples) {
         await typeFactors(factors);
         const t0 = Date.now();
@@ -130,6 +134,7 @@ check(compared >= 20, `only ${compared} patterns matched`);
 // ---- the ratio to D3D11 fractional_even on the same edges ----
 await page.selectOption('#mode', 'cp');
 await page.selectOption('#max', '64');
+await page.selectOption('#domain', 'tri');
 await typeFactors([16, 8, 4]);
 let state = await viewerState(factorsMatch, { mode: 'cp', factors: [16, 8, 4], max: 64 });
 const even = cli('d3d11-even', [16, 8, 4], 64);
