@@ -176,6 +176,15 @@ await page.locator('#dice').fill('6');
 const fine = await viewerState(() => window.ctessViewer?.view === 'mesh' && window.ctessViewer.diceRate === 6);
 check(coarse.triangles >= 20 && fine.triangles > 2 * coarse.triangles,
       `mesh: ${coarse.triangles} triangles at DiceRate ${coarse.diceRate}, ${fine.triangles} at 6`);
+// The factors come from the base mesh alone, so Phong and flat evaluation give PN's counts exactly.
+for (const [value, name] of [['2', 'phong'], ['0', 'flat']]) {
+    await page.selectOption('#surface', value);
+    const other = await viewerState((n) => window.ctessViewer?.surface === n, name);
+    check(other.vertices === fine.vertices && other.triangles === fine.triangles,
+          `mesh ${name}: ${other.vertices}/${other.triangles}, PN ${fine.vertices}/${fine.triangles}`);
+}
+await page.selectOption('#surface', '1');
+await viewerState(() => window.ctessViewer?.surface === 'pn');
 stats = await pixelStats('#mesh-canvas');
 console.log(`mesh canvas: ${(100 * stats.ink).toFixed(1)}% ink, ${stats.colours} colours; ` +
             `${coarse.triangles} -> ${fine.triangles} triangles`);
