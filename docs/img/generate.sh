@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the figures of docs/algorithm.md with the ctess CLI.
+# Regenerates the figures of docs/algorithm.md and the README with the ctess CLI (and, for the viewer
+# screenshots, `ctess serve` in headless chromium).
 # Usage: docs/img/generate.sh [path/to/ctess]   (default: build/release/tools/ctess/ctess)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -43,4 +44,16 @@ uniform_11_4_2 uniform 11,4,2
 uniform_16_13_9 uniform 16,13,9
 uniform_40_30_20 uniform 40,30,20
 LIST
+
+# README: CP beside D3D11 fractional_even on the same edges (bottom 16, right 8, left 4; D3D11 names them
+# Veq0, Weq0, Ueq0, inside = 16), the CP quad, and the viewer (needs chromium; see docs/viewer.md).
+"$ctess" pattern --mode cp --factors 16,8,4 --format svg --provoking --out cp_16_8_4_provoking.svg
+"$ctess" pattern --mode d3d11-even --factors 4,16,8 --format svg --provoking --out d3d11_even_4_16_8.svg
+"$ctess" pattern --mode cp --domain quad --factors 12,5,12,30 --format svg --provoking --out cp_quad_12_5_12_30_provoking.svg
+if [ -x /usr/bin/chromium ] || [ -n "${CTESS_CHROMIUM:-}" ]; then
+  node "$here/snapshot.mjs" viewer "$ctess" viewer_pattern.png '?mode=cp&factors=16,8,4'
+  node "$here/snapshot.mjs" viewer "$ctess" viewer_mesh.png '?view=mesh'
+else
+  echo "chromium not found: viewer_pattern.png and viewer_mesh.png not regenerated"
+fi
 echo "figures written to $here"

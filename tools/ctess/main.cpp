@@ -25,6 +25,7 @@ commands:
   strip    --segments U,V [--format json] [--out FILE]            (U, V in [1, 1024])
   surface  --name sphere|torus|ripple [--angle deg] [--distance rel] [--min-level n] [--max-level n]
            [--format json|obj|svg|stats] [--view param|shaded] [--out FILE]   (levels in [0, 18])
+  serve    [--port N] [--viewer DIR] [--shaders DIR]   the browser viewer on 127.0.0.1 (docs/viewer.md)
 
 pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
 line modes:    the pattern modes plus pow2-subdivision, one-at-a-time, even-spacing
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
         if (status < 0 && command == "efficiency") status = ctess::cli::run_efficiency(argc, argv);
         if (status < 0 && command == "strip") status = ctess::cli::run_strip(argc, argv);
         if (status < 0 && command == "surface") status = ctess::cli::run_surface(argc, argv);
+        if (status < 0 && command == "serve") status = ctess::cli::run_serve(argc, argv);
         if (status < 0) {
             fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
             return 2;

@@ -138,9 +138,10 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
                 const double cx = (px(a) + px(b) + px(c)) / 3, cy = (py(a) + py(b) + py(c)) / 3;
                 svg.circle(0.65 * px(a) + 0.35 * cx, 0.65 * py(a) + 0.35 * cy, 2.2, "fill=\"#e07b00\"");
             }
-            svg.circle(kWidth - 262, kHeight - 16, 4, "fill=\"#e07b00\"");
-            svg.text(kWidth - 252, kHeight - 11, "provoking (first) vertex of each triangle",
-                     "font-size=\"13\" fill=\"#445\"");
+            // Legend at the bottom left, where the widest label still fits at any font's width.
+            svg.circle(kMargin - 34, kHeight - 17, 5, "fill=\"#e07b00\"");
+            svg.text(kMargin - 24, kHeight - 11, "provoking (first) vertex of each triangle",
+                     "font-size=\"16\" fill=\"#445\"");
         }
     } else {
         for (std::size_t p = 0; p < mesh.primitive_count(); ++p)

@@ -1,0 +1,215 @@
+// Loads viewer/ from `ctess serve` in headless chromium (WebGPU on SwiftShader, --enable-unsafe-webgpu) and
+// checks, against `ctess pattern --format json` (the CPU), bit for bit: the counts in window.ctessViewer and
+// the read-back vertices (u, v) and triangles, for CP (generated WGSL, max 64 and 256) and the D3D11 modes.
+// Also: the URL sets the state, a slider changes the counts, the canvases are not blank, the mesh view's
+// triangle count follows the DiceRate, bad /api/pattern input gets a 400, a busy port is an error, and without
+// WebGPU the page says so.
+//   node tests/viewer/test_viewer.mjs path/to/ctess        exit 0 pass, 1 fail, 77 skipped (no chromium)
+import { spawn, execFileSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+
+const ctess = process.argv[2];
+const browserPath = process.env.CTESS_CHROMIUM ?? '/usr/bin/chromium';
+if (!existsSync(browserPath)) {
+    console.log(`SKIPPED: ${browserPath} not found; install Debian's chromium (./.ci/install-deps) to run the viewer test`);
+    process.exit(77);
+}
+const started = Date.now();
+let failures = 0;
+const check = (ok, what) => {
+    if (!ok) { failures++; console.log(`FAIL ${what}`); }
+    return ok;
+};
+
+// ---- the server, on 127.0.0.1 and a free port ----
+const server = spawn(ctess, ['serve', '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+const base = await new Promise((resolve, reject) => {
+    let out = '';
+    server.stdout.on('data', (d) => {
+        out += d;
+        const m = out.match(/http:\/\/127\.0\.0\.1:(\d+)\//);
+        if (m) resolve(m[0]);
+    });
+    server.on('exit', (code) => reject(new Error(`ctess serve exited with ${code}: ${out}`)));
+});
+const stop = () => server.kill();
+process.on('exit', stop);
+check(/^http:\/\/127\.0\.0\.1:/.test(base), `serve listens on ${base}`);
+
+// ---- a busy port and an impossible port are errors, not a second server or a hang ----
+const exitOf = (args) => {
+    try {
+        execFileSync(ctess, args, { stdio: 'pipe', timeout: 20000 });
+        return 0;
+    } catch (e) {
+        return e.status ?? `killed (${e.signal})`;
+    }
+};
+check(exitOf(['serve', '--port', base.match(/:(\d+)\//)[1]]) === 1, 'serve on a busy port must exit 1');
+check(exitOf(['serve', '--port', '70000']) === 2, 'serve --port 70000 must exit 2');
+
+const cli = (mode, factors, max) => JSON.parse(execFileSync(ctess, ['pattern', '--mode', mode, '--factors',
+    factors.join(','), '--domain', factors.length === 4 ? 'quad' : 'tri', ...(mode === 'cp' ? ['--max', String(max)] : []), '--format', 'json'], { encoding: 'utf8', maxBuffer: 1 << 28 }));
+
+function sameAsCli(state, mode, factors, max) {
+    const ref = cli(mode, factors, max);
+    const what = `${mode} ${factors.join(',')} max ${max}`;
+    let ok = check(state.mode === mode && state.max === max, `${what}: state says ${state.mode} max ${state.max}`);
+    ok &&= check(state.factors.every((f, k) => f === Math.fround(factors[k])), `${what}: factors ${state.factors}`);
+    ok &&= check(state.vertices === ref.vertex_count && state.triangles === ref.triangle_count,
+                 `${what}: counts ${state.vertices}/${state.triangles}, CLI ${ref.vertex_count}/${ref.triangle_count}`);
+    ok &&= check(state.zeroArea === ref.degenerate_triangle_count, `${what}: zero-area ${state.zeroArea}, CLI ${ref.degenerate_triangle_count}`);
+    const uv = ref.vertices.flat(), idx = ref.triangles.flat();
+    ok &&= check(state.readback.one === ref.fixed_one, `${what}: fixed one`);
+    const badV = uv.findIndex((x, i) => state.readback.uv[i] !== x);
+    ok &&= check(state.readback.uv.length === uv.length && badV < 0, `${what}: vertex word ${badV} differs`);
+    const badT = idx.findIndex((x, i) => state.readback.indices[i] !== x);
+    ok &&= check(state.readback.indices.length === idx.length && badT < 0, `${what}: index ${badT} differs`);
+    return ok ? ref : null;
+}
+
+// Headless WebGPU canvases need Vulkan compositing on SwiftShader: with the default (GL) compositor the
+// device is lost at the first present ("A valid external Instance reference no longer exists").
+const flags = ['--no-sandbox', '--disable-quic', '--disable-background-networking', '--disable-component-update',
+               '--disable-sync', '--no-first-run', '--use-angle=vulkan', '--enable-features=Vulkan', '--use-vulkan=swiftshader'];
+const browser = await chromium.launch({ executablePath: browserPath, headless: true, args: [...flags, '--enable-unsafe-webgpu'] });
+const page = await browser.newPage({ viewport: { width: 1000, height: 720 } });
+page.on('pageerror', (e) => check(false, `page error: ${e.message}`));
+// Waits for a redraw that satisfies pred; on a timeout, says what the page shows.
+async function viewerState(pred, arg) {
+    try {
+        await page.waitForFunction(pred, arg, { timeout: 120000 });
+    } catch (e) {
+        const shown = await page.evaluate(() => {
+            const { readback, ...rest } = window.ctessViewer ?? {};
+            return `status "${document.getElementById('status').textContent}", state ${JSON.stringify(rest)}`;
+        });
+        throw new Error(`${e.message}\nwaiting for ${JSON.stringify(arg)}; the page shows ${shown}`);
+    }
+    return page.evaluate(() => window.ctessViewer);
+}
+const factorsMatch = ({ mode, factors, max }) => {
+    const v = window.ctessViewer;
+    return v && v.mode === mode && v.max === max && v.factors.length === factors.length &&
+           v.factors.every((f, k) => f === Math.fround(factors[k]));
+};
+// A new state through the exact-factors field (as a person types it).
+async function typeFactors(factors) {
+    await page.fill('#factors', factors.join(','));
+    await page.dispatchEvent('#factors', 'change');
+}
+
+// ---- CP and D3D11 patterns: the first from the URL, then through the mode and max selectors and the
+// exact-factors field, on one page (each page load compiles the WGSL again: about 7 s on SwiftShader) ----
+const cases = [
+    ['cp', 64, [[10.3, 6, 3], [1, 1, 1], [1.5, 1.25, 1.01], [2, 2, 2], [16, 8, 4], [8, 16, 4], [33.7, 2.2, 64],
+                [64, 64, 64], [100, 0.5, 7.77], [5.5, 5.5, 5.5], [63.99, 12.125, 40.5]]],
+    ['d3d11-integer', 64, [[3, 4, 5], [7.2, 1, 13]]],
+    ['d3d11-pow2', 64, [[3, 4, 5]]],
+    ['d3d11-odd', 64, [[2.5, 3.7, 5.1], [64, 1, 1]]],
+    ['d3d11-even', 64, [[8, 16, 4], [10.3, 6, 3], [2, 2, 2]]],
+    ['cp', 256, [[10.3, 6, 3], [256, 256, 256], [150.5, 3, 40.25], [1, 256, 17.25], [70, 70.5, 71]]],
+    ['cp', 64, [[12, 5, 12, 30], [8, 8, 8, 8], [1, 1, 1, 1], [2.5, 40, 1.5, 6.25]]], // quads
+    ['d3d11-even', 64, [[12, 5, 12, 30]]],
+];
+let compared = 0;
+await page.goto(`${base}?mode=cp&max=64&factors=10.3,6,3`);
+await viewerState(() => window.ctessViewer);
+for (const [mode, max, triples] of cases) {
+    await page.selectOption('#mode', mode);
+    await page.selectOption('#max', String(max));
+    await page.selectOption('#domain', triples[0].length === 4 ? 'quad' : 'tri');
+    for (const factors of triples) {
+        await typeFactors(factors);
+        const t0 = Date.now();
+        const state = await viewerState(factorsMatch, { mode, factors, max });
+        if (sameAsCli(state, mode, factors, max)) compared++;
+        console.log(`${mode} max ${max} factors ${factors}: ${state.vertices} vertices, ${state.triangles} ` +
+                    `triangles, ${Date.now() - t0} ms (page: ${JSON.stringify(state.ms, (k, v) => (typeof v === "number" ? Math.round(v) : v))})`);
+    }
+}
+check(compared >= 20, `only ${compared} patterns matched`);
+
+// ---- the ratio to D3D11 fractional_even on the same edges ----
+await page.selectOption('#mode', 'cp');
+await page.selectOption('#max', '64');
+await page.selectOption('#domain', 'tri');
+await typeFactors([16, 8, 4]);
+let state = await viewerState(factorsMatch, { mode: 'cp', factors: [16, 8, 4], max: 64 });
+const even = cli('d3d11-even', [16, 8, 4], 64);
+check(state.ratioToD3d11Even === state.triangles / even.triangle_count,
+      `ratio ${state.ratioToD3d11Even}, expected ${state.triangles}/${even.triangle_count}`);
+
+// ---- a slider: e0 from 16 to 40 changes the counts to the CLI's for 40,8,4 ----
+await page.locator('#f0').fill('40');
+state = await viewerState(factorsMatch, { mode: 'cp', factors: [40, 8, 4], max: 64 });
+const before = cli('cp', [16, 8, 4], 64);
+check(state.triangles > before.triangle_count, `slider: ${state.triangles} triangles at e0 = 40, ${before.triangle_count} at 16`);
+sameAsCli(state, 'cp', [40, 8, 4], 64) && compared++;
+
+// ---- the canvases are not blank: pixel statistics of real screenshots, decoded by the browser ----
+async function pixelStats(selector) {
+    const png = (await page.locator(selector).screenshot()).toString('base64');
+    return page.evaluate(async (b64) => {
+        const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+        const c = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
+        c.drawImage(bitmap, 0, 0);
+        const d = c.getImageData(0, 0, bitmap.width, bitmap.height).data;
+        let ink = 0;
+        const colours = new Set();
+        for (let i = 0; i < d.length; i += 4) {
+            if (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240) ink++;
+            colours.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+        }
+        return { ink: ink / (d.length / 4), colours: colours.size };
+    }, png);
+}
+let stats = await pixelStats('#pattern-canvas');
+console.log(`pattern canvas: ${(100 * stats.ink).toFixed(1)}% ink, ${stats.colours} colours`);
+check(stats.ink > 0.2 && stats.colours > 20, 'pattern canvas looks blank');
+
+// ---- mesh view: more triangles at a smaller DiceRate, shaded pixels on the canvas ----
+await page.check('input[name=view][value=mesh]');
+const coarse = await viewerState(() => window.ctessViewer?.view === 'mesh');
+await page.locator('#dice').fill('6');
+const fine = await viewerState(() => window.ctessViewer?.view === 'mesh' && window.ctessViewer.diceRate === 6);
+check(coarse.triangles >= 20 && fine.triangles > 2 * coarse.triangles,
+      `mesh: ${coarse.triangles} triangles at DiceRate ${coarse.diceRate}, ${fine.triangles} at 6`);
+// The factors come from the base mesh alone, so Phong and flat evaluation give PN's counts exactly.
+for (const [value, name] of [['2', 'phong'], ['0', 'flat']]) {
+    await page.selectOption('#surface', value);
+    const other = await viewerState((n) => window.ctessViewer?.surface === n, name);
+    check(other.vertices === fine.vertices && other.triangles === fine.triangles,
+          `mesh ${name}: ${other.vertices}/${other.triangles}, PN ${fine.vertices}/${fine.triangles}`);
+}
+await page.selectOption('#surface', '1');
+await viewerState(() => window.ctessViewer?.surface === 'pn');
+stats = await pixelStats('#mesh-canvas');
+console.log(`mesh canvas: ${(100 * stats.ink).toFixed(1)}% ink, ${stats.colours} colours; ` +
+            `${coarse.triangles} -> ${fine.triangles} triangles`);
+check(stats.ink > 0.1 && stats.colours > 50, 'mesh canvas looks blank');
+// ---- the URL sets a D3D11 state too ----
+await page.goto(`${base}?mode=d3d11-odd&factors=2.5,3.7,5.1`);
+state = await viewerState(factorsMatch, { mode: 'd3d11-odd', factors: [2.5, 3.7, 5.1], max: 64 });
+sameAsCli(state, 'd3d11-odd', [2.5, 3.7, 5.1], 64) && compared++;
+await browser.close();
+
+// ---- bad input to /api/pattern is a 400 with the CLI's message ----
+for (const q of ['mode=bogus&factors=1,2,3', 'mode=d3d11-even&factors=nan,2,3', 'mode=cp&factors=1,2', 'mode=cp&factors=1,2,3&max=100']) {
+    const r = await fetch(`${base}api/pattern?${q}`);
+    const body = await r.json();
+    check(r.status === 400 && typeof body.error === 'string', `api ${q}: status ${r.status}`);
+}
+
+// ---- without WebGPU the page says so ----
+const plain = await chromium.launch({ executablePath: browserPath, headless: true, args: flags });
+const page2 = await plain.newPage();
+await page2.goto(base);
+await page2.waitForFunction(() => window.ctessViewer, null, { timeout: 60000 });
+const message = await page2.textContent('#status');
+check(/WebGPU is unavailable/.test(message), `no-WebGPU message: "${message}"`);
+await plain.close();
+
+console.log(`${compared} patterns equal the CLI's bit for bit; ${failures} failures; ${((Date.now() - started) / 1000).toFixed(1)} s`);
+process.exit(failures ? 1 : 0);

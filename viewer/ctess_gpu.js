@@ -1,0 +1,160 @@
+// The generated CP pipeline (build/<preset>/shaders/ctess_cp_<max>.wgsl and its table blob) on the browser's
+// WebGPU, driven as tests/gpu/run_wgsl.mjs drives it on Dawn: bindings and record layouts in docs/shaders.md.
+const VERTEX_WORDS = 10;
+
+// Resolves to {device, adapterInfo} or throws an Error whose message says plainly why WebGPU is unusable.
+export async function openDevice() {
+    if (!('gpu' in navigator))
+        throw new Error('This browser has no WebGPU (navigator.gpu is missing). Use a recent Chromium; headless ' +
+                        'or Linux builds need --enable-unsafe-webgpu.');
+    const adapter = await navigator.gpu.requestAdapter();
+    if (!adapter)
+        throw new Error('WebGPU is present but no adapter is available (requestAdapter() returned null). On ' +
+                        'Linux, start Chromium with --enable-unsafe-webgpu.');
+    if (adapter.limits.maxStorageBuffersPerShaderStage < 7)
+        throw new Error(`This WebGPU adapter allows ${adapter.limits.maxStorageBuffersPerShaderStage} storage ` +
+                        'buffers per stage; the ctess pipeline needs 7.');
+    const device = await adapter.requestDevice({
+        requiredLimits: {
+            maxStorageBuffersPerShaderStage: adapter.limits.maxStorageBuffersPerShaderStage,
+            maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize,
+            maxBufferSize: adapter.limits.maxBufferSize,
+        },
+    });
+    return { device, adapterInfo: adapter.info ?? {} };
+}
+
+async function fetchOk(url) {
+    const r = await fetch(url);
+    if (!r.ok) throw new Error(`${url}: HTTP ${r.status} (serve the viewer with \`ctess serve\`)`);
+    return r;
+}
+
+export class CpPipeline {
+    static async load(device, maxFactor) {
+        const [wgsl, extra, blob, layout] = await Promise.all([
+            fetchOk(`shaders/ctess_cp_${maxFactor}.wgsl`).then((r) => r.text()),
+            fetchOk('explicit_factors.wgsl').then((r) => r.text()),
+            fetchOk(`shaders/ctess_cp_${maxFactor}.tables.bin`).then((r) => r.arrayBuffer()),
+            fetchOk(`shaders/ctess_cp_${maxFactor}.layout.json`).then((r) => r.json()),
+        ]);
+        const p = new CpPipeline(device, maxFactor);
+        p.patchWords = layout.patch_words; // words per patch record (the generated layout)
+        device.pushErrorScope('validation');
+        const module = device.createShaderModule({ code: `${wgsl}\n${extra}` });
+        const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === 'error');
+        if (errors.length) throw new Error(`WGSL ${errors[0].lineNum}:${errors[0].linePos}: ${errors[0].message}`);
+        const entries = [];
+        for (let i = 0; i < 7; i++)
+            entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < 4 ? 'read-only-storage' : 'storage' } });
+        p.layout = device.createBindGroupLayout({ entries });
+        const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
+        // Compiled concurrently (each pipeline compiles the whole module: seconds on a software adapter).
+        const make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
+        [p.explicitSetup, p.setup, p.scan, p.emitVertices, p.emitTriangles] = await Promise.all([
+            make('viewer_explicit_setup'), make('ctess_patch_setup'), make('ctess_prefix_sum'),
+            make('ctess_emit_vertices'), make('ctess_emit_triangles')]);
+        const err = await device.popErrorScope();
+        if (err) throw new Error(err.message);
+        p.tables = p.storage(new Uint32Array(blob));
+        return p;
+    }
+
+    constructor(device, maxFactor) {
+        this.device = device;
+        this.maxFactor = maxFactor;
+    }
+
+    storage(data, words = data.length, extraUsage = 0) {
+        const buffer = this.device.createBuffer({
+            size: Math.max(16, words * 4),
+            usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST | extraUsage,
+        });
+        if (data) this.device.queue.writeBuffer(buffer, 0, data);
+        return buffer;
+    }
+
+    async read(buffer, words) {
+        const size = Math.max(16, words * 4);
+        const staging = this.device.createBuffer({ size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+        const enc = this.device.createCommandEncoder();
+        enc.copyBufferToBuffer(buffer, 0, staging, 0, size);
+        this.device.queue.submit([enc.finish()]);
+        await staging.mapAsync(GPUMapMode.READ);
+        const out = new Uint32Array(staging.getMappedRange().slice(0, words * 4));
+        staging.unmap();
+        staging.destroy();
+        return out;
+    }
+
+    dispatch(buffers, passes) {
+        const bindGroup = this.device.createBindGroup({
+            layout: this.layout,
+            entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
+        });
+        const enc = this.device.createCommandEncoder();
+        for (const [pipeline, groups] of passes) {
+            const pass = enc.beginComputePass();
+            pass.setPipeline(pipeline);
+            pass.setBindGroup(0, bindGroup);
+            pass.dispatchWorkgroups(groups);
+            pass.end();
+        }
+        this.device.queue.submit([enc.finish()]);
+    }
+
+    // Runs setup (explicit factors, or projected from the mesh) and the prefix sum, then both emit passes.
+    // Returns {patches, vertexCount, triangleCount, vertices, indices} with the output as GPU buffers.
+    async run(params, meshVertices, meshIndices, explicit, indexUsage = 0) {
+        const n = params[0];
+        const bParams = this.storage(params);
+        const bMesh = this.storage(meshVertices);
+        const bIndices = this.storage(meshIndices);
+        const patchWords = n * this.patchWords + 2;
+        const bPatches = this.storage(null, patchWords);
+        const none = [this.storage(null, 4), this.storage(null, 4)];
+        const setup = explicit ? [this.explicitSetup, n] : [this.setup, Math.ceil(n / 64)];
+        this.dispatch([bParams, this.tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
+        const patches = await this.read(bPatches, patchWords);
+        const vertexCount = patches[n * this.patchWords], triangleCount = patches[n * this.patchWords + 1];
+        const vertices = this.storage(null, vertexCount * VERTEX_WORDS);
+        const indices = this.storage(null, triangleCount * 3, indexUsage);
+        this.dispatch([bParams, this.tables, bMesh, bIndices, bPatches, vertices, indices],
+                      [[this.emitVertices, Math.min(n, 65535)], [this.emitTriangles, Math.min(n, 65535)]]);
+        for (const b of [bParams, bMesh, bIndices, bPatches, ...none]) b.destroy();
+        return { patches, vertexCount, triangleCount, vertices, indices };
+    }
+
+    // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0): the
+    // pattern's (u, v) in 2^-24 and its provoking-first, counter-clockwise triangles, read back from the GPU.
+    // A quad is the two triangles of cp::split_quad (constexpr/ctess/cp_quad.hpp): A = (q0, q1, q3) with
+    // factors (f0, f0, f3) and B = (q2, q3, q1) with (f2, f0, f1), the diagonal taking f0; B's points map to
+    // (1 - u, 1 - v). Both halves keep their own diagonal points, as the CLI's provoking layout does.
+    async pattern(factors) {
+        const halves = factors.length === 4 ? [[factors[0], factors[0], factors[3]], [factors[2], factors[0], factors[1]]] : [factors];
+        const n = halves.length;
+        const params = new Uint32Array(10 + 3 * n);
+        params.set([n, 0, 0, f32Bits(1), 0, 0, 0, 3, 0, n]);
+        params.set(halves.flat().map(f32Bits), 10);
+        const mesh = new Float32Array([0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1]);
+        const out = await this.run(params, new Uint32Array(mesh.buffer), new Uint32Array(halves.flatMap(() => [0, 1, 2])), true);
+        const words = await this.read(out.vertices, out.vertexCount * VERTEX_WORDS);
+        const indices = await this.read(out.indices, out.triangleCount * 3);
+        out.vertices.destroy();
+        out.indices.destroy();
+        const one = 1 << 24;
+        const secondHalf = n === 2 ? out.patches[this.patchWords + 9] : out.vertexCount;
+        const uv = new Uint32Array(out.vertexCount * 2);
+        for (let i = 0; i < out.vertexCount; i++) {
+            const u = words[i * VERTEX_WORDS], v = words[i * VERTEX_WORDS + 1];
+            uv[2 * i] = i < secondHalf ? u : one - u;
+            uv[2 * i + 1] = i < secondHalf ? v : one - v;
+        }
+        return { uv, indices, vertexCount: out.vertexCount, triangleCount: out.triangleCount };
+    }
+}
+
+export function f32Bits(x) {
+    return new Uint32Array(new Float32Array([x]).buffer)[0];
+}
+export { VERTEX_WORDS };

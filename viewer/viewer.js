@@ -1,0 +1,336 @@
+// ctess viewer: pattern view (one CP triangle from the generated WGSL on WebGPU, or a D3D11 pattern from
+// `ctess serve`'s /api/pattern) and mesh view (mesh_view.js). After each redraw, window.ctessViewer holds
+// {mode, factors, max, vertices, triangles, zeroArea, ratioToD3d11Even, readback} for automation
+// (docs/viewer.md); ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
+import { openDevice, CpPipeline } from './ctess_gpu.js';
+import { MeshView } from './mesh_view.js';
+
+const MODES = ['cp', 'd3d11-integer', 'd3d11-pow2', 'd3d11-odd', 'd3d11-even'];
+const $ = (id) => document.getElementById(id);
+const status = $('status');
+const setStatus = (text, error = false) => {
+    status.textContent = text;
+    status.className = error ? 'error' : '';
+};
+
+const query = new URLSearchParams(location.search);
+const state = {
+    view: query.get('view') === 'mesh' ? 'mesh' : 'pattern',
+    mode: MODES.includes(query.get('mode')) ? query.get('mode') : 'cp',
+    max: query.get('max') === '256' ? 256 : 64,
+    domain: query.get('domain') === 'quad' ? 'quad' : 'tri',
+    factors: null,
+    sweep: null, // {from, to, start, trail: [[x, y], ...]} while playing
+};
+
+state.factors = parseFactors(query.get('factors') ?? '', state.domain) ?? (state.domain === 'quad' ? [12, 5, 12, 30] : [10.3, 6, 3]);
+
+// Three factors for a triangle, four for a quad (q0q1, q1q2, q2q3, q3q0), each finite and > 0.
+function parseFactors(text, domain = state.domain) {
+    const f = text.split(',').map((s) => Number(s.trim()));
+    const count = domain === 'quad' ? 4 : 3;
+    return f.length === count && f.every((x) => Number.isFinite(x) && x > 0) ? f.map(Math.fround) : null;
+}
+const factorText = (f) => f.map((x) => String(Number(x.toPrecision(7)))).join(',');
+
+// ---- pattern sources ----
+const pipelines = new Map(); // max -> Promise<CpPipeline>
+let device = null;
+function pipelineFor(max) {
+    if (!pipelines.has(max)) pipelines.set(max, CpPipeline.load(device, max));
+    return pipelines.get(max);
+}
+
+// The CLI's JSON for a D3D11 mode (three factors: inside = the largest, as in `ctess pattern`).
+const apiCache = new Map();
+async function apiPattern(mode, factors) {
+    const domain = factors.length === 4 ? 'quad' : 'tri';
+    const key = `${mode}:${domain}:${factors.join(',')}`;
+    if (!apiCache.has(key)) {
+        const url = `api/pattern?mode=${mode}&domain=${domain}&factors=${factors.map(String).join(',')}`;
+        const p = fetch(url).catch(() => {
+            throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern), which did not answer');
+        }).then(async (r) => {
+            if (!(r.headers.get('content-type') ?? '').includes('json'))
+                throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern); this server has none');
+            const json = await r.json();
+            if (!r.ok) throw new Error(json.error ?? `HTTP ${r.status}`);
+            return json;
+        });
+        p.catch(() => apiCache.delete(key));
+        apiCache.set(key, p);
+        if (apiCache.size > 256) apiCache.delete(apiCache.keys().next().value);
+    }
+    return apiCache.get(key);
+}
+
+async function computePattern(mode, factors, max) {
+    if (mode === 'cp') {
+        const p = await (await pipelineFor(max)).pattern(factors);
+        return { one: 1 << 24, uv: p.uv, indices: p.indices, vertices: p.vertexCount, triangles: p.triangleCount };
+    }
+    const json = await apiPattern(mode, factors);
+    return {
+        one: json.fixed_one, uv: Uint32Array.from(json.vertices.flat()), indices: Uint32Array.from(json.triangles.flat()),
+        vertices: json.vertex_count, triangles: json.triangle_count,
+    };
+}
+
+// ---- drawing (the layout and marks of tools/ctess/svg_writer.cpp's pattern SVG) ----
+const canvas = $('pattern-canvas');
+const ctx = canvas.getContext('2d');
+const MARGIN = 50;
+// Triangles equilateral with (0,0) bottom left, (1,0) bottom right, (0,1) top; quads square, (0,0) bottom left.
+const triSide = Math.min(canvas.width - 2 * MARGIN, (canvas.height - 2 * MARGIN) / (Math.sqrt(3) / 2));
+const quadSide = Math.min(canvas.width, canvas.height) - 2 * MARGIN;
+const toX = (u, v) => (state.domain === 'quad' ? MARGIN + quadSide * u : MARGIN + triSide * (u + 0.5 * v));
+const toY = (v) => canvas.height - MARGIN - (state.domain === 'quad' ? quadSide * v : triSide * v * Math.sqrt(3) / 2);
+
+function doubledArea(uv, a, b, c) {
+    // exact: coordinates are below 2^25, so the products stay below 2^53
+    const bx = uv[2 * b] - uv[2 * a], by = uv[2 * b + 1] - uv[2 * a + 1];
+    const cx = uv[2 * c] - uv[2 * a], cy = uv[2 * c + 1] - uv[2 * a + 1];
+    return bx * cy - by * cx;
+}
+
+function drawPattern(p, trail) {
+    ctx.fillStyle = 'white';
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    const x = (i) => toX(p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one), y = (i) => toY(p.uv[2 * i + 1] / p.one);
+    let zero = 0;
+    ctx.lineJoin = 'round';
+    for (let t = 0; t < p.triangles; t++) {
+        const [a, b, c] = [p.indices[3 * t], p.indices[3 * t + 1], p.indices[3 * t + 2]];
+        ctx.beginPath();
+        ctx.moveTo(x(a), y(a));
+        ctx.lineTo(x(b), y(b));
+        ctx.lineTo(x(c), y(c));
+        ctx.closePath();
+        if (doubledArea(p.uv, a, b, c) === 0) {
+            zero++;
+            ctx.strokeStyle = '#d62728';
+            ctx.lineWidth = 1.6;
+        } else {
+            ctx.fillStyle = t % 2 ? '#dbe7f4' : '#eaf1f9';
+            ctx.fill();
+            ctx.strokeStyle = '#27445f';
+            ctx.lineWidth = 0.8;
+        }
+        ctx.stroke();
+    }
+    ctx.fillStyle = '#9a7fd1';
+    for (const [tx, ty] of trail) ctx.fillRect(tx - 1, ty - 1, 2, 2);
+    const dotR = p.vertices > 2000 ? 0.9 : p.vertices > 300 ? 1.6 : 2.4;
+    ctx.fillStyle = '#e07b00';
+    if (p.triangles < 20000)
+        for (let t = 0; t < p.triangles; t++) {
+            const [a, b, c] = [p.indices[3 * t], p.indices[3 * t + 1], p.indices[3 * t + 2]];
+            const cx = (x(a) + x(b) + x(c)) / 3, cy = (y(a) + y(b) + y(c)) / 3;
+            ctx.beginPath();
+            ctx.arc(0.65 * x(a) + 0.35 * cx, 0.65 * y(a) + 0.35 * cy, dotR * 0.9, 0, 2 * Math.PI);
+            ctx.fill();
+        }
+    ctx.fillStyle = '#1b2838';
+    for (let i = 0; i < p.vertices; i++) {
+        ctx.beginPath();
+        ctx.arc(x(i), y(i), dotR, 0, 2 * Math.PI);
+        ctx.fill();
+    }
+    ctx.font = '15px DejaVu Sans, sans-serif';
+    const cp = state.mode === 'cp';
+    const f = (k) => String(Number(state.factors[k].toPrecision(7)));
+    if (state.domain === 'quad') {
+        const corner = cp ? ['q0', 'q1', 'q2', 'q3'] : ['(0,0)', 'u = 1', '(1,1)', 'v = 1'];
+        ctx.fillText(corner[0], toX(0, 0) - 26, toY(0) + 18);
+        ctx.fillText(corner[1], toX(1, 0) + 6, toY(0) + 18);
+        ctx.fillText(corner[2], toX(1, 1) + 6, toY(1) - 6);
+        ctx.fillText(corner[3], toX(0, 1) - 26, toY(1) - 6);
+        ctx.fillStyle = '#2a6f3a';
+        ctx.font = 'bold 14px DejaVu Sans, sans-serif';
+        ctx.fillText(`f0 = ${f(0)}`, toX(0.5, 0) - 30, toY(0) + 34);
+        ctx.fillText(`f2 = ${f(2)}`, toX(0.5, 1) - 30, toY(1) - 12);
+        ctx.save();
+        ctx.translate(toX(1, 0.5) + 16, toY(0.5) - 24);
+        ctx.rotate(Math.PI / 2);
+        ctx.fillText(`f1 = ${f(1)}`, 0, 0);
+        ctx.restore();
+        ctx.save();
+        ctx.translate(toX(0, 0.5) - 16, toY(0.5) + 24);
+        ctx.rotate(-Math.PI / 2);
+        ctx.fillText(`f3 = ${f(3)}`, 0, 0);
+        ctx.restore();
+        return zero;
+    }
+    ctx.fillText(cp ? 'v0' : 'W', toX(0, 0) - 26, toY(0) + 18);
+    ctx.fillText(cp ? 'v1' : 'U', toX(1, 0) + 8, toY(0) + 18);
+    ctx.fillText(cp ? 'v2' : 'V', toX(0, 1) - 8, toY(1) - 10);
+    // Edge labels as in the SVGs: CP e0 = v0v1 (bottom), e1 = v1v2, e2 = v2v0; D3D11 Veq0 bottom, Ueq0 left, Weq0 right.
+    ctx.fillStyle = '#2a6f3a';
+    ctx.font = 'bold 14px DejaVu Sans, sans-serif';
+    ctx.fillText(cp ? `e0 = ${f(0)}` : `Veq0 = ${f(1)}`, toX(0.5, 0) - 40, toY(0) + 34);
+    ctx.fillText(cp ? `e1 = ${f(1)}` : `Weq0 = ${f(2)}`, toX(0.5, 0.5) + 14, toY(0.5));
+    ctx.textAlign = 'right';
+    ctx.fillText(cp ? `e2 = ${f(2)}` : `Ueq0 = ${f(0)}`, toX(0, 0.5) - 14, toY(0.5));
+    ctx.textAlign = 'left';
+    return zero;
+}
+
+// ---- redraw loop: the latest state wins; window.ctessViewer is set after every redraw ----
+let busy = false, pending = false;
+async function redraw() {
+    if (!device) return; // controls moved before WebGPU is up: the first redraw uses the latest state
+    if (busy) { pending = true; return; }
+    busy = true;
+    try {
+        do {
+            pending = false;
+            if (state.view === 'pattern') await redrawPattern();
+            else {
+                const m = await meshView.redraw(state.max);
+                setStatus(`mesh · ${m.surface} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
+            }
+        } while (pending);
+    } catch (e) {
+        setStatus(`Error: ${e.message}`, true);
+        console.error(e);
+    } finally {
+        busy = false;
+    }
+}
+
+async function redrawPattern() {
+    const { mode, max, domain } = state;
+    const factors = state.factors.slice();
+    const t0 = performance.now();
+    const p = await computePattern(mode, factors, max);
+    const t1 = performance.now();
+    let ratio = null;
+    try {
+        const even = await apiPattern('d3d11-even', factors);
+        ratio = p.triangles / even.triangle_count;
+    } catch { /* no /api/pattern (page opened without ctess serve): no ratio */ }
+    if (state.sweep) {
+        for (let i = 0; i < p.vertices; i++)
+            state.sweep.trail.push([toX(p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one), toY(p.uv[2 * i + 1] / p.one)]);
+        if (state.sweep.trail.length > 400000) state.sweep.trail.splice(0, 200000);
+    }
+    const t2 = performance.now();
+    const zero = drawPattern(p, state.sweep ? state.sweep.trail : []);
+    const ms = { compute: t1 - t0, ratio: t2 - t1, draw: performance.now() - t2 };
+    $('count-vertices').textContent = p.vertices;
+    $('count-triangles').textContent = p.triangles;
+    $('count-zero').textContent = zero;
+    $('count-ratio').textContent = ratio === null ? 'n/a (needs ctess serve)' : `${ratio.toFixed(3)}×`;
+    window.ctessViewer = {
+        view: 'pattern', mode, domain, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
+        ratioToD3d11Even: ratio, ms, readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
+    };
+    setStatus(`${mode} · ${domain} · factors ${factorText(factors)} · max ${max}` +
+              (mode === 'cp' ? ' · computed by the generated WGSL on WebGPU' : ' · computed by ctess serve'));
+}
+
+// ---- controls ----
+function showFactors() {
+    $('f3-label').hidden = state.domain !== 'quad';
+    $('domain').value = state.domain;
+    for (let k = 0; k < state.factors.length; k++) {
+        $(`f${k}`).max = String(state.max);
+        $(`f${k}`).value = String(state.factors[k]);
+        $(`f${k}-value`).textContent = String(Number(state.factors[k].toPrecision(7)));
+    }
+    $('factors').value = factorText(state.factors);
+    $('mode').value = state.mode;
+    $('max').value = String(state.max);
+}
+function syncUrl() {
+    const q = new URLSearchParams({ view: state.view, mode: state.mode, domain: state.domain, factors: factorText(state.factors), max: state.max });
+    history.replaceState(null, '', `?${q}`);
+}
+function changed() {
+    showFactors();
+    syncUrl();
+    redraw();
+}
+for (let k = 0; k < 4; k++)
+    $(`f${k}`).addEventListener('input', (e) => {
+        state.factors[k] = Math.fround(Number(e.target.value));
+        changed();
+    });
+$('factors').addEventListener('change', (e) => {
+    const f = parseFactors(e.target.value);
+    if (!f) return setStatus(state.domain === 'quad' ? 'Factors: four numbers > 0, e.g. 12,5,12,30' : 'Factors: three numbers > 0, e.g. 10.3,6,3', true);
+    state.factors = f;
+    changed();
+});
+$('mode').addEventListener('change', (e) => { state.mode = e.target.value; changed(); });
+$('domain').addEventListener('change', (e) => {
+    state.domain = e.target.value;
+    state.factors = state.domain === 'quad' ? [...state.factors.slice(0, 3), state.factors[0]] : state.factors.slice(0, 3);
+    state.sweep = null;
+    $('play').textContent = 'play';
+    $('sweep-from').value = state.domain === 'quad' ? '1,1,1,1' : '1,1,1';
+    $('sweep-to').value = state.domain === 'quad' ? '8,8,8,8' : '8,8,8';
+    changed();
+});
+$('max').addEventListener('change', (e) => {
+    state.max = Number(e.target.value);
+    state.factors = state.factors.map((f) => Math.min(f, state.max));
+    changed();
+});
+for (const radio of document.querySelectorAll('input[name=view]'))
+    radio.addEventListener('change', (e) => {
+        state.view = e.target.value;
+        $('pattern-view').hidden = state.view !== 'pattern';
+        $('mesh-view').hidden = state.view !== 'mesh';
+        syncUrl();
+        redraw();
+    });
+
+// Sweep: factors move from one triple to the other and back (4 s each way); every vertex position visited
+// stays drawn, so a point that moves leaves a path and a point that pops leaves a gap.
+$('play').addEventListener('click', () => {
+    if (state.sweep) {
+        state.sweep = null;
+        $('play').textContent = 'play';
+        return;
+    }
+    const from = parseFactors($('sweep-from').value), to = parseFactors($('sweep-to').value);
+    if (!from || !to) return setStatus(`Sweep: ${state.factors.length} numbers > 0 in each field`, true);
+    state.sweep = { from, to, start: performance.now(), trail: [] };
+    $('play').textContent = 'pause';
+    const step = async () => {
+        if (!state.sweep) return;
+        const s = state.sweep;
+        const phase = ((performance.now() - s.start) / 4000) % 2, t = phase < 1 ? phase : 2 - phase;
+        state.factors = s.from.map((a, k) => Math.fround(a + (s.to[k] - a) * t));
+        showFactors();
+        await redraw();
+        requestAnimationFrame(step);
+    };
+    step();
+});
+
+const meshView = new MeshView($('mesh-canvas'), {
+    kind: $('mesh-kind'), surface: $('surface'), dice: $('dice'), diceValue: $('dice-value'),
+    vertices: $('mesh-vertices'), triangles: $('mesh-triangles'),
+}, () => pipelineFor(state.max), redraw);
+
+// ---- start ----
+if (state.domain === 'quad') {
+    $('sweep-from').value = '1,1,1,1';
+    $('sweep-to').value = '8,8,8,8';
+}
+showFactors();
+document.querySelector(`input[name=view][value=${state.view}]`).checked = true;
+$('pattern-view').hidden = state.view !== 'pattern';
+$('mesh-view').hidden = state.view !== 'mesh';
+try {
+    const opened = await openDevice();
+    device = opened.device;
+    device.lost.then((info) => setStatus(`WebGPU device lost: ${info.message}`, true));
+    meshView.attach(device);
+    await redraw();
+} catch (e) {
+    setStatus(`WebGPU is unavailable, so the viewer cannot run: ${e.message}`, true);
+    window.ctessViewer = { error: e.message };
+}
