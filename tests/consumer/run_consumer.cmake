@@ -1,8 +1,9 @@
 # Configures, builds and runs one consumer project (ctest drives this script; see tests/CMakeLists.txt).
-# -DSOURCE=<consumer dir> -DBINARY=<build dir> -DGENERATOR=... -DCXX=<compiler> [-DARGS=<more cache args>]
+# -DSOURCE=<consumer dir> -DBINARY=<build dir> -DGENERATOR=... -DCXX=<compiler> [-DARGS=<one more cache arg>]
+# [-DFLAGS=<CMAKE_CXX_FLAGS, e.g. the sanitizers of the build under test>]
 file(REMOVE_RECURSE ${BINARY})
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${BINARY} -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX}
-                        -DCMAKE_BUILD_TYPE=Release ${ARGS} RESULT_VARIABLE rc)
+                        -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS=${FLAGS}" ${ARGS} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "configuring ${SOURCE} failed")
 endif()
