@@ -1,6 +1,6 @@
 // libFuzzer target: ctess::rt::CpPatch through its public API, against the procedural cp::tessellate.
-// Input: table set, three edges given as float bit patterns or as raw line states (any token, any lerp),
-// then index queries and span sizes. Properties: counts, every vertex and triangle, and emit into exact spans
+// Input: table set, layout and winding, three edges given as float bit patterns or as raw line states (any
+// token, any lerp), then index queries and span sizes. The CpPatchSetup emit path and cp_counts are checked too. Properties: counts, every vertex and triangle, and emit into exact spans
 // equal the procedural pattern; out-of-range queries give {0, 0} and {0, 0, 0}; emit into a short or empty
 // span returns false and writes nothing.
 #include <cstdio>
@@ -30,12 +30,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             s[k] = cp::line_state(f[k], max); // what the float constructor must do
         }
     }
-    const rt::CpPatch patch =
-        raw_states ? rt::CpPatch(tables, s[0], s[1], s[2]) : rt::CpPatch(tables, f[0], f[1], f[2]);
+    const PatchOptions patch_options{(mode & 4) ? Layout::shared : Layout::provoking,
+                                     (mode & 8) ? Winding::cw : Winding::ccw};
+    const rt::CpPatch patch = raw_states ? rt::CpPatch(tables, s[0], s[1], s[2], patch_options)
+                                         : rt::CpPatch(tables, f[0], f[1], f[2], patch_options);
 
-    const cp::PatternOptions options{max};
+    cp::PatternOptions options{max};
+    options.layout = patch_options.layout;
+    options.winding = patch_options.winding;
     const Counts ref = cp::tessellate(nullptr, nullptr, s[0], s[1], s[2], options);
     CTESS_FUZZ_CHECK(patch.vertex_count() == ref.vertices && patch.triangle_count() == ref.triangles);
+    CTESS_FUZZ_CHECK(rt::cp_counts(tables, s[0], s[1], s[2], patch_options) == ref);
     std::vector<DomainPoint> ref_v(ref.vertices);
     std::vector<std::uint32_t> ref_i(3 * std::size_t{ref.triangles});
     cp::tessellate(ref_v.data(), ref_i.data(), s[0], s[1], s[2], options);
@@ -66,5 +71,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         CTESS_FUZZ_CHECK(v[k] == (ok ? ref_v[k] : DomainPoint{7, 7}));
     for (std::size_t k = 0; k < ref_i.size(); ++k) CTESS_FUZZ_CHECK(idx[k] == (ok ? ref_i[k] : 7u));
     CTESS_FUZZ_CHECK(v.back() == (DomainPoint{7, 7}) && idx.back() == 7u); // never past the span
+
+    // The emit-only setup writes the same.
+    if (fits) {
+        const rt::CpPatchSetup setup(tables, s[0], s[1], s[2], patch_options);
+        std::vector<DomainPoint> v2(ref.vertices);
+        std::vector<std::uint32_t> idx2(ref_i.size());
+        CTESS_FUZZ_CHECK(setup.emit(v2, idx2));
+        CTESS_FUZZ_CHECK(v2 == ref_v && idx2 == ref_i);
+    }
     return 0;
 }
