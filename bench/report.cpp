@@ -174,21 +174,22 @@ std::uint32_t osd_emit(const Factors& f) {
 struct Generator {
     const char* name;
     const char* colour;
+    const char* dash; // SVG stroke-dasharray of its plot lines, "" for solid
     void (*pattern)(const Factors&, Pattern&);
     std::uint32_t (*emit)(const Factors&);
 };
 
 // The hook: one row per generator.
 const Generator generators[] = {
-    {"CP", "#d62728", cp_pattern, cp_emit},
-    {"D3D11 fractional_even", "#1f77b4", d3d11_pattern<ctess::d3d11::Partitioning::fractional_even>,
+    {"CP", "#d62728", "", cp_pattern, cp_emit},
+    {"D3D11 fractional_even", "#1f77b4", "", d3d11_pattern<ctess::d3d11::Partitioning::fractional_even>,
      d3d11_emit<ctess::d3d11::Partitioning::fractional_even>},
-    {"D3D11 fractional_odd", "#2ca02c", d3d11_pattern<ctess::d3d11::Partitioning::fractional_odd>,
+    {"D3D11 fractional_odd", "#2ca02c", "", d3d11_pattern<ctess::d3d11::Partitioning::fractional_odd>,
      d3d11_emit<ctess::d3d11::Partitioning::fractional_odd>},
-    {"D3D11 integer", "#9467bd", d3d11_pattern<ctess::d3d11::Partitioning::integer>,
+    {"D3D11 integer", "#9467bd", "", d3d11_pattern<ctess::d3d11::Partitioning::integer>,
      d3d11_emit<ctess::d3d11::Partitioning::integer>},
-    {"OpenSubdiv", "#ff7f0e", osd_pattern, osd_emit},
-    {"uniform density", "#17becf", uniform_pattern, uniform_emit},
+    {"OpenSubdiv", "#ff7f0e", "8 5", osd_pattern, osd_emit},
+    {"uniform density", "#17becf", "", uniform_pattern, uniform_emit},
 };
 
 // ---- measures ----
@@ -431,10 +432,10 @@ Movement sweep(const Generator& g, const Factors& from, const Factors& to, int s
     return m;
 }
 
-// Triangles per second of each generator's `emit` over the factor sets: rounds of 20 passes, the generators
-// taking turns within a round (so that a shared machine's load changes reach all of them alike), the best
-// round of each kept.
-constexpr int speed_rounds = 15, speed_passes = 20;
+// Triangles per second of each generator's `emit` over the factor sets: short rounds (a few passes), the
+// generators taking turns within a round (so that a shared machine's load changes reach all of them alike),
+// the best round of each kept.
+constexpr int speed_rounds = 40, speed_passes = 5;
 std::vector<double> emission_rates(const std::vector<Factors>& sets) {
     std::vector<double> best(std::size(generators), 0.0);
     for (int round = 0; round < speed_rounds; ++round)
@@ -452,17 +453,37 @@ std::vector<double> emission_rates(const std::vector<Factors>& sets) {
 // ---- SVG ----
 
 struct Series {
-    std::string name, colour;
+    std::string name, colour, dash;
     std::vector<std::pair<double, double>> points;
 };
 
+// Axis ticks at multiples of 1, 2, 2.5 or 5 times a power of ten, about `count` of them over [lo, hi].
+std::vector<double> ticks(double lo, double hi, int count) {
+    const double raw = (hi - lo) / count, decade = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = decade;
+    for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+        if (m * decade >= raw) {
+            step = m * decade;
+            break;
+        }
+    std::vector<double> out;
+    for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step)
+        out.push_back(std::fabs(t) < 1e-9 * step ? 0.0 : t); // no "-0"
+
+    return out;
+}
+
 std::string line_plot(const std::string& title, const std::string& xlabel, const std::string& ylabel,
                       const std::vector<Series>& series) {
-    const double W = 720, H = 420, L = 70, R = 200, T = 40, B = 50;
+    const double W = 720, H = 420, L = 70, R = 215, T = 40, B = 50;
     double x0 = 1e300, x1 = -1e300, y1 = 0;
     for (const auto& s : series)
         for (const auto& [x, y] : s.points) x0 = std::min(x0, x), x1 = std::max(x1, x), y1 = std::max(y1, y);
     if (y1 <= 0) y1 = 1;
+    std::vector<double> yt = ticks(0, y1, 4);
+    const std::vector<double> xt = ticks(x0, x1, 6);
+    if (yt.back() < y1) yt.push_back(yt.back() + (yt[1] - yt[0])); // the top line is a tick
+    y1 = yt.back();
     auto px = [&](double x) { return L + (x - x0) / (x1 - x0) * (W - L - R); };
     auto py = [&](double y) { return H - B - y / y1 * (H - T - B); };
     std::string o =
@@ -470,15 +491,15 @@ std::string line_plot(const std::string& title, const std::string& xlabel, const
                     "font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" "
                     "fill=\"white\"/>\n<text x=\"{}\" y=\"24\" font-size=\"16\">{}</text>\n",
                     W, H, L, title);
-    for (int k = 0; k <= 4; ++k) {
-        const double y = y1 * k / 4, x = x0 + (x1 - x0) * k / 4;
+    for (double y : yt) {
         o += fmt::format("<line x1=\"{}\" y1=\"{:.1f}\" x2=\"{}\" y2=\"{:.1f}\" stroke=\"#ddd\"/>\n", L,
                          py(y), W - R, py(y));
         o += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\">{:.4g}</text>\n", L - 6, py(y) + 4,
                          y);
+    }
+    for (double x : xt)
         o += fmt::format("<text x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{:.4g}</text>\n", px(x),
                          H - B + 18, x);
-    }
     o += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", (L + W - R) / 2, H - 10,
                      xlabel);
     o += fmt::format(
@@ -488,11 +509,13 @@ std::string line_plot(const std::string& title, const std::string& xlabel, const
         const Series& s = series[k];
         std::string pts;
         for (const auto& [x, y] : s.points) pts += fmt::format("{:.1f},{:.1f} ", px(x), py(y));
-        o += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\" points=\"{}\"/>\n",
-                         s.colour, pts);
+        const std::string dash = s.dash.empty() ? "" : fmt::format(" stroke-dasharray=\"{}\"", s.dash);
+        o += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n",
+                         s.colour, dash, pts);
         const double ly = T + 20 + 22.0 * k;
-        o += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"3\"/>\n",
-                         W - R + 12, ly, W - R + 36, ly, s.colour);
+        o += fmt::format(
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"3\"{}/>\n",
+            W - R + 12, ly, W - R + 36, ly, s.colour, dash);
         o += fmt::format("<text x=\"{}\" y=\"{}\">{}</text>\n", W - R + 42, ly + 4, s.name);
     }
     return o + "</svg>\n";
@@ -626,7 +649,7 @@ int main(int argc, char** argv) {
         // Triangles against an equal factor.
         std::vector<Series> tri_series, move_series, speed_bars;
         for (const Generator& g : generators) {
-            Series s{g.name, g.colour, {}};
+            Series s{g.name, g.colour, g.dash, {}};
             for (int k = 0; k <= 63 * 8; ++k) {
                 const float f = 1.0f + k / 8.0f;
                 g.pattern({f, f, f}, p);
@@ -680,7 +703,9 @@ int main(int argc, char** argv) {
             "the vertices that stay within the matching radius (no slide in between), and the vertices that "
             "jump further, which for uniform density is most of the interior (its interior is re-placed for "
             "every triple, §3.1), count as unmatched and show in the pop columns instead. Read path length "
-            "and pop together for them.\n\n"
+            "and pop together for them. Uniform density's (n, n, n) pattern is the regular n² grid, as is "
+            "OpenSubdiv's: on the equal 2 → 16 sweep their rows coincide (the jumps are the same, at "
+            "different factors).\n\n"
             "| sweep | generator | path length per unit (all) | ratio to CP | edge points only | ratio to CP "
             "| "
             "largest step | unmatched | pop per unit | largest pop "
@@ -701,7 +726,9 @@ int main(int argc, char** argv) {
                     generators[g].name, m.all, m.all / cp.all, m.edges,
                     cp.edges > 0 ? fmt::format("{:.2f}", m.edges / cp.edges) : std::string("—"), m.largest,
                     m.unmatched, m.pop, m.largest_pop);
-                if (w == 0) move_series.push_back({generators[g].name, generators[g].colour, m.cumulative});
+                if (w == 0)
+                    move_series.push_back(
+                        {generators[g].name, generators[g].colour, generators[g].dash, m.cumulative});
             }
         }
         write(dir / "movement.svg", line_plot("Edge-point movement, equal factors 2 → 16", "factor",
@@ -729,7 +756,8 @@ int main(int argc, char** argv) {
             speed +=
                 fmt::format("| {} | {:.2f} | {:.2f} | {:.2f} |\n", generators[g].name, rates[g] / rates[osd],
                             rates[g] / rates[0], small_rates[g] / small_rates[osd]);
-            speed_bars.push_back({generators[g].name, generators[g].colour, {{0, rates[g] / rates[osd]}}});
+            speed_bars.push_back(
+                {generators[g].name, generators[g].colour, "", {{0, rates[g] / rates[osd]}}});
         }
         write(dir / "speed.svg",
               bar_plot("Emission speed relative to OpenSubdiv (triangles per second)", speed_bars));
@@ -755,8 +783,11 @@ int main(int argc, char** argv) {
                 movement[2][g].pop, rates[g] / rates[osd]);
         }
 
-        md += "\n" + head + "\n" + summary + "\n![triangles](triangles.svg)\n\n" + moves +
-              "\n![movement](movement.svg)\n\n" + speed + "\n![speed](speed.svg)\n";
+        md += "\n" + head + "\n" + summary +
+              "\n![triangles](triangles.svg)\n\nUniform density's count above 16 comes from UniformSplit and "
+              "is not monotone in the factor: the split pattern and the rounded factors of the subpatches "
+              "change at different factors (docs/algorithm.md §3.5).\n\n" +
+              moves + "\n![movement](movement.svg)\n\n" + speed + "\n![speed](speed.svg)\n";
         // Put the summaries first: move the per-set table to the end.
         const std::size_t per_set = md.find("## Per factor set");
         const std::size_t per_set_end = md.find("\n## Headline");
