@@ -1,0 +1,101 @@
+// libFuzzer target: the uniform-density runtime (ctess::rt::UniformPatch, UniformSplit) through its public
+// API. Input: table set (N = 11 or 16), layout and winding, three factors as float bit patterns, then index
+// queries and span sizes. Properties of UniformPatch: emit equals vertex(i) / triangle(p); every index is in
+// range; every point lies in the domain; every triangle has the requested orientation and a non-zero area,
+// and together they cover the domain exactly (integer areas); edge k carries uniform_factor(f_k) segments;
+// out-of-range queries give zeros; a short span writes nothing. UniformSplit (any factor, up to N^2): bounded
+// depth, indices in range, points in the domain, exact coverage in units of 65534^2.
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include <ctess/runtime/uniform_split.hpp>
+
+#include "fuzz_input.hpp"
+
+using namespace ctess;
+
+namespace {
+
+template <class Point>
+__int128 doubled_area(const Point& a, const Point& b, const Point& c) {
+    const __int128 bx = __int128(b.u) - a.u, by = __int128(b.v) - a.v;
+    const __int128 cx = __int128(c.u) - a.u, cy = __int128(c.v) - a.v;
+    return bx * cy - by * cx;
+}
+
+// Indices in range, points in the triangle of side `one`, orientation and exact coverage.
+void check_mesh(const std::vector<DomainPoint>& v, const std::vector<std::uint32_t>& idx, std::uint64_t one,
+                Winding winding) {
+    for (const DomainPoint& p : v) CTESS_FUZZ_CHECK(std::uint64_t{p.u} + p.v <= one);
+    __int128 total = 0;
+    for (std::size_t k = 0; k < idx.size(); k += 3) {
+        for (unsigned j = 0; j < 3; ++j) CTESS_FUZZ_CHECK(idx[k + j] < v.size());
+        const __int128 a = doubled_area(v[idx[k]], v[idx[k + 1]], v[idx[k + 2]]);
+        CTESS_FUZZ_CHECK(winding == Winding::ccw ? a > 0 : a < 0);
+        total += a;
+    }
+    const __int128 full = __int128(one) * __int128(one);
+    CTESS_FUZZ_CHECK(total == (winding == Winding::ccw ? full : -full));
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    fuzz::Input in(data, size);
+    const std::uint8_t mode = in.byte();
+    const rt::UniformTableSet& tables = (mode & 1) ? rt::uniform_tables_16 : rt::uniform_tables_11;
+    const PatchOptions options{(mode & 2) ? Layout::provoking : Layout::shared,
+                               (mode & 4) ? Winding::cw : Winding::ccw};
+    const float f[3] = {in.float_bits(), in.float_bits(), in.float_bits()};
+
+    if (mode & 8) { // split: any factor, rounded and clamped to [1, N^2]
+        const rt::UniformSplit split(tables, f[0], f[1], f[2], options);
+        CTESS_FUZZ_CHECK(split.depth() <= 2);
+        const Counts n = split.counts();
+        std::vector<DomainPoint> v(n.vertices);
+        std::vector<std::uint32_t> idx(n.index_count());
+        CTESS_FUZZ_CHECK(split.emit(v, idx));
+        check_mesh(v, idx, rt::uniform_split_fixed_one, options.winding);
+        return 0;
+    }
+
+    const rt::UniformPatch patch(tables, f[0], f[1], f[2], options);
+    const Counts n = patch.counts();
+    std::vector<DomainPoint> v(n.vertices + 1, DomainPoint{7, 7});
+    std::vector<std::uint32_t> idx(n.index_count() + 1, 7u);
+    CTESS_FUZZ_CHECK(patch.emit(std::span(v.data(), n.vertices), std::span(idx.data(), n.index_count())));
+    CTESS_FUZZ_CHECK(v.back() == (DomainPoint{7, 7}) && idx.back() == 7u);
+    v.pop_back();
+    idx.pop_back();
+    for (std::uint32_t i = 0; i < n.vertices; ++i) CTESS_FUZZ_CHECK(patch.vertex(i) == v[i]);
+    for (std::uint32_t t = 0; t < n.triangles; ++t) {
+        const auto tri = patch.triangle(t);
+        for (unsigned k = 0; k < 3; ++k) CTESS_FUZZ_CHECK(tri[k] == idx[3 * t + k]);
+    }
+    check_mesh(v, idx, uniform::fixed_one, options.winding);
+
+    // Edge k (e0: v = 0, e1: u + v = 1, e2: u = 0) has uniform_factor(f_k) segments: that many + 1 positions.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> on_edge[3];
+    for (const DomainPoint& p : v) {
+        if (p.v == 0) on_edge[0].insert({p.u, p.v});
+        if (p.u + p.v == uniform::fixed_one) on_edge[1].insert({p.u, p.v});
+        if (p.u == 0) on_edge[2].insert({p.u, p.v});
+    }
+    for (unsigned k = 0; k < 3; ++k)
+        CTESS_FUZZ_CHECK(on_edge[k].size() == rt::uniform_factor(f[k], tables.max_factor) + 1u);
+
+    // Out of range: zeros. A short span: false, nothing written.
+    const std::uint32_t far = n.vertices + in.u32() % 1000u;
+    CTESS_FUZZ_CHECK(patch.vertex(far) == DomainPoint{});
+    const auto none = patch.triangle(n.triangles + in.u32() % 1000u);
+    CTESS_FUZZ_CHECK(none[0] == 0 && none[1] == 0 && none[2] == 0);
+    std::vector<DomainPoint> short_v(n.vertices - 1, DomainPoint{7, 7});
+    std::vector<std::uint32_t> short_i(n.index_count(), 7u);
+    CTESS_FUZZ_CHECK(!patch.emit(short_v, short_i));
+    for (const DomainPoint& p : short_v) CTESS_FUZZ_CHECK(p == (DomainPoint{7, 7}));
+    for (const std::uint32_t i : short_i) CTESS_FUZZ_CHECK(i == 7u);
+    return 0;
+}
