@@ -70,7 +70,8 @@ Config uniform_config(const ctess::uniform::tables::UniformTables<Max>& t, const
             {{fmt::format("uniform_table_{}", Max),
               sizeof(t),
               {table("uniform offsets", t.offsets), table("uniform interior", t.interior),
-               table("uniform indices", t.indices)}}},
+               table("uniform indices", t.indices), table("uniform copy words", t.copy_words),
+               table("uniform copy sources", t.copy_sources)}}},
             paths,
             "uniform"};
 }
