@@ -70,7 +70,8 @@ Config uniform_config(const ctess::uniform::tables::UniformTables<Max>& t, const
             {{fmt::format("uniform_table_{}", Max),
               sizeof(t),
               {table("uniform offsets", t.offsets), table("uniform interior", t.interior),
-               table("uniform indices", t.indices)}}},
+               table("uniform indices", t.indices), table("uniform copy words", t.copy_words),
+               table("uniform copy sources", t.copy_sources)}}},
             paths,
             "uniform"};
 }
@@ -283,11 +284,11 @@ int main(int argc, char** argv) {
             report += "}";
         } else {
             report +=
-                fmt::format("{}max_tess_factor {}\n  {:<16} {:>9} {:>9}\n",
+                fmt::format("{}max_tess_factor {}\n  {:<20} {:>9} {:>9}\n",
                             c.family == "cp" ? "" : "uniform ", c.max_factor, "table", "entries", "bytes");
             for (const Table& t : rows)
-                report += fmt::format("  {:<16} {:>9} {:>9}\n", t.name, t.entries, t.bytes);
-            report += fmt::format("  {:<16} {:>9} {:>9}  ({:.1f} KiB, with alignment padding)\n", "total", "",
+                report += fmt::format("  {:<20} {:>9} {:>9}\n", t.name, t.entries, t.bytes);
+            report += fmt::format("  {:<20} {:>9} {:>9}  ({:.1f} KiB, with alignment padding)\n", "total", "",
                                   total, static_cast<double>(total) / 1024.0);
             report += verified ? "  checked: every table object's nm size equals its type's size\n"
                                : fmt::format("  CHECK FAILED: {}\n", why);

@@ -392,6 +392,20 @@ TEST_CASE("cli: pattern --mode uniform is the stored pattern, in any factor orde
     CHECK(obj.out.find("\nf ") != std::string::npos);
 }
 
+TEST_CASE("cli: pattern --mode uniform --layout provoking appends the fewest copies", "[cli][uniform]") {
+    // 11, 9, 6 has more triangles than vertices: one vertex per triangle, every first index its own.
+    const auto p = ctess::uniform::pattern(11, 9, 6);
+    REQUIRE(p.triangle_count() > p.vertex_count());
+    const Run r = ctess_cli("pattern --mode uniform --factors 6,11,9 --format json --layout provoking");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("\"layout\": \"provoking\"") != std::string::npos);
+    CHECK(json_number(r.out, "vertex_count") == long(p.triangle_count()));
+    CHECK(json_number(r.out, "triangle_count") == long(p.triangle_count()));
+    CHECK(json_number(r.out, "degenerate_triangle_count") == 0);
+    const Run shared = ctess_cli("pattern --mode uniform --factors 6,11,9 --format json");
+    CHECK(json_number(shared.out, "vertex_count") == long(p.vertex_count()));
+}
+
 TEST_CASE("cli: pattern --mode uniform above the table splits (units 65534^2, welded when shared)",
           "[cli][uniform]") {
     const Run shared = ctess_cli("pattern --mode uniform --factors 40,30,20 --format json");

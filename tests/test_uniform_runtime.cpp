@@ -1,7 +1,8 @@
 // ctess::rt::UniformPatch against the constexpr patterns (docs/algorithm.md §3.4): for every sorted triple of
 // both table sets and every order of its factors, the patch is the stored pattern with its corners mapped so
-// that output edge i has f_i segments, counter-clockwise (or clockwise on request); neighbouring patches weld
-// bit for bit; bad input gets the documented clamp.
+// that output edge i has f_i segments, counter-clockwise (or clockwise on request); the provoking layout is
+// the shared one plus the fewest copies, with every first index unique; neighbouring patches weld bit for
+// bit; bad input gets the documented clamp.
 #include <ctess/runtime/uniform_patch.hpp>
 
 #include <algorithm>
@@ -130,6 +131,82 @@ TEST_CASE("uniform runtime: every triple in every order is the stored pattern wi
                         ++checked;
                     }
         REQUIRE(checked == 6 * uf::pattern_count(n));
+    }
+}
+
+TEST_CASE("uniform runtime: the provoking layout is the shared one with a unique first vertex per triangle",
+          "[uniform][runtime][provoking]") {
+    using ctess::Layout;
+    for (const UniformTableSet* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16}) {
+        const unsigned n = set->max_factor;
+        std::size_t copies_total = 0, checked = 0;
+        for (unsigned a = 1; a <= n; ++a)
+            for (unsigned b = 1; b <= a; ++b)
+                for (unsigned c = 1; c <= b; ++c) {
+                    const uf::Pattern pattern = uf::pattern(a, b, c);
+                    const std::uint32_t v = pattern.vertex_count(), t = pattern.triangle_count();
+                    // every triangle needs a first vertex of its own: at least max(T - V, 0) copies
+                    const std::uint32_t fewest = t > v ? t - v : 0u;
+                    copies_total += fewest;
+                    for (const auto& order : permutations)
+                        for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw}) {
+                            const Factors sorted{a, b, c};
+                            const Factors f{sorted[order[0]], sorted[order[1]], sorted[order[2]]};
+                            INFO("max " << n << " factors " << f[0] << "," << f[1] << "," << f[2] << " cw "
+                                        << (winding == ctess::Winding::cw));
+                            const UniformPatch shared(*set, f, {Layout::shared, winding});
+                            const UniformPatch provoking(*set, f, {Layout::provoking, winding});
+                            REQUIRE(shared.counts() == ctess::Counts{v, t});
+                            REQUIRE(provoking.counts() == ctess::Counts{v + fewest, t});
+                            REQUIRE(provoking.distinct_vertices() == v);
+                            const Emitted s = emit_all(shared), e = emit_all(provoking);
+                            // positions [0, V) are the shared layout's
+                            REQUIRE(std::equal(s.vertices.begin(), s.vertices.end(), e.vertices.begin()));
+                            std::set<std::uint64_t> distinct;
+                            for (const DomainPoint d : s.vertices)
+                                distinct.insert(ctess::test::position_key(d));
+                            std::vector<int> provokes(v + fewest, 0);
+                            for (std::uint32_t p = 0; p < t; ++p) {
+                                const std::uint32_t* si = &s.indices[3 * p];
+                                const std::uint32_t* pi = &e.indices[3 * p];
+                                // the same triangle as positions, same order and winding
+                                for (int k = 0; k < 3; ++k) REQUIRE(e.vertices[pi[k]] == s.vertices[si[k]]);
+                                // only the first index may differ, and then it names a copy
+                                REQUIRE((pi[1] == si[1] && pi[2] == si[2]));
+                                REQUIRE((pi[0] == si[0] || pi[0] >= v));
+                                ++provokes[pi[0]];
+                                const auto tri = provoking.triangle(p);
+                                REQUIRE((tri[0] == pi[0] && tri[1] == pi[1] && tri[2] == pi[2]));
+                            }
+                            // every first index is unique, and every copy provokes exactly one triangle
+                            for (std::uint32_t i = 0; i < v + fewest; ++i) {
+                                REQUIRE(provokes[i] <= 1);
+                                if (i >= v) {
+                                    REQUIRE(provokes[i] == 1);
+                                    REQUIRE(distinct.count(ctess::test::position_key(e.vertices[i])) == 1);
+                                }
+                                REQUIRE(provoking.vertex(i) == e.vertices[i]);
+                            }
+                            // short spans: false, nothing written
+                            std::vector<DomainPoint> sv(v + fewest - 1, DomainPoint{7, 7});
+                            std::vector<std::uint32_t> si(3 * t, 7u);
+                            REQUIRE_FALSE(provoking.emit(sv, si));
+                            REQUIRE(
+                                std::all_of(si.begin(), si.end(), [](std::uint32_t x) { return x == 7u; }));
+                            sv.assign(v + fewest, DomainPoint{7, 7});
+                            si.resize(3 * t - 1);
+                            REQUIRE_FALSE(provoking.emit(sv, si));
+                            REQUIRE(std::all_of(sv.begin(), sv.end(), [](DomainPoint d) {
+                                return d == DomainPoint{7, 7};
+                            }));
+                            ++checked;
+                        }
+                }
+        REQUIRE(checked == 12 * uf::pattern_count(n));
+        // the regular n^2 grid has more triangles than vertices: one vertex per triangle
+        const UniformPatch grid(*set, Factors{n, n, n}, {Layout::provoking, ctess::Winding::ccw});
+        CHECK(grid.counts() == ctess::Counts{n * n, n * n});
+        WARN("copies at N = " << n << ": " << copies_total);
     }
 }
 

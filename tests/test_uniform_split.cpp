@@ -106,6 +106,29 @@ TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any dep
     REQUIRE(checked == 50);
 }
 
+TEST_CASE("uniform split: the provoking layout gives every triangle its own first vertex",
+          "[uniform][split][provoking]") {
+    // Each subpatch keeps its own vertices and copies: the triangles are the shared layout's as positions,
+    // in the same order, and no two triangles of the whole output share a first index.
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const auto& f : std::array<std::array<float, 3>, 5>{
+                 {{40, 30, 20}, {17, 1, 16}, {256, 256, 256}, {100, 3, 99}, {12, 9, 5}}}) {
+            INFO("max " << set->max_factor << " factors " << f[0] << "," << f[1] << "," << f[2]);
+            const UniformSplit shared(*set, f[0], f[1], f[2], {ctess::Layout::shared, ctess::Winding::ccw});
+            const UniformSplit provoking(*set, f[0], f[1], f[2],
+                                         {ctess::Layout::provoking, ctess::Winding::ccw});
+            REQUIRE(provoking.counts().triangles == shared.counts().triangles);
+            REQUIRE(provoking.counts().vertices >= shared.counts().vertices);
+            REQUIRE(provoking.counts().vertices >= provoking.counts().triangles);
+            const Emitted s = emit_all(shared), e = emit_all(provoking);
+            std::vector<int> provokes(e.vertices.size(), 0);
+            for (std::size_t t = 0; t < e.indices.size(); ++t) {
+                REQUIRE(e.vertices[e.indices[t]] == s.vertices[s.indices[t]]);
+                if (t % 3 == 0) REQUIRE(++provokes[e.indices[t]] == 1);
+            }
+        }
+}
+
 TEST_CASE("uniform split: below the table it is the plain patch, scaled", "[uniform][split]") {
     const auto& set = ctess::rt::uniform_tables_16;
     const UniformSplit s(set, 11, 9, 6);

@@ -43,6 +43,7 @@ uniform_7_6_3 uniform 7,6,3
 uniform_11_4_2 uniform 11,4,2
 uniform_16_13_9 uniform 16,13,9
 uniform_40_30_20 uniform 40,30,20
+uniform_11_9_6_provoking uniform 11,9,6 --layout provoking --provoking
 LIST
 
 # README: CP beside D3D11 fractional_even on the same edges (bottom 16, right 8, left 4; D3D11 names them

@@ -9,7 +9,10 @@ constexpr uniform::tables::UniformTables<11> uniform_table_11 = uniform::tables:
 } // namespace detail
 
 extern const UniformTableSet uniform_tables_11;
-constexpr UniformTableSet uniform_tables_11 = {11, detail::uniform_table_11.offsets.data(),
+constexpr UniformTableSet uniform_tables_11 = {11,
+                                               detail::uniform_table_11.offsets.data(),
                                                detail::uniform_table_11.interior.data(),
-                                               detail::uniform_table_11.indices.data()};
+                                               detail::uniform_table_11.indices.data(),
+                                               detail::uniform_table_11.copy_words.data(),
+                                               detail::uniform_table_11.copy_sources.data()};
 } // namespace ctess::rt

@@ -9,7 +9,10 @@ constexpr uniform::tables::UniformTables<16> uniform_table_16 = uniform::tables:
 } // namespace detail
 
 extern const UniformTableSet uniform_tables_16;
-constexpr UniformTableSet uniform_tables_16 = {16, detail::uniform_table_16.offsets.data(),
+constexpr UniformTableSet uniform_tables_16 = {16,
+                                               detail::uniform_table_16.offsets.data(),
                                                detail::uniform_table_16.interior.data(),
-                                               detail::uniform_table_16.indices.data()};
+                                               detail::uniform_table_16.indices.data(),
+                                               detail::uniform_table_16.copy_words.data(),
+                                               detail::uniform_table_16.copy_sources.data()};
 } // namespace ctess::rt

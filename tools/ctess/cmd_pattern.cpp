@@ -28,7 +28,7 @@ PatternRequest pattern_request_from(const Args& args, const std::string& factors
         if (args.has("max") || args.has("column-rule"))
             throw UsageError("--max and --column-rule apply to the cp mode only");
         r.max_factor = CTESS_UNIFORM_MAX_FACTOR; // the configured uniform table
-        // one vertex per position by default; provoking keeps each split subpatch's own vertices
+        // one vertex per position by default; provoking appends copies (§3.4), per subpatch when split
         r.provoking_layout = args.get_or("layout", "shared") == "provoking";
     }
     return r;

@@ -36,12 +36,13 @@ Mesh tessellate_uniform(const PatternRequest& r) {
     if (r.factors.size() != 3)
         throw UsageError(fmt::format("--factors: uniform takes three edge factors f0,f1,f2, got {} values",
                                      r.factors.size()));
-    const PatchOptions options{Layout::shared, r.ccw ? Winding::ccw : Winding::cw};
+    const PatchOptions options{r.provoking_layout ? Layout::provoking : Layout::shared,
+                               r.ccw ? Winding::ccw : Winding::cw};
     Mesh mesh;
     const bool above = r.factors[0] >= float(rt::uniform_tables.max_factor) + 0.5f ||
                        r.factors[1] >= float(rt::uniform_tables.max_factor) + 0.5f ||
                        r.factors[2] >= float(rt::uniform_tables.max_factor) + 0.5f;
-    if (above) { // split with the table's own patterns (§3.5); every subpatch's own vertices
+    if (above) { // split with the table's own patterns (§3.5); every subpatch's own vertices (and copies)
         const rt::UniformSplit split(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
         mesh.fixed_one = rt::uniform_split_fixed_one;
         mesh.vertices.resize(split.counts().vertices);

@@ -14,11 +14,12 @@
 // Factors are rounded to the nearest integer (halves up) and clamped to [1, tables.max_factor]: NaN, -inf,
 // zero, negatives and anything below 1.5 give 1; +inf and anything at or above max_factor - 0.5 give
 // max_factor. Factors above the table go through ctess::rt::uniform_split instead (§3.5).
-// Vertices: the canonical numbering of the sorted pattern (boundary first, then interior); every position
-// once (Layout::shared). Layout::provoking is accepted and gives the same shared layout (documented in
-// §3.4: a uniform pattern has about twice as many triangles as vertices, so a provoking layout would need
-// copies of most vertices). vertex(i) with i >= vertices returns {0, 0}; triangle(p) with p >= triangles
-// returns {0, 0, 0}; emit() returns false and writes nothing when a span is too small.
+// Vertices: the canonical numbering of the sorted pattern (boundary first, then interior), every position
+// once; Layout::provoking appends copies after them so that every triangle's first index is its own (§3.4):
+// positions [0, V) and the triangles are the shared layout's, only the first index of a triangle whose
+// vertex already provokes another one names its copy. vertex(i) with i >= vertices returns {0, 0};
+// triangle(p) with p >= triangles returns {0, 0, 0}; emit() returns false and writes nothing when a span is
+// too small.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -55,13 +56,45 @@ class UniformPatch {
     UniformPatch(const UniformTableSet& tables, std::array<std::uint32_t, 3> factors,
                  PatchOptions options = {}) noexcept;
 
-    Counts counts() const noexcept { return {vertices_, triangles_}; }
+    Counts counts() const noexcept { return {distinct_ + copies_, triangles_}; }
     // The sorted factors of the stored pattern (f0 >= f1 >= f2).
     std::array<std::uint32_t, 3> sorted_factors() const noexcept { return sorted_; }
 
-    // Vertex i as an exact point (u, v), units of 65534; {0, 0} when i >= counts().vertices.
+    // Vertex i as an exact point (u, v), units of 65534; {0, 0} when i >= counts().vertices. In the
+    // provoking layout, vertices from distinct_vertices() on are copies.
     DomainPoint vertex(std::uint32_t i) const noexcept {
-        if (i >= vertices_) return {};
+        if (i >= distinct_ + copies_) return {};
+        return canonical_vertex(i < distinct_ ? i : copy_sources_[i - distinct_]);
+    }
+    // Vertices with a distinct position (the shared layout's count); the copies follow them.
+    std::uint32_t distinct_vertices() const noexcept { return distinct_; }
+    // Triangle p's three vertex indices in the requested winding; {0, 0, 0} when p >= counts().triangles.
+    UniformTriangle triangle(std::uint32_t p) const noexcept {
+        if (p >= triangles_) return {0, 0, 0};
+        const std::uint8_t* t = indices_ + 3 * p;
+        std::uint32_t first = t[0];
+        const std::uint32_t g = first_triangle_ + p; // the bit of triangle p in the copy words
+        if (copies_ != 0 && (copy_words_[g / uniform::tables::copy_bits_per_word] >>
+                                 (g % uniform::tables::copy_bits_per_word) &
+                             1u) != 0)
+            first = distinct_ + uniform::tables::copies_before(copy_words_, g) - first_copy_;
+        return flip_ ? UniformTriangle{first, t[2], t[1]} : UniformTriangle{first, t[1], t[2]};
+    }
+    // Writes every vertex and every triangle (3 indices each). Returns false and writes nothing when either
+    // span is too small.
+    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+        if (vertices.size() < distinct_ + copies_ || indices.size() < 3u * triangles_) return false;
+        for (std::uint32_t i = 0; i < distinct_ + copies_; ++i) vertices[i] = vertex(i);
+        for (std::uint32_t p = 0; p < triangles_; ++p) {
+            const UniformTriangle t = triangle(p);
+            indices[3 * p] = t[0], indices[3 * p + 1] = t[1], indices[3 * p + 2] = t[2];
+        }
+        return true;
+    }
+
+  private:
+    // Canonical vertex i < distinct_ of the stored pattern, mapped to the output corners.
+    DomainPoint canonical_vertex(std::uint32_t i) const noexcept {
         const std::uint32_t boundary = sorted_[0] + sorted_[1] + sorted_[2];
         DomainPoint c;
         if (i < boundary)
@@ -73,32 +106,19 @@ class UniformPatch {
         const std::uint32_t weight[3] = {uniform::fixed_one - c.u - c.v, c.u, c.v}; // canonical v0, v1, v2
         return {weight[source_[1]], weight[source_[2]]};
     }
-    // Triangle p's three vertex indices in the requested winding; {0, 0, 0} when p >= counts().triangles.
-    UniformTriangle triangle(std::uint32_t p) const noexcept {
-        if (p >= triangles_) return {0, 0, 0};
-        const std::uint8_t* t = indices_ + 3 * p;
-        return flip_ ? UniformTriangle{t[0], t[2], t[1]} : UniformTriangle{t[0], t[1], t[2]};
-    }
-    // Writes every vertex and every triangle (3 indices each). Returns false and writes nothing when either
-    // span is too small.
-    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
-        if (vertices.size() < vertices_ || indices.size() < 3u * triangles_) return false;
-        for (std::uint32_t i = 0; i < vertices_; ++i) vertices[i] = vertex(i);
-        for (std::uint32_t p = 0; p < triangles_; ++p) {
-            const UniformTriangle t = triangle(p);
-            indices[3 * p] = t[0], indices[3 * p + 1] = t[1], indices[3 * p + 2] = t[2];
-        }
-        return true;
-    }
 
-  private:
     std::array<std::uint32_t, 3> sorted_{1, 1, 1};
     std::array<std::uint8_t, 3> source_{0, 1, 2}; // output corner -> canonical corner
     bool flip_ = false;
-    std::uint32_t vertices_ = 0;
+    std::uint32_t distinct_ = 0;
+    std::uint32_t copies_ = 0; // 0 in the shared layout
     std::uint32_t triangles_ = 0;
+    std::uint32_t first_triangle_ = 0; // over all patterns, for the copy words
+    std::uint32_t first_copy_ = 0;     // copies of the patterns before this one
     const std::uint32_t* interior_ = nullptr;
     const std::uint8_t* indices_ = nullptr;
+    const std::uint32_t* copy_words_ = nullptr;
+    const std::uint8_t* copy_sources_ = nullptr; // this pattern's first copy source
 };
 
 inline UniformPatch::UniformPatch(const UniformTableSet& tables, std::array<std::uint32_t, 3> factors,
@@ -121,10 +141,17 @@ inline UniformPatch::UniformPatch(const UniformTableSet& tables, std::array<std:
     const std::uint32_t index = uniform::pattern_index(sorted_[0], sorted_[1], sorted_[2]);
     const uniform::tables::Offset first = tables.offsets[index], next = tables.offsets[index + 1];
     const std::uint32_t interior = static_cast<std::uint32_t>(next.interior - first.interior);
-    vertices_ = sorted_[0] + sorted_[1] + sorted_[2] + interior;
+    distinct_ = sorted_[0] + sorted_[1] + sorted_[2] + interior;
     triangles_ = static_cast<std::uint32_t>(next.triangle - first.triangle);
     interior_ = tables.interior + first.interior;
     indices_ = tables.indices + 3u * first.triangle;
+    if (options.layout == Layout::provoking) {
+        first_triangle_ = first.triangle;
+        first_copy_ = uniform::tables::copies_before(tables.copy_words, first.triangle);
+        copies_ = uniform::tables::copies_before(tables.copy_words, next.triangle) - first_copy_;
+        copy_words_ = tables.copy_words;
+        copy_sources_ = tables.copy_sources + first_copy_;
+    }
 }
 
 } // namespace ctess::rt

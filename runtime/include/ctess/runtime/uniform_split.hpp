@@ -14,7 +14,8 @@
 //   diced at N while their factor is at most 1.433 N (the table's own longest edge, §3.1).
 // * Depth is at most 2; at depth 2 factors are clamped to N (an interior edge may then stay longer than one).
 // * Output: every subpatch's own vertices (not welded; shared positions are bit-identical), positions in
-//   units of fixed_one = 65534^2 on the root patch. Depth-2 positions are rounded to that unit from an exact
+//   units of fixed_one = 65534^2 on the root patch. In the provoking layout each subpatch is followed by its
+//   own copies (UniformPatch, §3.4), so every triangle's first index is unique over the whole output. Depth-2 positions are rounded to that unit from an exact
 //   integer sum, which is the same on both sides of a shared edge.
 //
 // Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()

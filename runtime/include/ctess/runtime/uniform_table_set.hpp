@@ -12,7 +12,9 @@ struct UniformTableSet {
     unsigned max_factor;                    // 11 or 16
     const uniform::tables::Offset* offsets; // [pattern_index(f0, f1, f2)], plus a sentinel
     const std::uint32_t* interior;          // (v << 16) | u
-    const std::uint8_t* indices;            // 3 per triangle, canonical numbering
+    const std::uint8_t* indices;            // 3 per triangle, canonical numbering, provoking vertex first
+    const std::uint32_t* copy_words;        // per 16 triangles: which take a copy, copies before (§3.4)
+    const std::uint8_t* copy_sources;       // the canonical vertex of each copy
 };
 
 extern const UniformTableSet uniform_tables_11; // ctess_uniform_runtime_11
