@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -74,6 +75,45 @@ TEST_CASE("uniform split: exact coverage, positive triangles, bounded depth", "[
             CHECK(std::fabs(double(counts[i]) - r[i]) <= (r[i] <= 16 ? 0.0 : sub_edges / 2));
         }
     }
+}
+
+TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches dice and which split",
+          "[uniform][split]") {
+    // A subpatch that dices and its neighbour that splits must put the same points on their shared edge: every
+    // edge inside the root patch is used once in each direction (exact positions). The first four triples
+    // cracked when a split patch subdivided an edge that its diced neighbour kept whole (found by fuzz_uniform).
+    std::vector<std::array<float, 3>> cases = {{193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}};
+    std::uint32_t state = 2026;
+    for (int k = 0; k < 60; ++k) {
+        std::array<float, 3> f{};
+        for (float& x : f) x = static_cast<float>(1 + (state = state * 1664525u + 1013904223u) % 256u);
+        cases.push_back(f);
+    }
+    const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
+    auto on_root_edge = [one](DomainPoint a, DomainPoint b) {
+        return (a.v == 0 && b.v == 0) || (a.u == 0 && b.u == 0) ||
+               (std::uint64_t{a.u} + a.v == one && std::uint64_t{b.u} + b.v == one);
+    };
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const auto& f : cases) {
+            INFO("N " << set->max_factor << " factors " << f[0] << "," << f[1] << "," << f[2]);
+            const Emitted e = emit_all(UniformSplit(*set, f[0], f[1], f[2]));
+            std::map<std::pair<std::uint64_t, std::uint64_t>, int> net; // (lower, higher) position: up minus down
+            auto key = [](DomainPoint p) { return (std::uint64_t{p.u} << 32) | p.v; };
+            for (std::size_t t = 0; t < e.indices.size(); t += 3)
+                for (unsigned j = 0; j < 3; ++j) {
+                    const std::uint64_t a = key(e.vertices[e.indices[t + j]]),
+                                        b = key(e.vertices[e.indices[t + (j + 1) % 3]]);
+                    net[{a < b ? a : b, a < b ? b : a}] += a < b ? 1 : -1;
+                }
+            std::size_t inside_open = 0;
+            for (const auto& [edge, n] : net) {
+                const DomainPoint a{std::uint32_t(edge.first >> 32), std::uint32_t(edge.first)};
+                const DomainPoint b{std::uint32_t(edge.second >> 32), std::uint32_t(edge.second)};
+                inside_open += n != 0 && !on_root_edge(a, b);
+            }
+            CHECK(inside_open == 0);
+        }
 }
 
 TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any depth", "[uniform][split]") {

@@ -10,8 +10,11 @@
 //   factors as side lengths): on a parent edge that is T_i times the edge's parameter span, i.e. a function
 //   of that edge's own factor and position only; inside the parent it is computed from the edge's endpoints
 //   in either direction with the same result. Neighbours therefore agree bit for bit at any depth: no cracks.
-// * A subpatch is diced when its factors are at most N; below the root, edges inside the root patch are also
-//   diced at N while their factor is at most 1.433 N (the table's own longest edge, §3.1).
+// * How many pieces a split gives an edge is a function of that edge's own factor and depth: an edge within
+//   the dice limit (N at the root; below it 1.433 N, the table's own longest edge, §3.1, which only edges inside
+//   the root patch can exceed) stays whole, whole edges keep their factor exactly, and a subpatch is diced when
+//   all three of its edges stay whole. So a patch that splits and its neighbour that dices put the same points
+//   on their shared edge.
 // * Depth is at most 2; at depth 2 factors are clamped to N (an interior edge may then stay longer than one).
 // * Output: every subpatch's own vertices (not welded; shared positions are bit-identical), positions in
 //   units of fixed_one = 65534^2 on the root patch. In the provoking layout each subpatch is followed by its
@@ -140,24 +143,33 @@ class UniformSplit {
         visit(visitor, Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_, 0});
     }
 
+    // The dice limit of an edge at this depth: at the root N (+ rounding), below it the table's own longest edge
+    // (only edges inside the root patch can exceed N there: a sub-edge of a root edge is at most N).
+    double dice_limit(std::uint32_t depth) const noexcept {
+        const double n = tables_->max_factor;
+        return depth == 0 ? n + 0.5 : n * uniform_split_interior_tolerance;
+    }
+
+    // How many pieces a split divides an edge into: a function of the edge's own factor and depth only, so the
+    // two patches that share the edge agree whether each of them is diced or split. An edge within the dice
+    // limit stays whole (its patch may still split because of another edge).
+    std::uint32_t edge_pieces(double factor, std::uint32_t depth) const noexcept {
+        const std::uint32_t n = tables_->max_factor;
+        if (factor < dice_limit(depth)) return 1u;
+        const std::uint32_t t = static_cast<std::uint32_t>(std::floor(factor + 0.5));
+        const std::uint32_t k = (t + n - 1) / n;
+        return k < 1 ? 1 : k > n ? n : k;
+    }
+
     template <class Visitor>
     void visit(Visitor& visitor, const Sub& s) const noexcept {
-        const std::uint32_t n = tables_->max_factor;
-        // Below the root every factor above N belongs to an edge inside the root (a sub-edge of a root edge
-        // is at most N): it is diced at N while within the table's own longest-edge tolerance.
-        const double limit = s.depth == 0 ? n + 0.5 : n * uniform_split_interior_tolerance;
-        const bool fits = s.factor[0] < limit && s.factor[1] < limit && s.factor[2] < limit;
-        if (fits || s.depth == uniform_split_max_depth) {
+        std::array<std::uint32_t, 3> split{};
+        for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth);
+        if ((split[0] == 1 && split[1] == 1 && split[2] == 1) || s.depth == uniform_split_max_depth) {
             const UniformPatch p(*tables_, {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])},
                                  options_);
             visitor.patch(p, s, *this);
             return;
-        }
-        std::array<std::uint32_t, 3> split{};
-        for (int i = 0; i < 3; ++i) {
-            const std::uint32_t t = static_cast<std::uint32_t>(std::floor(s.factor[i] + 0.5));
-            const std::uint32_t k = (t + n - 1) / n;
-            split[i] = k < 1 ? 1 : k > n ? n : k;
         }
         const UniformPatch pattern(*tables_, split, PatchOptions{Layout::shared, Winding::ccw});
         for (std::uint32_t k = 0; k < pattern.counts().triangles; ++k) {
@@ -167,10 +179,28 @@ class UniformSplit {
             Sub child;
             child.depth = s.depth + 1;
             child.corner = {map(s, a), map(s, b), map(s, c)}; // exact at depth 0 (root corners are multiples)
-            child.factor = {edge_factor(s.factor, a, b), edge_factor(s.factor, b, c),
-                            edge_factor(s.factor, a, c)};
+            child.factor = {child_edge_factor(s, a, b), child_edge_factor(s, b, c), child_edge_factor(s, a, c)};
             visit(visitor, child);
         }
+    }
+
+    // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
+    // the value the neighbour across it sees; any other child edge is measured in the parent's metric.
+    static double child_edge_factor(const Sub& s, DomainPoint a, DomainPoint b) noexcept {
+        const std::uint32_t one = uniform::fixed_one;
+        auto corner = [one](DomainPoint p) -> int {
+            if (p.u == 0 && p.v == 0) return 0;
+            if (p.u == one && p.v == 0) return 1;
+            if (p.u == 0 && p.v == one) return 2;
+            return -1;
+        };
+        const int ca = corner(a), cb = corner(b);
+        if (ca >= 0 && cb >= 0 && ca != cb) {
+            // Parent edges: 0 = v0v1 (factor[0]), 1 = v1v2 (factor[1]), 2 = v2v0 (factor[2]).
+            const int lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
+            return s.factor[lo == 0 && hi == 1 ? 0 : lo == 1 && hi == 2 ? 1 : 2];
+        }
+        return edge_factor(s.factor, a, b);
     }
 
     const UniformTableSet* tables_;
