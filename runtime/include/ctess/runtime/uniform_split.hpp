@@ -187,8 +187,8 @@ class UniformSplit {
     // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
     // the value the neighbour across it sees; any other child edge is measured in the parent's metric.
     static double child_edge_factor(const Sub& s, DomainPoint a, DomainPoint b) noexcept {
-        const std::uint32_t one = uniform::fixed_one;
-        auto corner = [one](DomainPoint p) -> int {
+        auto corner = [](DomainPoint p) -> int {
+            constexpr std::uint32_t one = uniform::fixed_one;
             if (p.u == 0 && p.v == 0) return 0;
             if (p.u == one && p.v == 0) return 1;
             if (p.u == 0 && p.v == one) return 2;
