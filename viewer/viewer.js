@@ -20,7 +20,8 @@ const state = {
     max: query.get('max') === '256' ? 256 : 64,
     domain: query.get('domain') === 'quad' && query.get('mode') !== 'uniform' ? 'quad' : 'tri', // uniform: tri only
     factors: null,
-    sweep: null, // {from, to, start, trail: [[x, y], ...]} while playing
+    sweep: null, // {from, to, start} while playing
+    trail: null, // [[u, v], ...]: the domain positions a sweep has drawn; kept when paused, dropped by the next change
 };
 
 state.factors = parseFactors(query.get('factors') ?? '', state.domain) ?? (state.domain === 'quad' ? [12, 5, 12, 30] : [10.3, 6, 3]);
@@ -242,12 +243,12 @@ async function redrawPattern() {
     } catch { /* no /api/pattern (page opened without ctess serve): no ratio */ }
     // The trail keeps domain positions, drawn in the current frame (a uniform frame changes with the factors).
     if (state.sweep) {
-        for (let i = 0; i < p.vertices; i++) state.sweep.trail.push([p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one]);
-        if (state.sweep.trail.length > 400000) state.sweep.trail.splice(0, 200000);
+        for (let i = 0; i < p.vertices; i++) state.trail.push([p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one]);
+        if (state.trail.length > 400000) state.trail.splice(0, 200000);
     }
     frame = frameFor(domain, p.sides);
     const t2 = performance.now();
-    const zero = drawPattern(p, state.sweep ? state.sweep.trail : []);
+    const zero = drawPattern(p, state.trail ?? []);
     const ms = { compute: t1 - t0, ratio: t2 - t1, draw: performance.now() - t2 };
     $('count-vertices').textContent = p.vertices;
     $('count-triangles').textContent = p.triangles;
@@ -255,7 +256,7 @@ async function redrawPattern() {
     $('count-ratio').textContent = ratio === null ? 'n/a (needs ctess serve)' : `${ratio.toFixed(3)}×`;
     window.ctessViewer = {
         view: 'pattern', mode, domain, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
-        ratioToD3d11Even: ratio, ms, sides: p.sides,
+        ratioToD3d11Even: ratio, ms, sides: p.sides, trail: state.trail,
         corners: (domain === 'quad' ? [[0, 0], [1, 0], [1, 1], [0, 1]] : [[0, 0], [1, 0], [0, 1]]).map(([u, v]) => [toX(u, v), toY(v)]),
         readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
     };
@@ -283,6 +284,7 @@ function syncUrl() {
     history.replaceState(null, '', `?${q}`);
 }
 function changed() {
+    if (!state.sweep) state.trail = null;
     showFactors();
     syncUrl();
     redraw();
@@ -301,7 +303,7 @@ $('factors').addEventListener('change', (e) => {
 function setDomain(domain) {
     state.domain = domain;
     state.factors = state.domain === 'quad' ? [...state.factors.slice(0, 3), state.factors[0]] : state.factors.slice(0, 3);
-    state.sweep = null;
+    state.sweep = state.trail = null;
     $('play').textContent = 'play';
     $('sweep-from').value = state.domain === 'quad' ? '1,1,1,1' : '1,1,1';
     $('sweep-to').value = state.domain === 'quad' ? '8,8,8,8' : '8,8,8';
@@ -330,7 +332,8 @@ for (const radio of document.querySelectorAll('input[name=view]'))
     });
 
 // Sweep: factors move from one triple to the other and back (4 s each way); every vertex position visited
-// stays drawn, so a point that moves leaves a path and a point that pops leaves a gap.
+// stays drawn (until the next change after a pause), so a point that moves leaves a path and a point that pops
+// leaves a gap.
 $('play').addEventListener('click', () => {
     if (state.sweep) {
         state.sweep = null;
@@ -339,7 +342,8 @@ $('play').addEventListener('click', () => {
     }
     const from = parseFactors($('sweep-from').value), to = parseFactors($('sweep-to').value);
     if (!from || !to) return setStatus(`Sweep: ${state.factors.length} numbers > 0 in each field`, true);
-    state.sweep = { from, to, start: performance.now(), trail: [] };
+    state.sweep = { from, to, start: performance.now() };
+    state.trail = [];
     $('play').textContent = 'pause';
     const step = async () => {
         if (!state.sweep) return;
