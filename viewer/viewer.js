@@ -1,11 +1,11 @@
-// ctess viewer: pattern view (one CP triangle from the generated WGSL on WebGPU, or a D3D11 pattern from
-// `ctess serve`'s /api/pattern) and mesh view (mesh_view.js). After each redraw, window.ctessViewer holds
-// {mode, factors, max, vertices, triangles, zeroArea, ratioToD3d11Even, readback} for automation
+// ctess viewer: pattern view (one CP triangle from the generated WGSL on WebGPU, or a D3D11 or uniform-density
+// pattern from `ctess serve`'s /api/pattern) and mesh view (mesh_view.js). After each redraw, window.ctessViewer
+// holds {mode, factors, max, vertices, triangles, zeroArea, ratioToD3d11Even, sides, corners, readback} for automation
 // (docs/viewer.md); ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
 import { openDevice, CpPipeline } from './ctess_gpu.js';
 import { MeshView } from './mesh_view.js';
 
-const MODES = ['cp', 'd3d11-integer', 'd3d11-pow2', 'd3d11-odd', 'd3d11-even'];
+const MODES = ['cp', 'd3d11-integer', 'd3d11-pow2', 'd3d11-odd', 'd3d11-even', 'uniform'];
 const $ = (id) => document.getElementById(id);
 const status = $('status');
 const setStatus = (text, error = false) => {
@@ -18,9 +18,10 @@ const state = {
     view: query.get('view') === 'mesh' ? 'mesh' : 'pattern',
     mode: MODES.includes(query.get('mode')) ? query.get('mode') : 'cp',
     max: query.get('max') === '256' ? 256 : 64,
-    domain: query.get('domain') === 'quad' ? 'quad' : 'tri',
+    domain: query.get('domain') === 'quad' && query.get('mode') !== 'uniform' ? 'quad' : 'tri', // uniform: tri only
     factors: null,
-    sweep: null, // {from, to, start, trail: [[x, y], ...]} while playing
+    sweep: null, // {from, to, start} while playing
+    trail: null, // [[u, v], ...]: the domain positions a sweep has drawn; kept when paused, dropped by the next change
 };
 
 state.factors = parseFactors(query.get('factors') ?? '', state.domain) ?? (state.domain === 'quad' ? [12, 5, 12, 30] : [10.3, 6, 3]);
@@ -41,7 +42,7 @@ function pipelineFor(max) {
     return pipelines.get(max);
 }
 
-// The CLI's JSON for a D3D11 mode (three factors: inside = the largest, as in `ctess pattern`).
+// The CLI's JSON for a D3D11 mode (three factors: inside = the largest, as in `ctess pattern`) or uniform.
 const apiCache = new Map();
 async function apiPattern(mode, factors) {
     const domain = factors.length === 4 ? 'quad' : 'tri';
@@ -49,10 +50,10 @@ async function apiPattern(mode, factors) {
     if (!apiCache.has(key)) {
         const url = `api/pattern?mode=${mode}&domain=${domain}&factors=${factors.map(String).join(',')}`;
         const p = fetch(url).catch(() => {
-            throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern), which did not answer');
+            throw new Error('D3D11 and uniform patterns come from `ctess serve` (/api/pattern), which did not answer');
         }).then(async (r) => {
             if (!(r.headers.get('content-type') ?? '').includes('json'))
-                throw new Error('D3D11 patterns come from `ctess serve` (/api/pattern); this server has none');
+                throw new Error('D3D11 and uniform patterns come from `ctess serve` (/api/pattern); this server has none');
             const json = await r.json();
             if (!r.ok) throw new Error(json.error ?? `HTTP ${r.status}`);
             return json;
@@ -64,15 +65,23 @@ async function apiPattern(mode, factors) {
     return apiCache.get(key);
 }
 
+// rt::uniform_factor (docs/algorithm.md §3.4), float arithmetic as in C++: nearest integer, halves up, in
+// [1, top]. Only the drawing frame uses it (the side lengths `ctess pattern --format svg` draws uniform with).
+const uniformFactor = (f, top) => (!(f >= 1.5) ? 1 : !(f < top - 0.5) ? top : Math.floor(Math.fround(f + 0.5)));
+
 async function computePattern(mode, factors, max) {
     if (mode === 'cp') {
         const p = await (await pipelineFor(max)).pattern(factors);
-        return { one: 1 << 24, uv: p.uv, indices: p.indices, vertices: p.vertexCount, triangles: p.triangleCount };
+        return { one: 1 << 24, uv: p.uv, indices: p.indices, vertices: p.vertexCount, triangles: p.triangleCount, sides: null };
     }
     const json = await apiPattern(mode, factors);
+    // Uniform factors go up to N² (split above the table's N, docs/algorithm.md §3.5); fixed_one is then 65534²,
+    // which still fits a Uint32Array.
+    const top = json.max_tess_factor ** 2;
     return {
         one: json.fixed_one, uv: Uint32Array.from(json.vertices.flat()), indices: Uint32Array.from(json.triangles.flat()),
         vertices: json.vertex_count, triangles: json.triangle_count,
+        sides: mode === 'uniform' ? factors.map((f) => uniformFactor(f, top)) : null,
     };
 }
 
@@ -81,16 +90,39 @@ const canvas = $('pattern-canvas');
 const ctx = canvas.getContext('2d');
 const MARGIN = 50;
 // Triangles equilateral with (0,0) bottom left, (1,0) bottom right, (0,1) top; quads square, (0,0) bottom left.
-const triSide = Math.min(canvas.width - 2 * MARGIN, (canvas.height - 2 * MARGIN) / (Math.sqrt(3) / 2));
-const quadSide = Math.min(canvas.width, canvas.height) - 2 * MARGIN;
-const toX = (u, v) => (state.domain === 'quad' ? MARGIN + quadSide * u : MARGIN + triSide * (u + 0.5 * v));
-const toY = (v) => canvas.height - MARGIN - (state.domain === 'quad' ? quadSide * v : triSide * v * Math.sqrt(3) / 2);
+// Uniform density, like `ctess pattern --format svg`, is drawn with its integer factors as side lengths
+// (e0 = v0v1 at the bottom), when they make a Euclidean triangle, so that equal intrinsic lengths look equal;
+// such a frame is centred in the canvas. v1 = (ux, 0), v2 = (vx, vy) and v0 at x0, all over the width.
+function frameFor(domain, sides) {
+    const roomX = canvas.width - 2 * MARGIN, roomY = canvas.height - 2 * MARGIN;
+    if (domain === 'quad') return { square: true, side: Math.min(roomX, roomY), left: MARGIN, bottom: canvas.height - MARGIN };
+    const f = { square: false, ux: 1, vx: 0.5, vy: Math.sqrt(3) / 2, x0: 0 };
+    const [a, b, c] = sides ?? [];
+    const shaped = sides !== null && a < b + c && b < a + c && c < a + b;
+    if (shaped) {
+        const x2 = (a * a + c * c - b * b) / (2 * a), y2 = Math.sqrt(Math.max(0, c * c - x2 * x2));
+        const lo = Math.min(0, x2), width = Math.max(a, x2) - lo;
+        Object.assign(f, { ux: a / width, vx: x2 / width, vy: y2 / width, x0: -lo / width });
+    }
+    f.side = Math.min(roomX, roomY / f.vy);
+    f.left = MARGIN + (roomX - f.side) / 2;
+    f.bottom = canvas.height - MARGIN - (shaped ? (roomY - f.side * f.vy) / 2 : 0);
+    return f;
+}
+let frame = frameFor(state.domain, null);
+const toX = (u, v) => frame.left + frame.side * (frame.square ? u : frame.x0 + u * frame.ux + v * frame.vx);
+const toY = (v) => frame.bottom - frame.side * (frame.square ? v : v * frame.vy);
 
-function doubledArea(uv, a, b, c) {
-    // exact: coordinates are below 2^25, so the products stay below 2^53
+function doubledArea(uv, a, b, c, one) {
     const bx = uv[2 * b] - uv[2 * a], by = uv[2 * b + 1] - uv[2 * a + 1];
     const cx = uv[2 * c] - uv[2 * a], cy = uv[2 * c + 1] - uv[2 * a + 1];
-    return bx * cy - by * cx;
+    // exact below 2^26 (products below 2^53); split uniform patches (one = 65534²) need BigInt
+    return one < 2 ** 26 ? bx * cy - by * cx : Number(BigInt(bx) * BigInt(cy) - BigInt(by) * BigInt(cx));
+}
+// Labels stay inside the canvas whatever the frame's shape.
+function label(text, x, y, align = 'left') {
+    const w = ctx.measureText(text).width, left = align === 'right' ? x - w : x;
+    ctx.fillText(text, Math.min(Math.max(left, 4), canvas.width - 4 - w), y);
 }
 
 function drawPattern(p, trail) {
@@ -106,7 +138,7 @@ function drawPattern(p, trail) {
         ctx.lineTo(x(b), y(b));
         ctx.lineTo(x(c), y(c));
         ctx.closePath();
-        if (doubledArea(p.uv, a, b, c) === 0) {
+        if (doubledArea(p.uv, a, b, c, p.one) === 0) {
             zero++;
             ctx.strokeStyle = '#d62728';
             ctx.lineWidth = 1.6;
@@ -119,7 +151,7 @@ function drawPattern(p, trail) {
         ctx.stroke();
     }
     ctx.fillStyle = '#9a7fd1';
-    for (const [tx, ty] of trail) ctx.fillRect(tx - 1, ty - 1, 2, 2);
+    for (const [u, v] of trail) ctx.fillRect(toX(u, v) - 1, toY(v) - 1, 2, 2);
     const dotR = p.vertices > 2000 ? 0.9 : p.vertices > 300 ? 1.6 : 2.4;
     ctx.fillStyle = '#e07b00';
     if (p.triangles < 20000)
@@ -137,8 +169,10 @@ function drawPattern(p, trail) {
         ctx.fill();
     }
     ctx.font = '15px DejaVu Sans, sans-serif';
-    const cp = state.mode === 'cp';
-    const f = (k) => String(Number(state.factors[k].toPrecision(7)));
+    const cp = !state.mode.startsWith('d3d11'); // CP's names for CP and uniform, as in the CLI's SVGs
+    // uniform: the integer the factor rounds to, where it differs
+    const f = (k) => String(Number(state.factors[k].toPrecision(7))) +
+                     (p.sides && p.sides[k] !== state.factors[k] ? ` → ${p.sides[k]}` : '');
     if (state.domain === 'quad') {
         const corner = cp ? ['q0', 'q1', 'q2', 'q3'] : ['(0,0)', 'u = 1', '(1,1)', 'v = 1'];
         ctx.fillText(corner[0], toX(0, 0) - 26, toY(0) + 18);
@@ -167,11 +201,9 @@ function drawPattern(p, trail) {
     // Edge labels as in the SVGs: CP e0 = v0v1 (bottom), e1 = v1v2, e2 = v2v0; D3D11 Veq0 bottom, Ueq0 left, Weq0 right.
     ctx.fillStyle = '#2a6f3a';
     ctx.font = 'bold 14px DejaVu Sans, sans-serif';
-    ctx.fillText(cp ? `e0 = ${f(0)}` : `Veq0 = ${f(1)}`, toX(0.5, 0) - 40, toY(0) + 34);
-    ctx.fillText(cp ? `e1 = ${f(1)}` : `Weq0 = ${f(2)}`, toX(0.5, 0.5) + 14, toY(0.5));
-    ctx.textAlign = 'right';
-    ctx.fillText(cp ? `e2 = ${f(2)}` : `Ueq0 = ${f(0)}`, toX(0, 0.5) - 14, toY(0.5));
-    ctx.textAlign = 'left';
+    label(cp ? `e0 = ${f(0)}` : `Veq0 = ${f(1)}`, toX(0.5, 0) - 40, toY(0) + 34);
+    label(cp ? `e1 = ${f(1)}` : `Weq0 = ${f(2)}`, toX(0.5, 0.5) + 14, toY(0.5));
+    label(cp ? `e2 = ${f(2)}` : `Ueq0 = ${f(0)}`, toX(0, 0.5) - 14, toY(0.5), 'right');
     return zero;
 }
 
@@ -209,13 +241,14 @@ async function redrawPattern() {
         const even = await apiPattern('d3d11-even', factors);
         ratio = p.triangles / even.triangle_count;
     } catch { /* no /api/pattern (page opened without ctess serve): no ratio */ }
+    // The trail keeps domain positions, drawn in the current frame (a uniform frame changes with the factors).
     if (state.sweep) {
-        for (let i = 0; i < p.vertices; i++)
-            state.sweep.trail.push([toX(p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one), toY(p.uv[2 * i + 1] / p.one)]);
-        if (state.sweep.trail.length > 400000) state.sweep.trail.splice(0, 200000);
+        for (let i = 0; i < p.vertices; i++) state.trail.push([p.uv[2 * i] / p.one, p.uv[2 * i + 1] / p.one]);
+        if (state.trail.length > 400000) state.trail.splice(0, 200000);
     }
+    frame = frameFor(domain, p.sides);
     const t2 = performance.now();
-    const zero = drawPattern(p, state.sweep ? state.sweep.trail : []);
+    const zero = drawPattern(p, state.trail ?? []);
     const ms = { compute: t1 - t0, ratio: t2 - t1, draw: performance.now() - t2 };
     $('count-vertices').textContent = p.vertices;
     $('count-triangles').textContent = p.triangles;
@@ -223,9 +256,12 @@ async function redrawPattern() {
     $('count-ratio').textContent = ratio === null ? 'n/a (needs ctess serve)' : `${ratio.toFixed(3)}×`;
     window.ctessViewer = {
         view: 'pattern', mode, domain, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
-        ratioToD3d11Even: ratio, ms, readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
+        ratioToD3d11Even: ratio, ms, sides: p.sides, trail: state.trail,
+        corners: (domain === 'quad' ? [[0, 0], [1, 0], [1, 1], [0, 1]] : [[0, 0], [1, 0], [0, 1]]).map(([u, v]) => [toX(u, v), toY(v)]),
+        readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
     };
-    setStatus(`${mode} · ${domain} · factors ${factorText(factors)} · max ${max}` +
+    setStatus(`${mode} · ${domain} · factors ${factorText(factors)}` +
+              (p.sides ? ` · integer factors ${p.sides.join(',')} (pops at each step)` : ` · max ${max}`) +
               (mode === 'cp' ? ' · computed by the generated WGSL on WebGPU' : ' · computed by ctess serve'));
 }
 
@@ -240,6 +276,7 @@ function showFactors() {
     }
     $('factors').value = factorText(state.factors);
     $('mode').value = state.mode;
+    $('domain-quad').disabled = state.mode === 'uniform'; // the uniform family tessellates triangles only
     $('max').value = String(state.max);
 }
 function syncUrl() {
@@ -247,6 +284,7 @@ function syncUrl() {
     history.replaceState(null, '', `?${q}`);
 }
 function changed() {
+    if (!state.sweep) state.trail = null;
     showFactors();
     syncUrl();
     redraw();
@@ -262,14 +300,21 @@ $('factors').addEventListener('change', (e) => {
     state.factors = f;
     changed();
 });
-$('mode').addEventListener('change', (e) => { state.mode = e.target.value; changed(); });
-$('domain').addEventListener('change', (e) => {
-    state.domain = e.target.value;
+function setDomain(domain) {
+    state.domain = domain;
     state.factors = state.domain === 'quad' ? [...state.factors.slice(0, 3), state.factors[0]] : state.factors.slice(0, 3);
-    state.sweep = null;
+    state.sweep = state.trail = null;
     $('play').textContent = 'play';
     $('sweep-from').value = state.domain === 'quad' ? '1,1,1,1' : '1,1,1';
     $('sweep-to').value = state.domain === 'quad' ? '8,8,8,8' : '8,8,8';
+}
+$('mode').addEventListener('change', (e) => {
+    state.mode = e.target.value;
+    if (state.mode === 'uniform' && state.domain === 'quad') setDomain('tri');
+    changed();
+});
+$('domain').addEventListener('change', (e) => {
+    setDomain(e.target.value);
     changed();
 });
 $('max').addEventListener('change', (e) => {
@@ -287,7 +332,8 @@ for (const radio of document.querySelectorAll('input[name=view]'))
     });
 
 // Sweep: factors move from one triple to the other and back (4 s each way); every vertex position visited
-// stays drawn, so a point that moves leaves a path and a point that pops leaves a gap.
+// stays drawn (until the next change after a pause), so a point that moves leaves a path and a point that pops
+// leaves a gap.
 $('play').addEventListener('click', () => {
     if (state.sweep) {
         state.sweep = null;
@@ -296,7 +342,8 @@ $('play').addEventListener('click', () => {
     }
     const from = parseFactors($('sweep-from').value), to = parseFactors($('sweep-to').value);
     if (!from || !to) return setStatus(`Sweep: ${state.factors.length} numbers > 0 in each field`, true);
-    state.sweep = { from, to, start: performance.now(), trail: [] };
+    state.sweep = { from, to, start: performance.now() };
+    state.trail = [];
     $('play').textContent = 'pause';
     const step = async () => {
         if (!state.sweep) return;

@@ -1,7 +1,8 @@
 // Loads viewer/ from `ctess serve` in headless chromium (WebGPU on SwiftShader, --enable-unsafe-webgpu) and
 // checks, against `ctess pattern --format json` (the CPU), bit for bit: the counts in window.ctessViewer and
-// the read-back vertices (u, v) and triangles, for CP (generated WGSL, max 64 and 256) and the D3D11 modes.
-// Also: the URL sets the state, a slider changes the counts, the canvases are not blank, the mesh view's
+// the read-back vertices (u, v) and triangles, for CP (generated WGSL, max 64 and 256), the D3D11 modes and
+// uniform density (D3D11 and uniform through /api/pattern). Also: the URL sets the state, a slider changes the
+// counts, a uniform sweep visits only the CLI's patterns, the canvases are not blank, the mesh view's
 // triangle count follows the DiceRate, bad /api/pattern input gets a 400, a busy port is an error, and without
 // WebGPU the page says so.
 //   node tests/viewer/test_viewer.mjs path/to/ctess        exit 0 pass, 1 fail, 77 skipped (no chromium)
@@ -82,7 +83,7 @@ async function viewerState(pred, arg) {
         await page.waitForFunction(pred, arg, { timeout: 120000 });
     } catch (e) {
         const shown = await page.evaluate(() => {
-            const { readback, ...rest } = window.ctessViewer ?? {};
+            const { readback, trail, ...rest } = window.ctessViewer ?? {};
             return `status "${document.getElementById('status').textContent}", state ${JSON.stringify(rest)}`;
         });
         throw new Error(`${e.message}\nwaiting for ${JSON.stringify(arg)}; the page shows ${shown}`);
@@ -112,6 +113,9 @@ const cases = [
     ['cp', 256, [[10.3, 6, 3], [256, 256, 256], [150.5, 3, 40.25], [1, 256, 17.25], [70, 70.5, 71]]],
     ['cp', 64, [[12, 5, 12, 30], [8, 8, 8, 8], [1, 1, 1, 1], [2.5, 40, 1.5, 6.25]]], // quads
     ['d3d11-even', 64, [[12, 5, 12, 30]]],
+    // uniform density: in order, out of order, rounded (11, 6, 3), non-Euclidean, clamped to 1, split above the
+    // table's N (16 or 11; fixed_one 65534²), split and clamped to N² (256 for N = 16)
+    ['uniform', 64, [[11, 9, 6], [3, 11, 7], [10.5, 6.49, 2.5], [11, 4, 2], [0.3, 1, 1], [40, 30, 20], [300, 2, 299]]],
 ];
 let compared = 0;
 await page.goto(`${base}?mode=cp&max=64&factors=10.3,6,3`);
@@ -129,14 +133,67 @@ for (const [mode, max, triples] of cases) {
                     `triangles, ${Date.now() - t0} ms (page: ${JSON.stringify(state.ms, (k, v) => (typeof v === "number" ? Math.round(v) : v))})`);
     }
 }
-check(compared >= 20, `only ${compared} patterns matched`);
+const listed = cases.reduce((n, c) => n + c[2].length, 0);
+check(compared === listed, `only ${compared} of ${listed} patterns matched`);
+
+let state;
+// ---- uniform density (docs/algorithm.md §3): integer factors, drawn with them as side lengths ----
+const uniformStart = Date.now();
+await page.selectOption('#mode', 'uniform');
+check(await page.$eval('#domain-quad', (o) => o.disabled), 'uniform: the quad domain must be disabled');
+const corners = (s) => s.corners.map((c, k) => Math.hypot(c[0] - s.corners[(k + 1) % 3][0], c[1] - s.corners[(k + 1) % 3][1]));
+const sameRatios = (lengths, sides) => lengths.every((l, k) => Math.abs(l / lengths[0] - sides[k] / sides[0]) < 1e-9);
+// halves round up (§3.4): 10.5, 6.49, 2.5 is drawn and tessellated as 11, 6, 3
+await typeFactors([10.5, 6.49, 2.5]);
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [10.5, 6.49, 2.5], max: 64 });
+const rounded = cli('uniform', [11, 6, 3]);
+check(String(state.sides) === '11,6,3' && state.triangles === rounded.triangle_count && state.vertices === rounded.vertex_count,
+      `uniform 10.5,6.49,2.5: sides ${state.sides}, ${state.vertices}/${state.triangles}; 11,6,3 has ${rounded.vertex_count}/${rounded.triangle_count}`);
+// e0 = v0v1, e1 = v1v2, e2 = v2v0 on the canvas in the ratio 11 : 9 : 6; a non-Euclidean 11, 4, 2 equilateral
+await typeFactors([11, 9, 6]);
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [11, 9, 6], max: 64 });
+check(sameRatios(corners(state), [11, 9, 6]), `uniform 11,9,6 drawn with sides ${corners(state)}`);
+const at11 = state;
+await typeFactors([11, 4, 2]);
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [11, 4, 2], max: 64 });
+check(sameRatios(corners(state), [1, 1, 1]), `uniform 11,4,2 (non-Euclidean) drawn with sides ${corners(state)}`);
+await typeFactors([40, 30, 20]);
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [40, 30, 20], max: 64 });
+check(state.readback.one === 65534 ** 2, `uniform 40,30,20 (split): fixed one ${state.readback.one}`);
+check(state.ratioToD3d11Even === state.triangles / cli('d3d11-even', [40, 30, 20]).triangle_count, `uniform ratio ${state.ratioToD3d11Even}`);
+// the e0 slider: 11 -> 11.3 rounds to the same pattern, 14 gives the CLI's 14, 9, 6
+await typeFactors([11, 9, 6]);
+await viewerState(factorsMatch, { mode: 'uniform', factors: [11, 9, 6], max: 64 });
+await page.locator('#f0').fill('11.3');
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [11.3, 9, 6], max: 64 });
+check(state.triangles === at11.triangles && String(state.readback.uv) === String(at11.readback.uv),
+      `uniform slider 11 -> 11.3: ${state.triangles} triangles, ${at11.triangles} at 11`);
+await page.locator('#f0').fill('14');
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [14, 9, 6], max: 64 });
+check(state.triangles !== at11.triangles, `uniform slider 11 -> 14: still ${state.triangles} triangles`);
+sameAsCli(state, 'uniform', [14, 9, 6], 64) && compared++;
+// a sweep 11,9,6 -> 12,9,6 pops: the positions it has drawn are exactly those of the CLI's two patterns
+await page.fill('#sweep-from', '11,9,6');
+await page.fill('#sweep-to', '12,9,6');
+await page.click('#play');
+state = await viewerState(() => window.ctessViewer?.trail && window.ctessViewer.factors[0] >= 11.5);
+await page.click('#play');
+const expected = new Set(), drawn = new Set(state.trail.map(([u, v]) => `${u},${v}`));
+for (const f of [[11, 9, 6], [12, 9, 6]]) {
+    const ref = cli('uniform', f);
+    for (const [u, v] of ref.vertices) expected.add(`${u / ref.fixed_one},${v / ref.fixed_one}`);
+}
+check(drawn.size === expected.size && [...drawn].every((p) => expected.has(p)),
+      `uniform sweep: ${drawn.size} positions drawn, ${expected.size} in the CLI's 11,9,6 and 12,9,6`);
+console.log(`uniform sweep 11,9,6 -> 12,9,6: ${state.trail.length} points drawn at ${drawn.size} positions; ` +
+            `uniform checks after the 7 sets: ${((Date.now() - uniformStart) / 1000).toFixed(1)} s`);
 
 // ---- the ratio to D3D11 fractional_even on the same edges ----
 await page.selectOption('#mode', 'cp');
 await page.selectOption('#max', '64');
 await page.selectOption('#domain', 'tri');
 await typeFactors([16, 8, 4]);
-let state = await viewerState(factorsMatch, { mode: 'cp', factors: [16, 8, 4], max: 64 });
+state = await viewerState(factorsMatch, { mode: 'cp', factors: [16, 8, 4], max: 64 });
 const even = cli('d3d11-even', [16, 8, 4], 64);
 check(state.ratioToD3d11Even === state.triangles / even.triangle_count,
       `ratio ${state.ratioToD3d11Even}, expected ${state.triangles}/${even.triangle_count}`);
@@ -193,10 +250,16 @@ check(stats.ink > 0.1 && stats.colours > 50, 'mesh canvas looks blank');
 await page.goto(`${base}?mode=d3d11-odd&factors=2.5,3.7,5.1`);
 state = await viewerState(factorsMatch, { mode: 'd3d11-odd', factors: [2.5, 3.7, 5.1], max: 64 });
 sameAsCli(state, 'd3d11-odd', [2.5, 3.7, 5.1], 64) && compared++;
+// and uniform (a quad in the URL falls back to the triangle: uniform tessellates triangles only)
+await page.goto(`${base}?mode=uniform&domain=quad&factors=11,9,6`);
+state = await viewerState(factorsMatch, { mode: 'uniform', factors: [11, 9, 6], max: 64 });
+check(state.domain === 'tri', `uniform from the URL: domain ${state.domain}`);
+sameAsCli(state, 'uniform', [11, 9, 6], 64) && compared++;
 await browser.close();
 
 // ---- bad input to /api/pattern is a 400 with the CLI's message ----
-for (const q of ['mode=bogus&factors=1,2,3', 'mode=d3d11-even&factors=nan,2,3', 'mode=cp&factors=1,2', 'mode=cp&factors=1,2,3&max=100']) {
+for (const q of ['mode=bogus&factors=1,2,3', 'mode=d3d11-even&factors=nan,2,3', 'mode=cp&factors=1,2', 'mode=cp&factors=1,2,3&max=100',
+                 'mode=uniform&domain=quad&factors=1,2,3,4', 'mode=uniform&factors=1,2,3&max=64', 'mode=uniform&factors=1,inf,3']) {
     const r = await fetch(`${base}api/pattern?${q}`);
     const body = await r.json();
     check(r.status === 400 && typeof body.error === 'string', `api ${q}: status ${r.status}`);

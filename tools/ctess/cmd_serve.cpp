@@ -1,6 +1,7 @@
 // ctess serve: the browser viewer (viewer/) with the build's generated shaders and table blobs, on 127.0.0.1
 // only, plus /api/pattern, which answers a `pattern` request with the same JSON as `ctess pattern --format
-// json` (the viewer's D3D11 modes and its ratio to D3D11 fractional_even come from there; docs/viewer.md).
+// json` (the viewer's D3D11 and uniform modes and its ratio to D3D11 fractional_even come from there;
+// docs/viewer.md).
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "mesh.hpp"
