@@ -202,7 +202,8 @@ class CpPatchSetup {
         const std::uint32_t odd = 0u - (m & 1u); // all ones: odd cell, whose first vertex is B_j
         return wind(first + ((b + s - 1 - first) & odd), b + s, a + j + 1);
     }
-    friend struct CpPatchEmitter; // the fast path of emit (runtime/src/cp_patch_emit.cpp)
+    friend struct CpPatchEmitter;        // the fast path of emit (runtime/src/cp_patch_emit.cpp)
+    friend struct PatchSetupBlockWriter; // the GPU pipeline's per-patch block (patch_setup_block.hpp)
     void emit_collapsed(DomainPoint* vertices, std::uint32_t* indices) const noexcept;
     // emit() without the run-time choice of an AVX2 build on x86-64 (for the tests); spans unchecked.
     void emit_baseline(DomainPoint* vertices, std::uint32_t* indices) const noexcept;
