@@ -1,6 +1,7 @@
-// Mesh view: a built-in icosahedron/icosphere run through the whole generated CP pipeline (projected edge
-// factors over a DiceRate, PN or Phong evaluation), drawn shaded with its wireframe, under an orbit camera.
-import { f32Bits } from './ctess_gpu.js';
+// Mesh view: a built-in icosahedron/icosphere or quad torus run through the whole generated CP pipeline
+// (projected edge factors over a DiceRate, PN or Phong evaluation), drawn shaded with its wireframe, under an
+// orbit camera.
+import { f32Bits, VERTEX_WORDS } from './ctess_gpu.js';
 
 const FOV_Y = Math.PI / 4;
 
@@ -32,6 +33,34 @@ function icosphere(levels) {
     });
     return { vertices, indices: new Uint32Array(f.flat()), patches: f.length };
 }
+
+// A torus (major radius 1, minor 0.4) of 12 x 8 quads, with the smooth surface's normals. The pipeline takes
+// triangles only, so each quad q0 q1 q2 q3 (counter-clockwise seen from outside) becomes (q0, q1, q3) and
+// (q2, q3, q1), the halves of cp::split_quad: the diagonal q1q3 is one shared edge and gets one factor.
+// Vertices are shared across the seams (the factors are per edge of the indexed mesh); uv is (i / 12, j / 8).
+const TORUS = { major: 1, minor: 0.4, around: 12, across: 8 };
+function torus({ major, minor, around, across }) {
+    const vertices = new Float32Array(around * across * 8);
+    const at = (i, j) => (i % around) * across + (j % across);
+    for (let i = 0; i < around; i++) {
+        for (let j = 0; j < across; j++) {
+            const u = (2 * Math.PI * i) / around, v = (2 * Math.PI * j) / across;
+            const n = [Math.cos(v) * Math.cos(u), Math.sin(v), Math.cos(v) * Math.sin(u)];
+            vertices.set([major * Math.cos(u) + minor * n[0], minor * n[1], major * Math.sin(u) + minor * n[2], ...n,
+                          i / around, j / across], at(i, j) * 8);
+        }
+    }
+    const tris = [];
+    for (let i = 0; i < around; i++) {
+        for (let j = 0; j < across; j++) {
+            const q = [at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)]; // counter-clockwise from outside
+            tris.push([q[0], q[1], q[3]], [q[2], q[3], q[1]]);
+        }
+    }
+    return { vertices, indices: new Uint32Array(tris.flat()), patches: tris.length };
+}
+const MESHES = { ico0: () => icosphere(0), ico1: () => icosphere(1), torus: () => torus(TORUS) };
+export const MESH_NAMES = Object.keys(MESHES);
 
 function mul(a, b) { // column-major 4x4
     const r = new Float32Array(16);
@@ -115,7 +144,8 @@ export class MeshView {
 
     async redraw(maxFactor) {
         const cp = await this.pipeline();
-        const mesh = icosphere(this.ui.kind.value === 'ico1' ? 1 : 0);
+        const kind = MESHES[this.ui.kind.value] ? this.ui.kind.value : 'ico0';
+        const mesh = MESHES[kind]();
         const { yaw, pitch, distance } = this.camera;
         const eye = [distance * Math.cos(pitch) * Math.sin(yaw), distance * Math.sin(pitch), distance * Math.cos(pitch) * Math.cos(yaw)];
         const dice = Number(this.ui.dice.value);
@@ -145,14 +175,17 @@ export class MeshView {
         pass.end();
         this.device.queue.submit([enc.finish()]);
         await this.device.queue.onSubmittedWorkDone();
+        // What the pipeline wrote, for the test's watertightness check (docs/shaders.md's vertex records).
+        const readback = { vertices: await cp.read(out.vertices, out.vertexCount * VERTEX_WORDS), indices: await cp.read(out.indices, out.triangleCount * 3) };
         out.vertices.destroy();
         out.indices.destroy();
         this.ui.diceValue.textContent = `${dice} px`;
         this.ui.vertices.textContent = out.vertexCount;
         this.ui.triangles.textContent = out.triangleCount;
         window.ctessViewer = {
-            view: 'mesh', mode: 'cp', max: maxFactor, surface: ['flat', 'pn', 'phong'][surface], diceRate: dice,
-            vertices: out.vertexCount, triangles: out.triangleCount,
+            view: 'mesh', mode: 'cp', max: maxFactor, mesh: kind, patches: mesh.patches,
+            surface: ['flat', 'pn', 'phong'][surface], diceRate: dice, vertices: out.vertexCount,
+            triangles: out.triangleCount, readback,
         };
         return window.ctessViewer;
     }

@@ -3,7 +3,7 @@
 // holds {mode, factors, max, vertices, triangles, zeroArea, ratioToD3d11Even, sides, corners, readback} for automation
 // (docs/viewer.md); ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
 import { openDevice, CpPipeline } from './ctess_gpu.js';
-import { MeshView } from './mesh_view.js';
+import { MeshView, MESH_NAMES } from './mesh_view.js';
 
 const MODES = ['cp', 'd3d11-integer', 'd3d11-pow2', 'd3d11-odd', 'd3d11-even', 'uniform'];
 const $ = (id) => document.getElementById(id);
@@ -281,6 +281,7 @@ function showFactors() {
 }
 function syncUrl() {
     const q = new URLSearchParams({ view: state.view, mode: state.mode, domain: state.domain, factors: factorText(state.factors), max: state.max });
+    if (state.view === 'mesh') q.set('mesh', $('mesh-kind').value);
     history.replaceState(null, '', `?${q}`);
 }
 function changed() {
@@ -363,6 +364,8 @@ const meshView = new MeshView($('mesh-canvas'), {
 }, () => pipelineFor(state.max), redraw);
 
 // ---- start ----
+if (MESH_NAMES.includes(query.get('mesh'))) $('mesh-kind').value = query.get('mesh');
+$('mesh-kind').addEventListener('change', syncUrl);
 if (state.domain === 'quad') {
     $('sweep-from').value = '1,1,1,1';
     $('sweep-to').value = '8,8,8,8';

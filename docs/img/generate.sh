@@ -53,7 +53,7 @@ LIST
 "$ctess" pattern --mode cp --domain quad --factors 12,5,12,30 --format svg --provoking --out cp_quad_12_5_12_30_provoking.svg
 if [ -x /usr/bin/chromium ] || [ -n "${CTESS_CHROMIUM:-}" ]; then
   node "$here/snapshot.mjs" viewer "$ctess" viewer_pattern.png '?mode=cp&factors=16,8,4'
-  node "$here/snapshot.mjs" viewer "$ctess" viewer_mesh.png '?view=mesh'
+  node "$here/snapshot.mjs" viewer "$ctess" viewer_mesh.png '?view=mesh&mesh=torus'
 else
   echo "chromium not found: viewer_pattern.png and viewer_mesh.png not regenerated"
 fi

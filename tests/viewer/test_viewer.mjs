@@ -88,7 +88,8 @@ async function viewerState(pred, arg) {
         });
         throw new Error(`${e.message}\nwaiting for ${JSON.stringify(arg)}; the page shows ${shown}`);
     }
-    return page.evaluate(() => window.ctessViewer);
+    // the mesh view's read-back stays in the page (weldCheck reads it there)
+    return page.evaluate(() => (window.ctessViewer.view === 'mesh' ? { ...window.ctessViewer, readback: null } : window.ctessViewer));
 }
 const factorsMatch = ({ mode, factors, max }) => {
     const v = window.ctessViewer;
@@ -246,6 +247,68 @@ stats = await pixelStats('#mesh-canvas');
 console.log(`mesh canvas: ${(100 * stats.ink).toFixed(1)}% ink, ${stats.colours} colours; ` +
             `${coarse.triangles} -> ${fine.triangles} triangles`);
 check(stats.ink > 0.1 && stats.colours > 50, 'mesh canvas looks blank');
+
+// ---- the mesh view's read-back is a closed, consistently oriented surface (no cracks) ----
+// Welds the output vertices by their position bits, drops CP's zero-area triangles (two corners at one point,
+// docs/algorithm.md §2.9) and counts directed edges: every edge of a closed, consistently oriented surface
+// without T-junctions or cracks is used exactly twice, once each way. Euler's V - E + F is then 2 for the
+// icosphere and 0 for the torus.
+async function weldCheck() {
+    return page.evaluate(() => {
+        const { vertices, indices } = window.ctessViewer.readback;
+        const id = new Map();
+        const point = (i) => {
+            const key = `${vertices[i * 10 + 2]},${vertices[i * 10 + 3]},${vertices[i * 10 + 4]}`;
+            if (!id.has(key)) id.set(key, id.size);
+            return id.get(key);
+        };
+        const directed = new Map();
+        let faces = 0;
+        for (let t = 0; t < indices.length; t += 3) {
+            const w = [point(indices[t]), point(indices[t + 1]), point(indices[t + 2])];
+            if (w[0] === w[1] || w[1] === w[2] || w[2] === w[0]) continue;
+            faces++;
+            for (let k = 0; k < 3; k++) {
+                const key = `${w[k]},${w[(k + 1) % 3]}`;
+                directed.set(key, (directed.get(key) ?? 0) + 1);
+            }
+        }
+        let unpaired = 0;
+        for (const [key, n] of directed) {
+            const [a, b] = key.split(',');
+            if (n !== 1 || directed.get(`${b},${a}`) !== 1) unpaired++;
+        }
+        return { points: id.size, edges: directed.size / 2, faces, unpaired, euler: id.size - directed.size / 2 + faces };
+    });
+}
+const meshStart = Date.now();
+const weldIco = await weldCheck();
+check(weldIco.unpaired === 0 && weldIco.euler === 2, `mesh icosahedron: ${JSON.stringify(weldIco)}`);
+// the quad mesh: a 12 x 8 torus, two triangles per quad, counts that follow the DiceRate
+await page.selectOption('#mesh-kind', 'torus');
+const torusFine = await viewerState(() => window.ctessViewer?.mesh === 'torus');
+const weldFine = await weldCheck();
+check(torusFine.patches === 192 && torusFine.diceRate === 6 && page.url().includes('mesh=torus'),
+      `torus: ${torusFine.patches} patches at DiceRate ${torusFine.diceRate}, URL ${page.url()}`);
+check(weldFine.unpaired === 0 && weldFine.euler === 0 && weldFine.points > 96, `torus at DiceRate 6: ${JSON.stringify(weldFine)}`);
+stats = await pixelStats('#mesh-canvas');
+check(stats.ink > 0.1 && stats.colours > 50, `torus canvas looks blank: ${JSON.stringify(stats)}`);
+await page.locator('#dice').fill('24');
+const torusCoarse = await viewerState(() => window.ctessViewer?.mesh === 'torus' && window.ctessViewer.diceRate === 24);
+const weldCoarse = await weldCheck();
+check(torusCoarse.triangles >= 192 && torusFine.triangles > 2 * torusCoarse.triangles,
+      `torus: ${torusCoarse.triangles} triangles at DiceRate 24, ${torusFine.triangles} at 6`);
+check(weldCoarse.unpaired === 0 && weldCoarse.euler === 0, `torus at DiceRate 24: ${JSON.stringify(weldCoarse)}`);
+// flat evaluation: PN's counts, and its shared edges are bit for bit too
+await page.selectOption('#surface', '0');
+const torusFlat = await viewerState(() => window.ctessViewer?.mesh === 'torus' && window.ctessViewer.surface === 'flat');
+const weldFlat = await weldCheck();
+check(torusFlat.triangles === torusCoarse.triangles && torusFlat.vertices === torusCoarse.vertices &&
+      weldFlat.unpaired === 0 && weldFlat.euler === 0, `torus flat: ${torusFlat.triangles} triangles, ${JSON.stringify(weldFlat)}`);
+console.log(`mesh welded: icosahedron ${weldIco.points} points, ${weldIco.edges} edges, ${weldIco.faces} faces; torus ` +
+            `${torusCoarse.triangles} -> ${torusFine.triangles} triangles (DiceRate 24 -> 6), ${weldFine.points} points, ` +
+            `${weldFine.edges} edges, ${weldFine.faces} faces at 6; canvas ${(100 * stats.ink).toFixed(1)}% ink, ` +
+            `${stats.colours} colours; ${((Date.now() - meshStart) / 1000).toFixed(1)} s`);
 // ---- the URL sets a D3D11 state too ----
 await page.goto(`${base}?mode=d3d11-odd&factors=2.5,3.7,5.1`);
 state = await viewerState(factorsMatch, { mode: 'd3d11-odd', factors: [2.5, 3.7, 5.1], max: 64 });
