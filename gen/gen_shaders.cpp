@@ -1,4 +1,5 @@
-// ctess_gen_shaders: writes, for one maximum factor, the CP table blob and the compute shaders that read it.
+// ctess_gen_shaders: writes, for one maximum factor, the CP table blob (with the configured uniform-density
+// tables, CTESS_UNIFORM_MAX_FACTOR, in its last sections) and the compute shaders that read it.
 //
 //   ctess_gen_shaders --max 64 --shaders <repo>/shaders --out <dir>
 //
@@ -20,6 +21,7 @@
 #include <ctess/cp_tables_layout.hpp>
 #include <ctess/runtime/cp_table_set.hpp>
 #include <ctess/runtime/mesh_pipeline.hpp>
+#include <ctess/runtime/uniform_table_set.hpp>
 
 #include "shader_template.hpp"
 #include "table_blob.hpp"
@@ -73,6 +75,10 @@ std::map<std::string, std::string, std::less<>> constants(const ctess::gen::Tabl
     put("GAP_WORD", l.gap_word);
     put("T1_LAST_FAN", l.t1_last_fan);
     put("SEARCH_WINDOW", ctess::cp::tables::search_window);
+    put("UNIFORM_MAX_FACTOR", l.uniform_max_factor);
+    put("UNIFORM_OFFSET", l.uniform_offset);
+    put("UNIFORM_INTERIOR", l.uniform_interior);
+    put("UNIFORM_TRIANGLE", l.uniform_triangle);
     return v;
 }
 
@@ -103,7 +109,7 @@ int main(int argc, char** argv) {
     if (shaders.empty() || out.empty()) return usage("--shaders and --out are required");
     const ctess::rt::CpTableSet& tables = max == "64" ? ctess::rt::cp_tables_64 : ctess::rt::cp_tables_256;
     try {
-        const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables);
+        const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables, ctess::rt::uniform_tables);
         const std::string prefix = out + "/ctess_cp_" + max;
         write_file(prefix + ".tables.bin",
                    std::string_view(reinterpret_cast<const char*>(blob.words.data()), blob.words.size() * 4));
@@ -126,7 +132,10 @@ int main(int argc, char** argv) {
              << ", \"token_record\": " << l.token_record << ", \"point\": " << l.point
              << ", \"column_record\": " << l.column_record << ", \"column_pool\": " << l.column_pool
              << ", \"gap_offset\": " << l.gap_offset << ", \"gap_word\": " << l.gap_word
-             << ", \"t1_last_fan\": " << l.t1_last_fan << "},\n  \"passes\": [";
+             << ", \"t1_last_fan\": " << l.t1_last_fan << ", \"uniform_offset\": " << l.uniform_offset
+             << ", \"uniform_interior\": " << l.uniform_interior
+             << ", \"uniform_triangle\": " << l.uniform_triangle
+             << "},\n  \"uniform_max_factor\": " << l.uniform_max_factor << ",\n  \"passes\": [";
         for (std::size_t k = 0; k < std::size(passes); ++k)
             json << (k ? ", " : "") << "{\"name\": \"" << passes[k].name << "\", \"entry\": \""
                  << passes[k].entry << "\", \"workgroup_size\": " << passes[k].local_size << "}";
