@@ -30,11 +30,11 @@ let deviceError = null;
 device.addEventListener('uncapturederror', (e) => { deviceError ??= e.error.message; });
 
 const scene = new Uint32Array(readFileSync(scenePath).buffer.slice(0));
-if (scene[0] !== 0x43535443 || scene[1] !== 3) fail('bad scene file');
-const params = scene.slice(2, 13);
-const vertexFloats = scene[13], indexCount = scene[14];
-const meshVertices = scene.slice(15, 15 + vertexFloats);
-const meshIndices = scene.slice(15 + vertexFloats, 15 + vertexFloats + indexCount);
+if (scene[0] !== 0x43535443 || scene[1] !== 2) fail('bad scene file');
+const params = scene.slice(2, 12);
+const vertexFloats = scene[12], indexCount = scene[13];
+const meshVertices = scene.slice(14, 14 + vertexFloats);
+const meshIndices = scene.slice(14 + vertexFloats, 14 + vertexFloats + indexCount);
 const n = params[0];
 const maxGroups = Number(process.env.CTESS_MAX_WORKGROUPS ?? 65535);
 const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
