@@ -6,6 +6,7 @@
 // Output (docs/shaders.md):
 //   ctess_cp_<max>.tables.bin     the CP table blob (u32 little-endian; gen/table_blob.hpp), for WGSL
 //   ctess_cp_<max>.uniform.tables.bin  the same plus the uniform-density sections, for GLSL
+//   ctess_cp_<max>.uniform.layout.json  the uniform blob's size and its uniform sections' offsets
 //   ctess_cp_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
 //   ctess_cp_<max>.wgsl           WGSL, all four entry points in one module
 //   ctess_cp_<max>.layout.json    the blob's section offsets and size, and the entry points
@@ -138,22 +139,27 @@ int main(int argc, char** argv) {
         const ctess::gen::TableBlobLayout& l = blob.layout;
         std::ostringstream json;
         json << "{\n  \"max_tess_factor\": " << l.max_factor << ",\n  \"tables_words\": " << cp_words.size()
-             << ",\n  \"tables_bytes\": " << cp_words.size() * 4 << ",\n  \"uniform_tables_words\": " << l.words
-             << ",\n  \"uniform_tables_bytes\": " << l.words * 4
+             << ",\n  \"tables_bytes\": " << cp_words.size() * 4
              << ",\n  \"sections\": {\"token_range\": " << l.token_range
              << ", \"token_record\": " << l.token_record << ", \"point\": " << l.point
              << ", \"column_record\": " << l.column_record << ", \"column_pool\": " << l.column_pool
              << ", \"gap_offset\": " << l.gap_offset << ", \"gap_word\": " << l.gap_word
-             << ", \"t1_last_fan\": " << l.t1_last_fan << ", \"uniform_offset\": " << l.uniform_offset
-             << ", \"uniform_interior\": " << l.uniform_interior
-             << ", \"uniform_triangle\": " << l.uniform_triangle
-             << "},\n  \"uniform_max_factor\": " << l.uniform_max_factor << ",\n  \"passes\": [";
+             << ", \"t1_last_fan\": " << l.t1_last_fan << "},\n  \"passes\": [";
         for (std::size_t k = 0; k < std::size(passes); ++k)
             json << (k ? ", " : "") << "{\"name\": \"" << passes[k].name << "\", \"entry\": \""
                  << passes[k].entry << "\", \"workgroup_size\": " << passes[k].local_size << "}";
         json << "],\n  \"patch_words\": " << sizeof(ctess::rt::PatchRecord) / 4
              << ",\n  \"setup_block_word\": 16,\n  \"vertex_words\": 10,\n  \"mesh_vertex_floats\": 8\n}\n";
         write_file(prefix + ".layout.json", json.str());
+        // The uniform blob: the same CP sections, then the uniform-density ones (docs/shaders.md).
+        std::ostringstream uniform_json;
+        uniform_json << "{\n  \"max_tess_factor\": " << l.max_factor
+                     << ",\n  \"uniform_max_factor\": " << l.uniform_max_factor
+                     << ",\n  \"tables_words\": " << l.words << ",\n  \"tables_bytes\": " << l.words * 4
+                     << ",\n  \"sections\": {\"uniform_offset\": " << l.uniform_offset
+                     << ", \"uniform_interior\": " << l.uniform_interior
+                     << ", \"uniform_triangle\": " << l.uniform_triangle << "}\n}\n";
+        write_file(prefix + ".uniform.layout.json", uniform_json.str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ctess_gen_shaders: %s\n", e.what());
         return 1;
