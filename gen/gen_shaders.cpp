@@ -1,9 +1,12 @@
-// ctess_gen_shaders: writes, for one maximum factor, the CP table blob and the compute shaders that read it.
+// ctess_gen_shaders: writes, for one maximum factor, the CP table blob (with the configured uniform-density
+// tables, CTESS_UNIFORM_MAX_FACTOR, in its last sections) and the compute shaders that read it.
 //
 //   ctess_gen_shaders --max 64 --shaders <repo>/shaders --out <dir>
 //
 // Output (docs/shaders.md):
-//   ctess_cp_<max>.tables.bin     the table blob (u32 little-endian; gen/table_blob.hpp)
+//   ctess_cp_<max>.tables.bin     the CP table blob (u32 little-endian; gen/table_blob.hpp), for WGSL
+//   ctess_cp_<max>.uniform.tables.bin  the same plus the uniform-density sections, for GLSL
+//   ctess_cp_<max>.uniform.layout.json  the uniform blob's size and its uniform sections' offsets
 //   ctess_cp_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
 //   ctess_cp_<max>.wgsl           WGSL, all four entry points in one module
 //   ctess_cp_<max>.layout.json    the blob's section offsets and size, and the entry points
@@ -20,6 +23,7 @@
 #include <ctess/cp_tables_layout.hpp>
 #include <ctess/runtime/cp_table_set.hpp>
 #include <ctess/runtime/mesh_pipeline.hpp>
+#include <ctess/runtime/uniform_table_set.hpp>
 
 #include "shader_template.hpp"
 #include "table_blob.hpp"
@@ -58,7 +62,10 @@ void write_file(const std::string& path, std::string_view data) {
     }
 }
 
-std::map<std::string, std::string, std::less<>> constants(const ctess::gen::TableBlobLayout& l) {
+// with_uniform: the uniform pattern's blob sections too (the GLSL template reads them; the WGSL one does not
+// yet, docs/shaders.md).
+std::map<std::string, std::string, std::less<>> constants(const ctess::gen::TableBlobLayout& l,
+                                                          bool with_uniform) {
     std::map<std::string, std::string, std::less<>> v;
     auto put = [&v](const char* name, std::uint32_t value) { v.emplace(name, std::to_string(value)); };
     put("MAX_FACTOR", l.max_factor);
@@ -73,6 +80,11 @@ std::map<std::string, std::string, std::less<>> constants(const ctess::gen::Tabl
     put("GAP_WORD", l.gap_word);
     put("T1_LAST_FAN", l.t1_last_fan);
     put("SEARCH_WINDOW", ctess::cp::tables::search_window);
+    if (!with_uniform) return v;
+    put("UNIFORM_MAX_FACTOR", l.uniform_max_factor);
+    put("UNIFORM_OFFSET", l.uniform_offset);
+    put("UNIFORM_INTERIOR", l.uniform_interior);
+    put("UNIFORM_TRIANGLE", l.uniform_triangle);
     return v;
 }
 
@@ -103,25 +115,31 @@ int main(int argc, char** argv) {
     if (shaders.empty() || out.empty()) return usage("--shaders and --out are required");
     const ctess::rt::CpTableSet& tables = max == "64" ? ctess::rt::cp_tables_64 : ctess::rt::cp_tables_256;
     try {
-        const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables);
+        const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables, ctess::rt::uniform_tables);
         const std::string prefix = out + "/ctess_cp_" + max;
-        write_file(prefix + ".tables.bin",
+        // Two blobs: .uniform.tables.bin, every section (the GLSL shaders), and .tables.bin, the CP sections and
+        // the padding only (the WGSL shaders, which are CP only; docs/shaders.md).
+        write_file(prefix + ".uniform.tables.bin",
                    std::string_view(reinterpret_cast<const char*>(blob.words.data()), blob.words.size() * 4));
+        std::vector<std::uint32_t> cp_words(blob.words.begin(), blob.words.begin() + blob.layout.uniform_offset);
+        cp_words.insert(cp_words.end(), ctess::gen::blob_padding, 0u);
+        write_file(prefix + ".tables.bin",
+                   std::string_view(reinterpret_cast<const char*>(cp_words.data()), cp_words.size() * 4));
 
         const std::string glsl = read_file(shaders + "/ctess_cp.comp.glsl");
         for (const Pass& p : passes) {
-            auto v = constants(blob.layout);
+            auto v = constants(blob.layout, true);
             v.emplace("LOCAL_SIZE", std::to_string(p.local_size));
             v.emplace("ENTRY", p.entry);
             write_file(prefix + "_" + p.name + ".comp", ctess::gen::fill_template(glsl, v));
         }
         const std::string wgsl = read_file(shaders + "/ctess_cp.wgsl");
-        write_file(prefix + ".wgsl", ctess::gen::fill_template(wgsl, constants(blob.layout)));
+        write_file(prefix + ".wgsl", ctess::gen::fill_template(wgsl, constants(blob.layout, false)));
 
         const ctess::gen::TableBlobLayout& l = blob.layout;
         std::ostringstream json;
-        json << "{\n  \"max_tess_factor\": " << l.max_factor << ",\n  \"tables_words\": " << l.words
-             << ",\n  \"tables_bytes\": " << l.words * 4
+        json << "{\n  \"max_tess_factor\": " << l.max_factor << ",\n  \"tables_words\": " << cp_words.size()
+             << ",\n  \"tables_bytes\": " << cp_words.size() * 4
              << ",\n  \"sections\": {\"token_range\": " << l.token_range
              << ", \"token_record\": " << l.token_record << ", \"point\": " << l.point
              << ", \"column_record\": " << l.column_record << ", \"column_pool\": " << l.column_pool
@@ -133,6 +151,15 @@ int main(int argc, char** argv) {
         json << "],\n  \"patch_words\": " << sizeof(ctess::rt::PatchRecord) / 4
              << ",\n  \"setup_block_word\": 16,\n  \"vertex_words\": 10,\n  \"mesh_vertex_floats\": 8\n}\n";
         write_file(prefix + ".layout.json", json.str());
+        // The uniform blob: the same CP sections, then the uniform-density ones (docs/shaders.md).
+        std::ostringstream uniform_json;
+        uniform_json << "{\n  \"max_tess_factor\": " << l.max_factor
+                     << ",\n  \"uniform_max_factor\": " << l.uniform_max_factor
+                     << ",\n  \"tables_words\": " << l.words << ",\n  \"tables_bytes\": " << l.words * 4
+                     << ",\n  \"sections\": {\"uniform_offset\": " << l.uniform_offset
+                     << ", \"uniform_interior\": " << l.uniform_interior
+                     << ", \"uniform_triangle\": " << l.uniform_triangle << "}\n}\n";
+        write_file(prefix + ".uniform.layout.json", uniform_json.str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ctess_gen_shaders: %s\n", e.what());
         return 1;

@@ -9,6 +9,11 @@
 //   gap_offset    u16 pairs:     pair (s0, s1) at (s1 - 1) * shapes + s0 - 1, relative to gap_word
 //   gap_word      u32:           zipper words
 //   t1_last_fan   shapes words
+//   uniform_offset   patterns + 1 words: first interior word | first triangle << 16 of each uniform-density
+//                    pattern (uniform::pattern_index order), then the sentinel (docs/algorithm.md §3.3)
+//   uniform_interior interior vertex words: u | v << 16 (units of 65534)
+//   uniform_triangle bytes, 4 per word (low byte first): i0, i1, i2 of each triangle (canonical numbering,
+//                    counter-clockwise), triangle p's at byte 3p
 //   padding       blob_padding zero words, so that the lookups' reads past an array stay in the buffer
 // docs/shaders.md draws the same layout.
 #pragma once
@@ -21,6 +26,8 @@
 #include <ctess/cp_tables_layout.hpp>
 #include <ctess/cp_tables_tokens.hpp>
 #include <ctess/runtime/cp_table_set.hpp>
+#include <ctess/runtime/uniform_table_set.hpp>
+#include <ctess/uniform_pattern.hpp>
 
 namespace ctess::gen {
 
@@ -28,8 +35,9 @@ inline constexpr unsigned blob_padding = 16;
 
 struct TableBlobLayout {
     std::uint32_t token_range = 0, token_record = 0, point = 0, column_record = 0, column_pool = 0,
-                  gap_offset = 0, gap_word = 0, t1_last_fan = 0, words = 0;
-    std::uint32_t tokens = 0, shapes = 0, max_factor = 0;
+                  gap_offset = 0, gap_word = 0, t1_last_fan = 0, uniform_offset = 0, uniform_interior = 0,
+                  uniform_triangle = 0, words = 0;
+    std::uint32_t tokens = 0, shapes = 0, max_factor = 0, uniform_max_factor = 0;
 };
 
 struct TableBlob {
@@ -52,7 +60,7 @@ inline std::uint32_t float_bits(float f) {
 }
 } // namespace detail
 
-inline TableBlob build_table_blob(const rt::CpTableSet& t) {
+inline TableBlob build_table_blob(const rt::CpTableSet& t, const rt::UniformTableSet& u) {
     namespace tables = cp::tables;
     TableBlob blob;
     TableBlobLayout& l = blob.layout;
@@ -115,6 +123,22 @@ inline TableBlob build_table_blob(const rt::CpTableSet& t) {
     w.insert(w.end(), t.gap_word, t.gap_word + gap_words);
     l.t1_last_fan = static_cast<std::uint32_t>(w.size());
     for (unsigned s = 0; s < shapes; ++s) w.push_back(t.t1_last_fan[s]);
+
+    l.uniform_max_factor = u.max_factor;
+    const unsigned patterns = uniform::pattern_count(u.max_factor);
+    l.uniform_offset = static_cast<std::uint32_t>(w.size());
+    for (unsigned p = 0; p <= patterns; ++p)
+        w.push_back(std::uint32_t{u.offsets[p].interior} | std::uint32_t{u.offsets[p].triangle} << 16);
+    l.uniform_interior = static_cast<std::uint32_t>(w.size());
+    w.insert(w.end(), u.interior, u.interior + u.offsets[patterns].interior);
+    l.uniform_triangle = static_cast<std::uint32_t>(w.size());
+    const std::size_t index_bytes = 3 * std::size_t{u.offsets[patterns].triangle};
+    for (std::size_t b = 0; b < index_bytes; b += 4) {
+        std::uint32_t word = 0;
+        for (std::size_t k = 0; k < 4 && b + k < index_bytes; ++k)
+            word |= std::uint32_t{u.indices[b + k]} << (8 * k);
+        w.push_back(word);
+    }
     w.insert(w.end(), blob_padding, 0u);
     l.words = static_cast<std::uint32_t>(w.size());
     return blob;

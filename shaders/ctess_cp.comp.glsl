@@ -16,6 +16,10 @@ const uint GAP_OFFSET = {{GAP_OFFSET}}u;
 const uint GAP_WORD = {{GAP_WORD}}u;
 const uint T1_LAST_FAN = {{T1_LAST_FAN}}u;
 const uint SEARCH_WINDOW = {{SEARCH_WINDOW}}u;
+const uint UNIFORM_MAX_FACTOR = {{UNIFORM_MAX_FACTOR}}u;
+const uint UNIFORM_OFFSET = {{UNIFORM_OFFSET}}u;
+const uint UNIFORM_INTERIOR = {{UNIFORM_INTERIOR}}u;
+const uint UNIFORM_TRIANGLE = {{UNIFORM_TRIANGLE}}u;
 const uint FIXED_ONE = 16777216u; // 2^24
 const uint LERP_ONE = 65536u;
 const uint PATCH_WORDS = 48u;
@@ -26,7 +30,7 @@ const uint MESH_VERTEX_FLOATS = 8u;
 layout(local_size_x = {{LOCAL_SIZE}}) in;
 
 // params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
-// patch range [first, end) that the emit passes cover (hosts may emit in batches)
+// patch range [first, end) that the emit passes cover (hosts may emit in batches), and the pattern (0 CP, 1 uniform)
 layout(std430, set = 0, binding = 0) readonly buffer Params { uint params[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Tables { uint tables[]; };
 layout(std430, set = 0, binding = 2) readonly buffer MeshVertices { float mesh_vertices[]; };
@@ -36,6 +40,7 @@ layout(std430, set = 0, binding = 5) writeonly buffer OutVertices { uint out_ver
 layout(std430, set = 0, binding = 6) writeonly buffer OutIndices { uint out_indices[]; };
 
 uint patch_count() { return params[0]; }
+bool uniform_pattern() { return params[10] == 1u; }
 
 // ---- 64-bit helpers (GLSL 4.50 core has no 64-bit integers): x = (lo, hi) ----
 uvec2 mul_wide(uint a, uint b) {
@@ -578,6 +583,63 @@ SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha)
     return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
 }
 
+// ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
+const uint UNIFORM_ONE = 65534u;
+// Rounded to the nearest integer (halves up), clamped to [1, UNIFORM_MAX_FACTOR]; NaN gives 1.
+uint uniform_factor(float f) {
+    if ((floatBitsToUint(f) & 0x7FFFFFFFu) > 0x7F800000u || !(f >= 1.5)) return 1u;
+    if (!(f < float(UNIFORM_MAX_FACTOR) - 0.5)) return UNIFORM_MAX_FACTOR;
+    return uint(f + 0.5);
+}
+uint uniform_edge_parameter(uint i, uint f) {
+    uint small_ = min(i, f - i);
+    uint q = (2u * small_ * UNIFORM_ONE + f) / (2u * f);
+    return i <= f - i ? q : UNIFORM_ONE - q;
+}
+uint uniform_pattern_index(uint f0, uint f1, uint f2) { return (f0 - 1u) * f0 * (f0 + 1u) / 6u + (f1 - 1u) * f1 / 2u + (f2 - 1u); }
+// A 65534-unit weight in units of 2^-24: nearest, never a tie, so mirror-exact.
+uint uniform_to_fixed(uint w) { return 256u * w + (512u * w + 32767u) / 65534u; }
+// The uniform setup words from the integer factors of base edges E0, E1, E2 (UniformPatch's constructor).
+// Returns the counts; words: pattern index, f0 | f1 << 8 | f2 << 16, corner sources | flip << 12.
+uvec2 uniform_setup(uint f[3], out uvec3 words) {
+    uint order[3] = uint[3](0u, 1u, 2u);
+    uint tmp;
+    if (f[order[1]] > f[order[0]]) { tmp = order[0]; order[0] = order[1]; order[1] = tmp; }
+    if (f[order[2]] > f[order[1]]) { tmp = order[1]; order[1] = order[2]; order[2] = tmp; }
+    if (f[order[1]] > f[order[0]]) { tmp = order[0]; order[0] = order[1]; order[1] = tmp; }
+    uint s0 = f[order[0]], s1 = f[order[1]], s2 = f[order[2]];
+    uint opposite[3] = uint[3](2u, 0u, 1u);
+    uint target_[3] = uint[3](opposite[order[1]], opposite[order[2]], opposite[order[0]]);
+    uint source[3];
+    for (uint c = 0u; c < 3u; ++c) source[target_[c]] = c;
+    bool flip = (target_[1] + 3u - target_[0]) % 3u != 1u;
+    uint index = uniform_pattern_index(s0, s1, s2);
+    uint first = tables[UNIFORM_OFFSET + index], next = tables[UNIFORM_OFFSET + index + 1u];
+    words = uvec3(index, s0 | (s1 << 8) | (s2 << 16), source[0] | (source[1] << 4) | (source[2] << 8) | (flip ? 4096u : 0u));
+    return uvec2(s0 + s1 + s2 + (next & 0xFFFFu) - (first & 0xFFFFu), (next >> 16) - (first >> 16));
+}
+// Vertex i as base weights (w1, w2), units of 2^-24.
+uvec2 uniform_vertex(uint rec, uint i) {
+    uint index = patches[rec + SETUP], sorted = patches[rec + SETUP + 1u], corners = patches[rec + SETUP + 2u];
+    uint f0 = sorted & 255u, f1 = (sorted >> 8) & 255u, f2 = sorted >> 16;
+    uvec2 c;
+    if (i < f0) c = uvec2(uniform_edge_parameter(i, f0), 0u);
+    else if (i < f0 + f1) { uint v = uniform_edge_parameter(i - f0, f1); c = uvec2(UNIFORM_ONE - v, v); }
+    else if (i < f0 + f1 + f2) c = uvec2(0u, uniform_edge_parameter(f2 - (i - f0 - f1), f2));
+    else {
+        uint word = tables[UNIFORM_INTERIOR + (tables[UNIFORM_OFFSET + index] & 0xFFFFu) + i - (f0 + f1 + f2)];
+        c = uvec2(word & 0xFFFFu, word >> 16);
+    }
+    uint weight[3] = uint[3](UNIFORM_ONE - c.x - c.y, c.x, c.y);
+    return uvec2(uniform_to_fixed(weight[(corners >> 4) & 3u]), uniform_to_fixed(weight[(corners >> 8) & 3u]));
+}
+uint uniform_index_byte(uint b) { return (tables[UNIFORM_TRIANGLE + (b >> 2)] >> ((b & 3u) * 8u)) & 255u; }
+uvec3 uniform_triangle(uint rec, uint p) {
+    uint b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP]] >> 16) + p);
+    uvec3 t = uvec3(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
+    return (patches[rec + SETUP + 2u] & 4096u) != 0u ? t.xzy : t;
+}
+
 // ---- patch records (PatchRecord) ----
 uint smallest_edge_rotation(float l[3]) {
     uint smallest = 0u;
@@ -671,6 +733,22 @@ void setup_one_patch(uint t) {
         precise vec3 d = b - a;
         length2[k] = dot3(d, d);
     }
+    if (uniform_pattern()) {
+        uint f[3];
+        for (uint k = 0u; k < 3u; ++k) {
+            f[k] = uniform_factor(factor[k]);
+            patches[rec + 1u + k] = f[k];
+            patches[rec + 11u + k] = floatBitsToUint(factor[k]);
+        }
+        uvec3 words;
+        uvec2 counts = uniform_setup(f, words);
+        patches[rec + 7u] = counts.x;
+        patches[rec + 8u] = counts.y;
+        patches[rec + SETUP] = words.x;
+        patches[rec + SETUP + 1u] = words.y;
+        patches[rec + SETUP + 2u] = words.z;
+        return;
+    }
     uint rot = smallest_edge_rotation(length2);
     uvec2 s[3];
     for (uint k = 0u; k < 3u; ++k) s[k] = line_state(factor[(k + rot) % 3u]);
@@ -746,13 +824,14 @@ void ctess_emit_vertices() {
         uint count = patches[rec + 7u];
         uvec3 w;
         if (count == 0u || !base_triangle(t, w)) continue;
-        Patch p = record_patch(rec);
+        bool uniform_ = uniform_pattern();
+        Patch p = uniform_ ? patch_zero() : record_patch(rec);
         uint rot = patches[rec];
         uint first = patches[rec + 9u];
         Corner c[3] = Corner[3](mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec2 d = patch_vertex(p, i);
-            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3
+            uvec2 d = uniform_ ? uniform_vertex(rec, i) : patch_vertex(p, i);
+            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
             uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y);
             uint bw[3];
             for (uint k = 0u; k < 3u; ++k) bw[(k + rot) % 3u] = pw[k];
@@ -779,11 +858,12 @@ void ctess_emit_triangles() {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + 8u];
         if (count == 0u) continue;
-        Patch p = record_patch(rec);
+        bool uniform_ = uniform_pattern();
+        Patch p = uniform_ ? patch_zero() : record_patch(rec);
         uint vfirst = patches[rec + 9u];
         uint tfirst = patches[rec + 10u];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec3 tri = patch_triangle(p, i) + uvec3(vfirst);
+            uvec3 tri = (uniform_ ? uniform_triangle(rec, i) : patch_triangle(p, i)) + uvec3(vfirst);
             uint o = 3u * (tfirst + i);
             out_indices[o] = tri.x;
             out_indices[o + 1u] = tri.y;

@@ -3,7 +3,9 @@
 // the shaders with this pipeline; here it is checked on its own.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -195,7 +197,8 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
         nan_scene.vertices[k] = std::numeric_limits<float>::quiet_NaN();
     const PipelineOutput nan_out = run_cpu(rt::cp_tables_64, nan_scene);
     for (std::uint32_t p = 0; p < nan_scene.patch_count(); ++p) {
-        CHECK(nan_out.patches[std::size_t{p} * patch_words + 7] == 3); // T0 on every edge: the base triangle itself
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 7] ==
+              3); // T0 on every edge: the base triangle itself
         CHECK(nan_out.patches[std::size_t{p} * patch_words + 8] == 1);
     }
 }
@@ -216,7 +219,8 @@ TEST_CASE("setup block: counts equal CpPatch's for every line-state triple; skip
                         const rt::CpPatch patch(tables, s0, s1, s2);
                         const rt::PatchSetupBlock block = rt::patch_setup_block(tables, s0, s1, s2);
                         ++checked;
-                        if (block.vertices != patch.vertex_count() || block.triangles != patch.triangle_count())
+                        if (block.vertices != patch.vertex_count() ||
+                            block.triangles != patch.triangle_count())
                             ++mismatches;
                         const std::uint32_t flags = block.word[rt::setup_word::flags];
                         const std::uint32_t tri_skips = (flags >> 8) & 15u, slot_skips = (flags >> 12) & 15u;
@@ -228,5 +232,163 @@ TEST_CASE("setup block: counts equal CpPatch's for every line-state triple; skip
         CHECK(checked == std::size_t{tokens} * tokens * tokens * 5);
         CHECK(mismatches == 0);
         CHECK(overflows == 0);
+    }
+}
+
+// ---- the uniform pattern (PipelineOptions::pattern = Pattern::uniform) ----
+
+namespace {
+// w * 2^24 / 65534 rounded to nearest, in 64 bits (never a tie: 2^24 w is even, 32767 odd).
+std::uint32_t exact_fixed(std::uint32_t w) {
+    return static_cast<std::uint32_t>((std::uint64_t{w} * 2 * (1u << 24) + 65534) / (2 * 65534));
+}
+// The factor rule of uniform_patch.hpp, written out: nearest integer (halves up), NaN and < 1.5 give 1.
+std::uint32_t expected_factor(float f, std::uint32_t n) {
+    if (std::isnan(f) || f < 1.5f) return 1;
+    const double r = std::floor(static_cast<double>(f) + 0.5);
+    return r >= n ? n : static_cast<std::uint32_t>(r);
+}
+Scene uniform_scene(Scene s) {
+    s.options.pattern = rt::Pattern::uniform;
+    return s;
+}
+} // namespace
+
+TEST_CASE("uniform weights: every 16-bit weight converts to the nearest 2^-24 weight, mirror-exactly") {
+    std::size_t wrong = 0, asymmetric = 0;
+    for (std::uint32_t w = 0; w <= uniform::fixed_one; ++w) {
+        const std::uint32_t a = rt::uniform_weight_to_fixed(w);
+        wrong += a != exact_fixed(w);
+        asymmetric += rt::uniform_weight_to_fixed(uniform::fixed_one - w) != cp::fixed_one - a;
+    }
+    CHECK(wrong == 0);
+    CHECK(asymmetric == 0);
+    CHECK(rt::uniform_weight_to_fixed(0) == 0);
+    CHECK(rt::uniform_weight_to_fixed(uniform::fixed_one) == cp::fixed_one);
+    CHECK(rt::uniform_weight_to_fixed(0xFFFFu) == cp::fixed_one); // past 1.0: clamped
+    // Every edge point i/f of every factor: the point and its mirror f - i convert to complementary weights,
+    // so both patches of an edge see the same parameter from the lower mesh vertex.
+    std::size_t points = 0, mirror_mismatches = 0;
+    for (std::uint32_t f = 1; f <= 64; ++f)
+        for (std::uint32_t i = 0; i <= f; ++i, ++points)
+            if (rt::uniform_weight_to_fixed(uniform::edge_parameter(i, f)) +
+                    rt::uniform_weight_to_fixed(uniform::edge_parameter(f - i, f)) !=
+                cp::fixed_one)
+                ++mirror_mismatches;
+    CHECK(points == 2144);
+    CHECK(mirror_mismatches == 0);
+}
+
+TEST_CASE("mesh pipeline, uniform: records and outputs equal UniformPatch's pattern on the base triangle") {
+    const unsigned n = rt::uniform_tables.max_factor;
+    const Scene scene = uniform_scene(factor_sweep_grid(n, 8, rt::Surface::flat));
+    const PipelineOutput out = run_cpu(rt::cp_tables_64, scene);
+    std::size_t clamped_low = 0, clamped_high = 0;
+    for (std::uint32_t p = 0; p < scene.patch_count(); ++p) {
+        rt::PatchRecord rec;
+        std::memcpy(static_cast<void*>(&rec), &out.patches[std::size_t{p} * patch_words], sizeof rec);
+        REQUIRE(rec.rotation == 0);
+        std::array<std::uint32_t, 3> f{};
+        for (unsigned k = 0; k < 3; ++k) {
+            f[k] = expected_factor(rec.factor[k], n);
+            REQUIRE(rec.token[k] == f[k]);
+            REQUIRE(rec.t16[k] == 0);
+            clamped_low += rec.factor[k] < 1.0f;
+            clamped_high += rec.factor[k] > static_cast<float>(n);
+        }
+        const rt::UniformPatch patch(rt::uniform_tables, f, rt::uniform_pipeline_options);
+        REQUIRE(rec.vertex_count == patch.counts().vertices);
+        REQUIRE(rec.triangle_count == patch.counts().triangles);
+        const std::array<std::uint32_t, 3> s = patch.sorted_factors();
+        CHECK(rec.setup[rt::uniform_setup_word::pattern] == uniform::pattern_index(s[0], s[1], s[2]));
+        for (std::uint32_t i = 0; i < rec.vertex_count; ++i) {
+            const DomainPoint q = patch.vertex(i);
+            const std::uint32_t* v = &out.vertices[(std::size_t{rec.first_vertex} + i) * vertex_words];
+            REQUIRE(v[0] == exact_fixed(q.u));
+            REQUIRE(v[1] == exact_fixed(q.v));
+            // On base edge Ek the opposite weight is exactly 0 in both units.
+            REQUIRE(((1u << 24) - v[0] - v[1] == 0) == (uniform::fixed_one - q.u - q.v == 0));
+        }
+        for (std::uint32_t t = 0; t < rec.triangle_count; ++t) {
+            const rt::UniformTriangle tri = patch.triangle(t);
+            for (unsigned k = 0; k < 3; ++k)
+                REQUIRE(out.indices[3 * (std::size_t{rec.first_triangle} + t) + k] ==
+                        rec.first_vertex + tri[k]);
+        }
+        // Edge Ek has f_k segments: count the vertices with a zero weight opposite it (corners included).
+        for (unsigned k = 0; k < 3; ++k) {
+            const unsigned opposite = (k + 2) % 3; // E0 = w0w1 is opposite w2, E1 opposite w0, E2 opposite w1
+            std::uint32_t on_edge = 0;
+            for (std::uint32_t i = 0; i < rec.vertex_count; ++i) {
+                const std::uint32_t* v = &out.vertices[(std::size_t{rec.first_vertex} + i) * vertex_words];
+                const std::uint32_t bw[3] = {(1u << 24) - v[0] - v[1], v[0], v[1]};
+                on_edge += bw[opposite] == 0;
+            }
+            REQUIRE(on_edge == f[k] + 1);
+        }
+    }
+    CHECK(clamped_low > 0); // the sweep reaches both clamps
+    CHECK(clamped_high > 0);
+}
+
+TEST_CASE("mesh pipeline, uniform: a closed icosphere is watertight on the CPU with flat, PN and Phong") {
+    for (rt::Surface s : {rt::Surface::flat, rt::Surface::pn_triangles, rt::Surface::phong}) {
+        const Scene scene = uniform_scene(icosphere(2, s, 4.0f));
+        const CrackReport r = crack_check(scene, run_cpu(rt::cp_tables_64, scene));
+        CHECK(r.shared_edges == scene.patch_count() * 3 / 2);
+        CHECK(r.edge_points > 3 * r.shared_edges);
+        CHECK(r.unmatched_points == 0);
+        CHECK(r.position_mismatches == 0);
+    }
+}
+
+TEST_CASE("mesh pipeline, uniform bad input: missing tables, bad options, tampered records, NaN factors") {
+    Scene scene = uniform_scene(factor_sweep_grid(16, 3, rt::Surface::flat));
+    const rt::MeshView mesh = scene.view();
+    std::vector<rt::PatchRecord> rec(mesh.triangle_count);
+    rt::PipelineTotals totals{12345u, 678u};
+    // The CP-only overloads have no uniform tables.
+    CHECK(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, rec, totals) ==
+          rt::PipelineStatus::no_uniform_tables);
+    CHECK(totals.vertices == 12345u);
+    rt::PipelineOptions bad = scene.options;
+    bad.pattern = static_cast<rt::Pattern>(7);
+    CHECK(rt::setup_patches(rt::cp_tables_64, rt::uniform_tables, mesh, bad, rec, totals) ==
+          rt::PipelineStatus::bad_option);
+    REQUIRE(rt::setup_patches(rt::cp_tables_64, rt::uniform_tables, mesh, scene.options, rec, totals) ==
+            rt::PipelineStatus::ok);
+    std::vector<rt::TessVertex> v(totals.vertices);
+    std::vector<std::uint32_t> idx(3 * std::size_t{totals.triangles}, 7u);
+    CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, v, idx) ==
+          rt::PipelineStatus::no_uniform_tables);
+    CHECK(rt::emit_mesh(rt::cp_tables_64, rt::uniform_tables, mesh, bad, rec, v, idx) ==
+          rt::PipelineStatus::bad_option);
+    // Records that setup_patches could not have written: a rotation, a factor of 0 or past N, a t16.
+    for (int tamper = 0; tamper < 4; ++tamper) {
+        std::vector<rt::PatchRecord> t = rec;
+        if (tamper == 0) t[1].rotation = 1;
+        if (tamper == 1) t[1].token[0] = 0;
+        if (tamper == 2) t[1].token[2] = rt::uniform_tables.max_factor + 1;
+        if (tamper == 3) t[1].t16[1] = 5;
+        CHECK(rt::emit_mesh(rt::cp_tables_64, rt::uniform_tables, mesh, scene.options, t, v, idx) ==
+              rt::PipelineStatus::bad_patch_record);
+    }
+    CHECK(idx[0] == 7u); // nothing written
+    // CP records are not uniform records: the counts differ.
+    std::vector<rt::PatchRecord> cp_rec(mesh.triangle_count);
+    Scene cp_scene = scene;
+    cp_scene.options.pattern = rt::Pattern::cp;
+    REQUIRE(rt::setup_patches(rt::cp_tables_64, mesh, cp_scene.options, cp_rec, totals) ==
+            rt::PipelineStatus::ok);
+    CHECK(rt::emit_mesh(rt::cp_tables_64, rt::uniform_tables, mesh, scene.options, cp_rec, v, idx) ==
+          rt::PipelineStatus::bad_patch_record);
+    // NaN positions: NaN factors give factor 1 on every edge, the base triangle itself.
+    Scene nan_scene = uniform_scene(factor_sweep_grid(16, 2, rt::Surface::pn_triangles));
+    for (std::size_t k = 0; k < nan_scene.vertices.size(); k += 8)
+        nan_scene.vertices[k] = std::numeric_limits<float>::quiet_NaN();
+    const PipelineOutput nan_out = run_cpu(rt::cp_tables_64, nan_scene);
+    for (std::uint32_t p = 0; p < nan_scene.patch_count(); ++p) {
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 7] == 3);
+        CHECK(nan_out.patches[std::size_t{p} * patch_words + 8] == 1);
     }
 }

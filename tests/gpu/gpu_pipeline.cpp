@@ -50,8 +50,8 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     static_assert(sizeof(rt::TessVertex) == 40);
     // From the shaders' layout, so that a host can also time shaders of another record size.
     const std::uint32_t record_words = layout_patch_words(dir, max_factor);
-    const std::array<std::uint32_t, 10> params = pipeline_params(scene);
-    const std::vector<std::uint32_t> tables = read_words(shader_file(dir, max_factor, ".tables.bin"));
+    const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
+    const std::vector<std::uint32_t> tables = read_words(shader_file(dir, max_factor, ".uniform.tables.bin"));
     const std::uint32_t n = scene.patch_count();
     require_pipeline_size(n, 0, 0);
     const std::size_t b_params = vk.create_buffer(sizeof params);
@@ -104,13 +104,19 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     return out;
 }
 
-// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 2, params[10], vertex floats, index count, then the
+// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 2, params[10] (the WGSL shaders are CP only, so the
+// pattern word is not sent; a uniform scene is refused), vertex floats, index count, then the
 // vertex floats and the indices. Result file: "CTGO", patch words, vertex words, index words, milliseconds
 // (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
                         RunLimits limits) {
-    const std::array<std::uint32_t, 10> params = pipeline_params(scene);
+    if (scene.options.pattern != rt::Pattern::cp)
+        throw std::runtime_error("the WGSL shaders run the CP pattern only (docs/shaders.md)");
+    const std::array<std::uint32_t, pipeline_param_words> all_params = pipeline_params(scene);
+    const std::array<std::uint32_t, 10> params = {all_params[0], all_params[1], all_params[2], all_params[3],
+                                                  all_params[4], all_params[5], all_params[6], all_params[7],
+                                                  all_params[8], all_params[9]};
     const std::string scene_path = work_file + ".scene";
     const std::string result_path = work_file + ".result";
     {

@@ -42,8 +42,9 @@ struct PipelineOutput {
 };
 
 // The params buffer: patch count, surface, alpha bits, factor scale bits, eye xyz bits, mesh vertex count,
-// and the patch range [first, end) of the emit passes (all of them here).
-inline std::array<std::uint32_t, 10> pipeline_params(const Scene& scene) {
+// the patch range [first, end) of the emit passes (all of them here), and the pattern (0 CP, 1 uniform).
+inline constexpr std::size_t pipeline_param_words = 11;
+inline std::array<std::uint32_t, pipeline_param_words> pipeline_params(const Scene& scene) {
     const rt::PipelineOptions& o = scene.options;
     return {scene.patch_count(),
             static_cast<std::uint32_t>(o.surface.surface),
@@ -54,22 +55,25 @@ inline std::array<std::uint32_t, 10> pipeline_params(const Scene& scene) {
             float_bits(o.dice.eye.z),
             static_cast<std::uint32_t>(scene.vertices.size() / rt::mesh_vertex_floats),
             0u,
-            scene.patch_count()};
+            scene.patch_count(),
+            static_cast<std::uint32_t>(o.pattern)};
 }
 
+// The CPU pipeline with the scene's options; the uniform pattern uses the configured uniform tables
+// (rt::uniform_tables), as the shaders' blob does.
 inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) {
     PipelineOutput out;
     const auto start = std::chrono::steady_clock::now();
     const rt::MeshView mesh = scene.view();
     std::vector<rt::PatchRecord> patches(mesh.triangle_count);
     rt::PipelineTotals totals;
-    if (const rt::PipelineStatus st = rt::setup_patches(tables, mesh, scene.options, patches, totals);
+    if (const rt::PipelineStatus st = rt::setup_patches(tables, rt::uniform_tables, mesh, scene.options, patches, totals);
         st != rt::PipelineStatus::ok)
         throw std::runtime_error(std::string("setup_patches: ") + rt::pipeline_status_message(st));
     std::vector<rt::TessVertex> vertices(totals.vertices);
     out.indices.resize(std::size_t{totals.triangles} * 3);
     if (const rt::PipelineStatus st =
-            rt::emit_mesh(tables, mesh, scene.options, patches, vertices, out.indices);
+            rt::emit_mesh(tables, rt::uniform_tables, mesh, scene.options, patches, vertices, out.indices);
         st != rt::PipelineStatus::ok)
         throw std::runtime_error(std::string("emit_mesh: ") + rt::pipeline_status_message(st));
     out.milliseconds =

@@ -54,22 +54,31 @@ const char* surface_name(rt::Surface s) {
     return s == rt::Surface::flat ? "flat" : s == rt::Surface::pn_triangles ? "PN" : "Phong";
 }
 
-void check_parity(unsigned max_factor, rt::Surface surface) {
-    const Scene scene = factor_sweep_grid(max_factor, 24, surface);
+const char* pattern_name(rt::Pattern p) {
+    return p == rt::Pattern::cp ? "CP" : "uniform";
+}
+
+// The uniform pattern's factors sweep [1, N] of the configured uniform tables, which every blob carries.
+void check_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern = rt::Pattern::cp) {
+    const unsigned sweep_max = pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : max_factor;
+    Scene scene = factor_sweep_grid(sweep_max, 24, surface);
+    scene.options.pattern = pattern;
     REQUIRE(scene.patch_count() >= 1000);
     const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
-    const PipelineOutput gpu = run_gpu(max_factor, scene, "parity");
+    const char* work =
+        pattern == rt::Pattern::uniform ? "parity_uniform" : "parity"; // ctest runs tests in parallel
+    const PipelineOutput gpu = run_gpu(max_factor, scene, work);
     // A second run: the driver's shader cache is warm, so its time is the dispatch itself. Same bits, too.
-    const PipelineOutput again = run_gpu(max_factor, scene, "parity");
+    const PipelineOutput again = run_gpu(max_factor, scene, work);
     CHECK(again.patches == gpu.patches);
     CHECK(again.vertices == gpu.vertices);
     CHECK(again.indices == gpu.indices);
     const Comparison c = compare(cpu, gpu);
-    std::printf("%s, max %u, %s: %u patches, %u vertices, %u triangles; GPU %.1f ms (first run %.1f ms), "
+    std::printf("%s, max %u, %s, %s: %u patches, %u vertices, %u triangles; GPU %.1f ms (first run %.1f ms), "
                 "CPU %.1f ms; max position error %.2g\n",
-                backend_name, max_factor, surface_name(surface), scene.patch_count(), cpu.total_vertices(),
-                cpu.total_triangles(), again.milliseconds, gpu.milliseconds, cpu.milliseconds,
-                c.max_position_error);
+                backend_name, max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
+                cpu.total_vertices(), cpu.total_triangles(), again.milliseconds, gpu.milliseconds,
+                cpu.milliseconds, c.max_position_error);
     INFO(c.first_difference);
     CHECK(c.sizes_match);
     CHECK(c.patch_mismatches == 0);
@@ -78,20 +87,23 @@ void check_parity(unsigned max_factor, rt::Surface surface) {
     CHECK(c.position_outside == 0);
     CHECK(c.attribute_outside == 0);
     // The factors cover [1, max]: every octave has edges, and so do both clamps.
-    const std::vector<std::size_t> octaves = factor_octaves(cpu, scene.patch_count(), max_factor);
+    const std::vector<std::size_t> octaves = factor_octaves(cpu, scene.patch_count(), sweep_max);
     for (std::size_t k = 0; k < octaves.size(); ++k) {
         INFO("octave bin " << k);
         CHECK(octaves[k] > 0);
     }
 }
 
-void check_watertight(unsigned max_factor, rt::Surface surface) {
-    const Scene scene = icosphere(3, surface, max_factor == 64 ? 4.0f : 3.0f);
-    const PipelineOutput gpu = run_gpu(max_factor, scene, "crack");
+void check_watertight(unsigned max_factor, rt::Surface surface, rt::Pattern pattern = rt::Pattern::cp) {
+    Scene scene = icosphere(3, surface, max_factor == 64 ? 4.0f : 3.0f);
+    scene.options.pattern = pattern;
+    const PipelineOutput gpu =
+        run_gpu(max_factor, scene, pattern == rt::Pattern::uniform ? "crack_uniform" : "crack");
     const CrackReport r = crack_check(scene, gpu);
-    std::printf("%s, max %u, %s icosphere: %u patches, %zu shared edges, %zu edge points, %zu mismatches\n",
-                backend_name, max_factor, surface_name(surface), scene.patch_count(), r.shared_edges,
-                r.edge_points, r.position_mismatches);
+    std::printf(
+        "%s, max %u, %s, %s icosphere: %u patches, %zu shared edges, %zu edge points, %zu mismatches\n",
+        backend_name, max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
+        r.shared_edges, r.edge_points, r.position_mismatches);
     CHECK(r.shared_edges == scene.patch_count() * 3 / 2); // closed: every edge has two patches
     CHECK(r.edge_points > 3 * r.shared_edges);
     CHECK(r.unmatched_points == 0);
@@ -121,6 +133,37 @@ TEST_CASE("GPU crack test: icosphere with PN and Phong is watertight, max 64 and
     }
 }
 
+#if defined(CTESS_GPU_VULKAN) // the WGSL shaders have no uniform pattern yet (docs/shaders.md)
+TEST_CASE(
+    "GPU parity, uniform pattern: 1152-patch factor sweep over [1, N], flat, PN and Phong, both blobs") {
+    check_parity(64, rt::Surface::flat, rt::Pattern::uniform);
+    check_parity(64, rt::Surface::pn_triangles, rt::Pattern::uniform);
+    check_parity(64, rt::Surface::phong, rt::Pattern::uniform);
+    check_parity(256, rt::Surface::pn_triangles, rt::Pattern::uniform);
+}
+
+TEST_CASE("GPU crack test, uniform pattern: icosphere with PN and Phong is watertight") {
+    check_watertight(64, rt::Surface::pn_triangles, rt::Pattern::uniform);
+    check_watertight(64, rt::Surface::phong, rt::Pattern::uniform);
+    check_watertight(256, rt::Surface::flat, rt::Pattern::uniform);
+}
+
+TEST_CASE("GPU grid-stride, uniform pattern: 7 workgroups per dispatch give the same output") {
+    Scene scene = factor_sweep_grid(rt::uniform_tables.max_factor, 24, rt::Surface::flat);
+    scene.options.pattern = rt::Pattern::uniform;
+    const Comparison c =
+        compare(run_cpu(rt::cp_tables_64, scene), run_gpu(64, scene, "stride_uniform", RunLimits{7, false}));
+    INFO(c.first_difference);
+    CHECK(c.equal());
+}
+#else
+TEST_CASE("WGSL host: the uniform pattern is refused, not run as CP (the WGSL shaders are CP only)") {
+    Scene scene = factor_sweep_grid(rt::uniform_tables.max_factor, 4, rt::Surface::flat);
+    scene.options.pattern = rt::Pattern::uniform;
+    CHECK_THROWS(run_gpu(64, scene, "uniform_refused"));
+}
+#endif
+
 TEST_CASE("GPU grid-stride: 7 workgroups per dispatch give the same output as one per patch") {
     const Scene scene = factor_sweep_grid(64, 24, rt::Surface::flat);
     const Comparison c =
@@ -140,7 +183,8 @@ TEST_CASE("GPU totals: beyond 2^32 - 2 vertices the prefix sum writes the overfl
     const PipelineOutput over = run_gpu(256, scene, "totals", RunLimits{65535, true});
     CHECK(over.patches[std::size_t{n} * patch_words] == totals_overflow);
     CHECK(over.patches[std::size_t{n} * patch_words + 1] == totals_overflow);
-    // A full run recounts the totals in 64 bits and refuses before sizing the outputs (the CPU pipeline's limits).
+    // A full run recounts the totals in 64 bits and refuses before sizing the outputs (the CPU pipeline's
+    // limits).
     CHECK_THROWS_WITH(run_gpu(256, scene, "totals"),
                       Catch::Contains("past the pipeline's limits") || Catch::Contains("429,496,729"));
 }

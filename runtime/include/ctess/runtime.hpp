@@ -20,5 +20,6 @@
 #include "runtime/surface_eval.hpp"
 #include "runtime/tess_factor.hpp"
 #include "runtime/uniform_patch.hpp"
+#include "runtime/uniform_pipeline_patch.hpp"
 #include "runtime/uniform_split.hpp"
 #include "runtime/uniform_table_set.hpp"

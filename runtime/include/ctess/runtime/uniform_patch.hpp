@@ -60,6 +60,15 @@ class UniformPatch {
     // The sorted factors of the stored pattern (f0 >= f1 >= f2).
     std::array<std::uint32_t, 3> sorted_factors() const noexcept { return sorted_; }
 
+    // Output corner c is the stored pattern's canonical corner corner_source()[c]; flipped() says whether
+    // triangle() reverses the stored winding; pattern_index() is uniform::pattern_index of the sorted factors
+    // (what the mesh pipeline's shaders store per patch, docs/shaders.md).
+    std::array<std::uint8_t, 3> corner_source() const noexcept { return source_; }
+    bool flipped() const noexcept { return flip_; }
+    std::uint32_t pattern_index() const noexcept {
+        return uniform::pattern_index(sorted_[0], sorted_[1], sorted_[2]);
+    }
+
     // Vertex i as an exact point (u, v), units of 65534; {0, 0} when i >= counts().vertices. In the
     // provoking layout, vertices from distinct_vertices() on are copies.
     DomainPoint vertex(std::uint32_t i) const noexcept {
