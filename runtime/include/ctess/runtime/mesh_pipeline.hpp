@@ -199,10 +199,10 @@ inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, s
         rec.token[k] = s[k].token;
         rec.t16[k] = s[k].t16;
     }
-    const Counts counts = cp_counts(tables, s[0], s[1], s[2]);
-    rec.vertex_count = counts.vertices;
-    rec.triangle_count = counts.triangles;
+    // One CpPatchSetup gives both the counts and the block.
     const PatchSetupBlock block = patch_setup_block(tables, s[0], s[1], s[2]);
+    rec.vertex_count = block.vertices;
+    rec.triangle_count = block.triangles;
     for (unsigned k = 0; k < setup_word::words; ++k) rec.setup[k] = block.word[k];
     return rec;
 }
