@@ -62,10 +62,8 @@ void write_file(const std::string& path, std::string_view data) {
     }
 }
 
-// with_uniform: the uniform pattern's blob sections too (the GLSL template reads them; the WGSL one does not
-// yet, docs/shaders.md).
-std::map<std::string, std::string, std::less<>> constants(const ctess::gen::TableBlobLayout& l,
-                                                          bool with_uniform) {
+// The blob's section offsets and the other values the templates take (both templates read every one).
+std::map<std::string, std::string, std::less<>> constants(const ctess::gen::TableBlobLayout& l) {
     std::map<std::string, std::string, std::less<>> v;
     auto put = [&v](const char* name, std::uint32_t value) { v.emplace(name, std::to_string(value)); };
     put("MAX_FACTOR", l.max_factor);
@@ -80,7 +78,6 @@ std::map<std::string, std::string, std::less<>> constants(const ctess::gen::Tabl
     put("GAP_WORD", l.gap_word);
     put("T1_LAST_FAN", l.t1_last_fan);
     put("SEARCH_WINDOW", ctess::cp::tables::search_window);
-    if (!with_uniform) return v;
     put("UNIFORM_MAX_FACTOR", l.uniform_max_factor);
     put("UNIFORM_OFFSET", l.uniform_offset);
     put("UNIFORM_INTERIOR", l.uniform_interior);
@@ -117,8 +114,8 @@ int main(int argc, char** argv) {
     try {
         const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables, ctess::rt::uniform_tables);
         const std::string prefix = out + "/ctess_cp_" + max;
-        // Two blobs: .uniform.tables.bin, every section (the GLSL shaders), and .tables.bin, the CP sections and
-        // the padding only (the WGSL shaders, which are CP only; docs/shaders.md).
+        // Two blobs: .uniform.tables.bin, every section (both patterns), and .tables.bin, the CP sections and
+        // the padding only (enough for the CP pattern; docs/shaders.md).
         write_file(prefix + ".uniform.tables.bin",
                    std::string_view(reinterpret_cast<const char*>(blob.words.data()), blob.words.size() * 4));
         std::vector<std::uint32_t> cp_words(blob.words.begin(), blob.words.begin() + blob.layout.uniform_offset);
@@ -128,13 +125,13 @@ int main(int argc, char** argv) {
 
         const std::string glsl = read_file(shaders + "/ctess_cp.comp.glsl");
         for (const Pass& p : passes) {
-            auto v = constants(blob.layout, true);
+            auto v = constants(blob.layout);
             v.emplace("LOCAL_SIZE", std::to_string(p.local_size));
             v.emplace("ENTRY", p.entry);
             write_file(prefix + "_" + p.name + ".comp", ctess::gen::fill_template(glsl, v));
         }
         const std::string wgsl = read_file(shaders + "/ctess_cp.wgsl");
-        write_file(prefix + ".wgsl", ctess::gen::fill_template(wgsl, constants(blob.layout, false)));
+        write_file(prefix + ".wgsl", ctess::gen::fill_template(wgsl, constants(blob.layout)));
 
         const ctess::gen::TableBlobLayout& l = blob.layout;
         std::ostringstream json;

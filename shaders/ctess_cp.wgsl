@@ -15,6 +15,10 @@ const GAP_OFFSET: u32 = {{GAP_OFFSET}}u;
 const GAP_WORD: u32 = {{GAP_WORD}}u;
 const T1_LAST_FAN: u32 = {{T1_LAST_FAN}}u;
 const SEARCH_WINDOW: u32 = {{SEARCH_WINDOW}}u;
+const UNIFORM_MAX_FACTOR: u32 = {{UNIFORM_MAX_FACTOR}}u;
+const UNIFORM_OFFSET: u32 = {{UNIFORM_OFFSET}}u;
+const UNIFORM_INTERIOR: u32 = {{UNIFORM_INTERIOR}}u;
+const UNIFORM_TRIANGLE: u32 = {{UNIFORM_TRIANGLE}}u;
 const FIXED_ONE: u32 = 16777216u; // 2^24
 const LERP_ONE: u32 = 65536u;
 const PATCH_WORDS: u32 = 48u;
@@ -24,7 +28,7 @@ const MESH_VERTEX_FLOATS: u32 = 8u;
 const GROUP: u32 = 64u;
 
 // params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
-// patch range [first, end) that the emit passes cover (hosts may emit in batches)
+// patch range [first, end) that the emit passes cover (hosts may emit in batches), and the pattern (0 CP, 1 uniform)
 @group(0) @binding(0) var<storage, read> params: array<u32>;
 @group(0) @binding(1) var<storage, read> tables: array<u32>;
 @group(0) @binding(2) var<storage, read> mesh_vertices: array<f32>;
@@ -34,6 +38,7 @@ const GROUP: u32 = 64u;
 @group(0) @binding(6) var<storage, read_write> out_indices: array<u32>;
 
 fn patch_count() -> u32 { return params[0]; }
+fn uniform_pattern() -> bool { return params[10] == 1u; }
 
 // ---- 64-bit helpers: x = (lo, hi) ----
 fn mul_wide(a: u32, b: u32) -> vec2<u32> {
@@ -573,6 +578,71 @@ fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: 
     return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
 }
 
+// ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
+const UNIFORM_ONE: u32 = 65534u;
+// Rounded to the nearest integer (halves up), clamped to [1, UNIFORM_MAX_FACTOR]; NaN gives 1.
+fn uniform_factor(f: f32) -> u32 {
+    if (is_nan_bits(f) || !(f >= 1.5)) { return 1u; }
+    if (!(f < f32(UNIFORM_MAX_FACTOR) - 0.5)) { return UNIFORM_MAX_FACTOR; }
+    return u32(f + 0.5);
+}
+fn uniform_edge_parameter(i: u32, f: u32) -> u32 {
+    let nearer = min(i, f - i);
+    let q = (2u * nearer * UNIFORM_ONE + f) / (2u * f);
+    return select(UNIFORM_ONE - q, q, i <= f - i);
+}
+fn uniform_pattern_index(f0: u32, f1: u32, f2: u32) -> u32 { return (f0 - 1u) * f0 * (f0 + 1u) / 6u + (f1 - 1u) * f1 / 2u + (f2 - 1u); }
+// A 65534-unit weight in units of 2^-24: nearest, never a tie, so mirror-exact.
+fn uniform_to_fixed(w: u32) -> u32 { return 256u * w + (512u * w + 32767u) / 65534u; }
+// The uniform setup words from the integer factors of base edges E0, E1, E2 (UniformPatch's constructor).
+// Returns the counts; words: pattern index, f0 | f1 << 8 | f2 << 16, corner sources | flip << 12.
+fn uniform_setup(f: array<u32, 3>, words: ptr<function, vec3<u32>>) -> vec2<u32> {
+    var order = array<u32, 3>(0u, 1u, 2u);
+    var tmp: u32;
+    if (f[order[1]] > f[order[0]]) { tmp = order[0]; order[0] = order[1]; order[1] = tmp; }
+    if (f[order[2]] > f[order[1]]) { tmp = order[1]; order[1] = order[2]; order[2] = tmp; }
+    if (f[order[1]] > f[order[0]]) { tmp = order[0]; order[0] = order[1]; order[1] = tmp; }
+    let s0 = f[order[0]]; let s1 = f[order[1]]; let s2 = f[order[2]];
+    var opposite = array<u32, 3>(2u, 0u, 1u);
+    var target_ = array<u32, 3>(opposite[order[1]], opposite[order[2]], opposite[order[0]]);
+    var source: array<u32, 3>;
+    for (var c = 0u; c < 3u; c++) { source[target_[c]] = c; }
+    let flip = (target_[1] + 3u - target_[0]) % 3u != 1u;
+    let index = uniform_pattern_index(s0, s1, s2);
+    let first = tables[UNIFORM_OFFSET + index];
+    let next = tables[UNIFORM_OFFSET + index + 1u];
+    *words = vec3<u32>(index, s0 | (s1 << 8u) | (s2 << 16u), source[0] | (source[1] << 4u) | (source[2] << 8u) | select(0u, 4096u, flip));
+    return vec2<u32>(s0 + s1 + s2 + (next & 0xFFFFu) - (first & 0xFFFFu), (next >> 16u) - (first >> 16u));
+}
+// Vertex i as base weights (w1, w2), units of 2^-24.
+fn uniform_vertex(rec: u32, i: u32) -> vec2<u32> {
+    let index = patches[rec + SETUP];
+    let sorted = patches[rec + SETUP + 1u];
+    let corners = patches[rec + SETUP + 2u];
+    let f0 = sorted & 255u; let f1 = (sorted >> 8u) & 255u; let f2 = sorted >> 16u;
+    var c: vec2<u32>;
+    if (i < f0) {
+        c = vec2<u32>(uniform_edge_parameter(i, f0), 0u);
+    } else if (i < f0 + f1) {
+        let v = uniform_edge_parameter(i - f0, f1);
+        c = vec2<u32>(UNIFORM_ONE - v, v);
+    } else if (i < f0 + f1 + f2) {
+        c = vec2<u32>(0u, uniform_edge_parameter(f2 - (i - f0 - f1), f2));
+    } else {
+        let word = tables[UNIFORM_INTERIOR + (tables[UNIFORM_OFFSET + index] & 0xFFFFu) + i - (f0 + f1 + f2)];
+        c = vec2<u32>(word & 0xFFFFu, word >> 16u);
+    }
+    var weight = array<u32, 3>(UNIFORM_ONE - c.x - c.y, c.x, c.y);
+    return vec2<u32>(uniform_to_fixed(weight[(corners >> 4u) & 3u]), uniform_to_fixed(weight[(corners >> 8u) & 3u]));
+}
+fn uniform_index_byte(b: u32) -> u32 { return (tables[UNIFORM_TRIANGLE + (b >> 2u)] >> ((b & 3u) * 8u)) & 255u; }
+fn uniform_triangle(rec: u32, p: u32) -> vec3<u32> {
+    let b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP]] >> 16u) + p);
+    let t = vec3<u32>(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
+    if ((patches[rec + SETUP + 2u] & 4096u) != 0u) { return t.xzy; }
+    return t;
+}
+
 // ---- patch records (PatchRecord) ----
 fn smallest_edge_rotation(lengths: array<f32, 3>) -> u32 {
     var l = lengths;
@@ -666,6 +736,22 @@ fn setup_one_patch(t: u32) {
         let d = b - a;
         length2[k] = dot3(d, d);
     }
+    if (uniform_pattern()) {
+        var f: array<u32, 3>;
+        for (var k = 0u; k < 3u; k++) {
+            f[k] = uniform_factor(factor[k]);
+            patches[rec + 1u + k] = f[k];
+            patches[rec + 11u + k] = bitcast<u32>(factor[k]);
+        }
+        var words: vec3<u32>;
+        let counts = uniform_setup(f, &words);
+        patches[rec + 7u] = counts.x;
+        patches[rec + 8u] = counts.y;
+        patches[rec + SETUP] = words.x;
+        patches[rec + SETUP + 1u] = words.y;
+        patches[rec + SETUP + 2u] = words.z;
+        return;
+    }
     let rot = smallest_edge_rotation(length2);
     var s: array<vec2<u32>, 3>;
     for (var k = 0u; k < 3u; k++) { s[k] = line_state(factor[(k + rot) % 3u]); }
@@ -747,13 +833,16 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
         let count = patches[rec + 7u];
         let w = base_triangle(t);
         if (count == 0u || !base_triangle_valid(w)) { continue; }
-        var p = record_patch(rec);
+        let uniform_ = uniform_pattern();
+        var p: Patch;
+        if (!uniform_) { p = record_patch(rec); }
         let rot = patches[rec];
         let first = patches[rec + 9u];
         let c = array<Corner, 3>(mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
         for (var i = lid.x; i < count; i += GROUP) {
-            let d = patch_vertex(&p, i);
-            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3
+            var d: vec2<u32>;
+            if (uniform_) { d = uniform_vertex(rec, i); } else { d = patch_vertex(&p, i); }
+            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
             var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
             var bw: array<u32, 3>;
             for (var k = 0u; k < 3u; k++) { bw[(k + rot) % 3u] = pw[k]; }
@@ -782,11 +871,15 @@ fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_work
         let rec = t * PATCH_WORDS;
         let count = patches[rec + 8u];
         if (count == 0u) { continue; }
-        var p = record_patch(rec);
+        let uniform_ = uniform_pattern();
+        var p: Patch;
+        if (!uniform_) { p = record_patch(rec); }
         let vfirst = patches[rec + 9u];
         let tfirst = patches[rec + 10u];
         for (var i = lid.x; i < count; i += GROUP) {
-            let tri = patch_triangle(&p, i) + vec3<u32>(vfirst);
+            var tri: vec3<u32>;
+            if (uniform_) { tri = uniform_triangle(rec, i); } else { tri = patch_triangle(&p, i); }
+            tri += vec3<u32>(vfirst);
             let o = 3u * (tfirst + i);
             out_indices[o] = tri.x;
             out_indices[o + 1u] = tri.y;

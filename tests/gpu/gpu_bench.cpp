@@ -64,8 +64,7 @@ int main(int argc, char** argv) {
         const char* name;
         Scene scene;
     };
-    // The 50 k-patch grid keeps its output (19 MB of vertices) well under the size at which Dawn GLES on
-    // llvmpipe aborts (docs/shaders.md: 27.8 MB already did).
+    // The 50 k-patch grid: 19 MB of vertices.
     Scene big = factor_sweep_grid(64, 158, rt::Surface::pn_triangles);
     big.options.dice.dice_rate = 12.0f;
     const Named scenes[] = {{"1,152-patch sweep, PN", factor_sweep_grid(64, 24, rt::Surface::pn_triangles)},

@@ -111,17 +111,12 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
                         RunLimits limits) {
-    if (scene.options.pattern != rt::Pattern::cp)
-        throw std::runtime_error("the WGSL shaders run the CP pattern only (docs/shaders.md)");
-    const std::array<std::uint32_t, pipeline_param_words> all_params = pipeline_params(scene);
-    const std::array<std::uint32_t, 10> params = {all_params[0], all_params[1], all_params[2], all_params[3],
-                                                  all_params[4], all_params[5], all_params[6], all_params[7],
-                                                  all_params[8], all_params[9]};
+    const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
     const std::string scene_path = work_file + ".scene";
     const std::string result_path = work_file + ".result";
     {
         std::ofstream f(scene_path, std::ios::binary);
-        const std::uint32_t head[] = {0x43535443u, 2u};
+        const std::uint32_t head[] = {0x43535443u, 3u};
         f.write(reinterpret_cast<const char*>(head), sizeof head);
         f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
         const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),

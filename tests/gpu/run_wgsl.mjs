@@ -1,4 +1,4 @@
-// Runs the generated WGSL CP mesh pipeline on Dawn (npm `webgpu`) and writes every output buffer to a file.
+// Runs the generated WGSL mesh pipeline (either pattern) on Dawn (npm `webgpu`) and writes every output buffer to a file.
 //   node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE
 // Backend: Dawn's OpenGL ES backend on Mesa's llvmpipe in compatibility mode, with EGL_PLATFORM=surfaceless
 // (Dawn's Vulkan backend rejects bookworm's lavapipe 22.3, docs/shaders.md). CTESS_DAWN_BACKEND
@@ -16,7 +16,10 @@ const [dir, max, scenePath, resultPath] = process.argv.slice(2);
 if (!resultPath) fail('usage: node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE');
 process.env.EGL_PLATFORM ??= 'surfaceless';
 const backend = process.env.CTESS_DAWN_BACKEND ?? 'opengles';
-const adapter = await create([`backend=${backend}`]).requestAdapter({ featureLevel: 'compatibility' });
+// The instance stays referenced for the whole run: collected (it is not needed after requestAdapter), it
+// takes Dawn down under the live device, aborting node at random (futex errors, segfaults).
+const gpu = create([`backend=${backend}`]);
+const adapter = await gpu.requestAdapter({ featureLevel: 'compatibility' });
 if (!adapter) fail(`no Dawn adapter for backend=${backend} (Mesa's EGL/GLES on llvmpipe are needed)`);
 const limits = adapter.limits;
 const device = await adapter.requestDevice({
@@ -30,11 +33,12 @@ let deviceError = null;
 device.addEventListener('uncapturederror', (e) => { deviceError ??= e.error.message; });
 
 const scene = new Uint32Array(readFileSync(scenePath).buffer.slice(0));
-if (scene[0] !== 0x43535443 || scene[1] !== 2) fail('bad scene file');
-const params = scene.slice(2, 12);
-const vertexFloats = scene[12], indexCount = scene[13];
-const meshVertices = scene.slice(14, 14 + vertexFloats);
-const meshIndices = scene.slice(14 + vertexFloats, 14 + vertexFloats + indexCount);
+if (scene[0] !== 0x43535443 || scene[1] !== 3) fail('bad scene file');
+const params = scene.slice(2, 13);
+const vertexFloats = scene[13], indexCount = scene[14];
+const meshVertices = scene.slice(15, 15 + vertexFloats);
+const meshIndices = scene.slice(15 + vertexFloats, 15 + vertexFloats + indexCount);
+const uniformPattern = params[10] === 1;
 const n = params[0];
 const maxGroups = Number(process.env.CTESS_MAX_WORKGROUPS ?? 65535);
 const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
@@ -45,7 +49,8 @@ const maxPatches = 65535 * 64, maxVertices = Math.floor(0xFFFFFFFF / 10), maxTri
 const pastLimits = (msg) => { console.error(`run_wgsl: ${msg}: past the pipeline's limits (${maxPatches} patches, ` +
                                             `${maxVertices} vertices, ${maxTriangles} triangles)`); process.exit(3); };
 if (n > maxPatches) pastLimits(`${n} patches`);
-const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}.tables.bin`).buffer.slice(0));
+// The CP blob serves the CP pattern; the uniform pattern needs the blob with the uniform sections.
+const tables = new Uint32Array(readFileSync(`${dir}/ctess_cp_${max}${uniformPattern ? '.uniform' : ''}.tables.bin`).buffer.slice(0));
 
 device.pushErrorScope('validation');
 const module = device.createShaderModule({ code: readFileSync(`${dir}/ctess_cp_${max}.wgsl`, 'utf8') });
@@ -111,15 +116,13 @@ if (!countsOnly) {
     for (let t = 0; t < n; t++) { sumV += patches[t * recordWords + 7]; sumT += patches[t * recordWords + 8]; }
     if (sumV > maxVertices || sumT > maxTriangles) pastLimits(`${sumV} vertices, ${sumT} triangles`);
 }
-// Dawn's GLES backend on bookworm's llvmpipe aborts the process (std::system_error in a futex) once a storage
-// binding passes about 27 MiB (27.8 MB aborted, 19 MB ran), below the advertised maxStorageBufferBindingSize:
-// refuse clearly from 24 MiB on instead.
-const maxBinding = Math.min(limits.maxStorageBufferBindingSize, 24 << 20);
+const maxBinding = limits.maxStorageBufferBindingSize;
 if (totalV * 40 > maxBinding || totalT * 12 > maxBinding) {
     fail(`${totalV} vertices / ${totalT} triangles need more than ${maxBinding} bytes in one storage binding`);
 }
 const bVertices = storage(totalV * 10), bOut = storage(totalT * 3);
-// Emit in batches of about 128k vertices, one submit each: Dawn's GL backend aborts on one very long submit.
+// Emit in batches of about 128k vertices, one submit each: the emit passes' patch range (params 8 and 9), as a
+// host that streams a large mesh would use it.
 const batchVertices = 1 << 17;
 for (let first = 0; first < (countsOnly ? 0 : n);) {
     let end = first, vertices = 0;

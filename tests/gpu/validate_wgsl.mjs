@@ -11,7 +11,9 @@ if (!file || entries.length === 0) {
     console.error('usage: node validate_wgsl.mjs FILE.wgsl ENTRY [ENTRY ...]');
     process.exit(2);
 }
-const adapter = await create(['backend=null']).requestAdapter();
+// Kept referenced: a collected instance takes Dawn down under the live device (run_wgsl.mjs).
+const gpu = create(['backend=null']);
+const adapter = await gpu.requestAdapter();
 if (!adapter) {
     console.error('no Dawn null adapter');
     process.exit(1);
