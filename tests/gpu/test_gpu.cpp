@@ -1,5 +1,6 @@
 // The generated shaders against the CPU mesh pipeline, on one backend per build of this file:
-// CTESS_GPU_VULKAN (GLSL -> SPIR-V on lavapipe) or CTESS_GPU_DAWN (WGSL on Dawn's GLES backend, llvmpipe).
+// CTESS_GPU_VULKAN (GLSL -> SPIR-V on lavapipe) or CTESS_GPU_DAWN (WGSL on Dawn: its GLES backend on llvmpipe,
+// or its Vulkan backend on SwiftShader, as tests/gpu/CMakeLists.txt sets the environment).
 // Both maximum factors run in every build. No test skips: a missing driver or node module is a failure.
 #include <catch2/catch.hpp>
 
@@ -37,14 +38,15 @@ PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char*, Run
     return run_vulkan(device(), CTESS_SHADER_DIR, max_factor, scene, limits);
 }
 #elif defined(CTESS_GPU_DAWN)
-const char* const backend_name = "Dawn (OpenGL ES on llvmpipe)";
+const char* const backend_name = CTESS_GPU_BACKEND_NAME;
 PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
     std::string work = CTESS_WORK_DIR;
-    work += "/dawn_";
+    work += "/";
+    work += CTESS_GPU_WORK_PREFIX; // ctest runs the variants in parallel
     work += name;
     work += "_";
     work += std::to_string(max_factor);
-    return run_dawn(CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work, limits);
+    return run_dawn(CTESS_DAWN_ENV CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work, limits);
 }
 #else
 #error "define CTESS_GPU_VULKAN or CTESS_GPU_DAWN"
