@@ -95,6 +95,7 @@ async function computePattern(mode, factors, max) {
         one: json.fixed_one, uv: Uint32Array.from(json.vertices.flat()), indices: Uint32Array.from(json.triangles.flat()),
         vertices: json.vertex_count, triangles: json.triangle_count,
         sides: mode === 'uniform' ? factors.map((f) => uniformFactor(f, top)) : null, source: 'api',
+        splitAbove: mode === 'uniform' ? json.max_tess_factor : null, // the table's N
     };
 }
 
@@ -279,7 +280,7 @@ async function redrawPattern() {
     };
     setStatus(`${mode} · ${domain} · factors ${factorText(factors)}` +
               (p.sides ? ` · integer factors ${p.sides.join(',')} (pops at each step)` : ` · max ${max}`) +
-              ` · computed by ${SOURCE_NAMES[p.source]}` + (mode === 'uniform' && p.source === 'api' ? ' (split above the table)' : ''));
+              (p.splitAbove ? ` · split above N = ${p.splitAbove}` : '') + ` · computed by ${SOURCE_NAMES[p.source]}`);
 }
 
 // ---- controls ----
