@@ -2,7 +2,7 @@
 // are given (params words 11 + 3t .. 13 + 3t, float bits, for patch t; word 10 is the generated module's pattern
 // word) instead of projected from a mesh; one workgroup per patch. Everything after the factors is the generated
 // module's own code: for CP line_state, patch_setup and store_setup_block, for the uniform pattern (word 10 = 1)
-// uniform_factor and uniform_setup, writing the record as its setup pass does. The generated prefix sum and emit
+// store_uniform_record, the record its setup pass writes (uniform_factor, uniform_setup). The generated prefix sum and emit
 // passes run unchanged on the records it writes (rotation 0, so the output barycentrics are the pattern's u, v).
 const EXPLICIT_FACTORS: u32 = 11u;
 @compute @workgroup_size(1)
@@ -12,20 +12,9 @@ fn viewer_explicit_setup(@builtin(workgroup_id) wid: vec3<u32>) {
     let rec = t * PATCH_WORDS;
     let given = EXPLICIT_FACTORS + 3u * t;
     for (var k = 0u; k < PATCH_WORDS; k++) { patches[rec + k] = 0u; }
-    for (var k = 0u; k < 3u; k++) { patches[rec + 11u + k] = params[given + k]; }
     if (uniform_pattern()) {
-        var f: array<u32, 3>;
-        for (var k = 0u; k < 3u; k++) {
-            f[k] = uniform_factor(bitcast<f32>(params[given + k]));
-            patches[rec + 1u + k] = f[k];
-        }
-        var words: vec3<u32>;
-        let counts = uniform_setup(f, &words);
-        patches[rec + 7u] = counts.x;
-        patches[rec + 8u] = counts.y;
-        patches[rec + SETUP] = words.x;
-        patches[rec + SETUP + 1u] = words.y;
-        patches[rec + SETUP + 2u] = words.z;
+        store_uniform_record(rec, array<f32, 3>(bitcast<f32>(params[given]), bitcast<f32>(params[given + 1u]),
+                                                bitcast<f32>(params[given + 2u])));
         return;
     }
     var s: array<vec2<u32>, 3>;
@@ -34,6 +23,7 @@ fn viewer_explicit_setup(@builtin(workgroup_id) wid: vec3<u32>) {
     for (var k = 0u; k < 3u; k++) {
         patches[rec + 1u + k] = s[k].x;
         patches[rec + 4u + k] = s[k].y;
+        patches[rec + 11u + k] = params[given + k];
     }
     patches[rec + 7u] = p.vertices;
     patches[rec + 8u] = p.triangles;
