@@ -171,11 +171,11 @@ export class WgslPipeline {
             uv[2 * i] = i < secondHalf ? u : one - u;
             uv[2 * i + 1] = i < secondHalf ? v : one - v;
         }
-        return { uv, indices, vertexCount: out.vertexCount, triangleCount: out.triangleCount, patches: out.patches };
+        return { uv, indices, vertexCount: out.vertexCount, triangleCount: out.triangleCount };
     }
 }
 
 export function f32Bits(x) {
     return new Uint32Array(new Float32Array([x]).buffer)[0];
 }
-export { VERTEX_WORDS, PARAMS_WORDS };
+export { VERTEX_WORDS };

@@ -1,8 +1,8 @@
 // ctess viewer: pattern view (one CP or uniform-density triangle from the generated WGSL on WebGPU, or a D3D11
 // pattern, or a uniform pattern split above the table's N, from `ctess serve`'s /api/pattern) and mesh view
-// (mesh_view.js). After each redraw, window.ctessViewer
-// holds {mode, factors, max, source, vertices, triangles, zeroArea, ratioToD3d11Even, sides, corners, readback} for automation
-// (docs/viewer.md); ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
+// (mesh_view.js). After each redraw, window.ctessViewer holds {mode, factors, max, source, vertices, triangles,
+// zeroArea, ratioToD3d11Even, sides, corners, readback} for automation (docs/viewer.md);
+// ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
 import { openDevice, WgslPipeline } from './ctess_gpu.js';
 import { MeshView, MESH_NAMES } from './mesh_view.js';
 

@@ -1,10 +1,12 @@
 // Loads viewer/ from `ctess serve` in headless chromium (WebGPU on SwiftShader, --enable-unsafe-webgpu) and
 // checks, against `ctess pattern --format json` (the CPU), bit for bit: the counts in window.ctessViewer and
 // the read-back vertices (u, v) and triangles, for CP (generated WGSL, max 64 and 256), the D3D11 modes and
-// uniform density (D3D11 and uniform through /api/pattern). Also: the URL sets the state, a slider changes the
-// counts, a uniform sweep visits only the CLI's patterns, the canvases are not blank, the mesh view's
-// triangle count follows the DiceRate, bad /api/pattern input gets a 400, a busy port is an error, and without
-// WebGPU the page says so.
+// uniform density (D3D11 and split uniform patterns through /api/pattern; uniform patterns within the table's N
+// from the generated WGSL, max 64 and 256, in 2^-24 units: each point the nearest to the CLI's, the triangles the
+// CLI's with their winding). Also: the URL sets the state, a slider changes the counts, a uniform sweep visits
+// only the CLI's patterns, the canvases are not blank, the mesh view's triangle count follows the DiceRate and
+// its read-back is closed (CP and uniform; uniform patch by patch against the CLI), bad /api/pattern input gets a
+// 400, a busy port is an error, and without WebGPU the page says so.
 //   node tests/viewer/test_viewer.mjs path/to/ctess        exit 0 pass, 1 fail, 77 skipped (no chromium)
 import { spawn, execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
