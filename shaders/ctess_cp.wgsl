@@ -643,6 +643,24 @@ fn uniform_triangle(rec: u32, p: u32) -> vec3<u32> {
     return t;
 }
 
+// The uniform pattern's record (setup pass, pattern 1) from base edges E0, E1, E2's factors, into a zeroed record:
+// rotation 0, the integer factors as tokens, the factor bits, the counts and the three setup words.
+fn store_uniform_record(rec: u32, factor: array<f32, 3>) {
+    var f: array<u32, 3>;
+    for (var k = 0u; k < 3u; k++) {
+        f[k] = uniform_factor(factor[k]);
+        patches[rec + 1u + k] = f[k];
+        patches[rec + 11u + k] = bitcast<u32>(factor[k]);
+    }
+    var words: vec3<u32>;
+    let counts = uniform_setup(f, &words);
+    patches[rec + 7u] = counts.x;
+    patches[rec + 8u] = counts.y;
+    patches[rec + SETUP] = words.x;
+    patches[rec + SETUP + 1u] = words.y;
+    patches[rec + SETUP + 2u] = words.z;
+}
+
 // ---- patch records (PatchRecord) ----
 fn smallest_edge_rotation(lengths: array<f32, 3>) -> u32 {
     var l = lengths;
@@ -737,19 +755,7 @@ fn setup_one_patch(t: u32) {
         length2[k] = dot3(d, d);
     }
     if (uniform_pattern()) {
-        var f: array<u32, 3>;
-        for (var k = 0u; k < 3u; k++) {
-            f[k] = uniform_factor(factor[k]);
-            patches[rec + 1u + k] = f[k];
-            patches[rec + 11u + k] = bitcast<u32>(factor[k]);
-        }
-        var words: vec3<u32>;
-        let counts = uniform_setup(f, &words);
-        patches[rec + 7u] = counts.x;
-        patches[rec + 8u] = counts.y;
-        patches[rec + SETUP] = words.x;
-        patches[rec + SETUP + 1u] = words.y;
-        patches[rec + SETUP + 2u] = words.z;
+        store_uniform_record(rec, factor);
         return;
     }
     let rot = smallest_edge_rotation(length2);

@@ -1,6 +1,11 @@
-// The generated CP pipeline (build/<preset>/shaders/ctess_cp_<max>.wgsl and its table blob) on the browser's
+// The generated mesh pipeline (build/<preset>/shaders/ctess_cp_<max>.wgsl and its table blobs) on the browser's
 // WebGPU, driven as tests/gpu/run_wgsl.mjs drives it on Dawn: bindings and record layouts in docs/shaders.md.
+// Params word 10 selects the pattern (docs/shaders.md, "Pattern option"): CP binds the CP blob, uniform density
+// the uniform blob (the same CP sections, then the uniform ones), fetched on first use.
 const VERTEX_WORDS = 10;
+const PARAMS_WORDS = 11; // the generated module's params; the viewer's explicit factors follow (explicit_factors.wgsl)
+const PATTERN_WORD = 10;
+export const PATTERNS = { cp: 0, uniform: 1 };
 
 // Resolves to {device, adapterInfo} or throws an Error whose message says plainly why WebGPU is unusable.
 export async function openDevice() {
@@ -30,7 +35,7 @@ async function fetchOk(url) {
     return r;
 }
 
-export class CpPipeline {
+export class WgslPipeline {
     static async load(device, maxFactor) {
         const [wgsl, extra, blob, layout] = await Promise.all([
             fetchOk(`shaders/ctess_cp_${maxFactor}.wgsl`).then((r) => r.text()),
@@ -38,7 +43,7 @@ export class CpPipeline {
             fetchOk(`shaders/ctess_cp_${maxFactor}.tables.bin`).then((r) => r.arrayBuffer()),
             fetchOk(`shaders/ctess_cp_${maxFactor}.layout.json`).then((r) => r.json()),
         ]);
-        const p = new CpPipeline(device, maxFactor);
+        const p = new WgslPipeline(device, maxFactor);
         p.patchWords = layout.patch_words; // words per patch record (the generated layout)
         device.pushErrorScope('validation');
         const module = device.createShaderModule({ code: `${wgsl}\n${extra}` });
@@ -63,6 +68,19 @@ export class CpPipeline {
     constructor(device, maxFactor) {
         this.device = device;
         this.maxFactor = maxFactor;
+        this.uniform = null; // Promise<{tables, maxFactor}>: the uniform blob and its N (uniform_max_factor)
+    }
+
+    // The uniform blob, bound when params word 10 is 1, and the largest factor its table holds.
+    uniformTables() {
+        if (!this.uniform) {
+            const base = `shaders/ctess_cp_${this.maxFactor}.uniform`;
+            this.uniform = Promise.all([fetchOk(`${base}.tables.bin`).then((r) => r.arrayBuffer()),
+                                        fetchOk(`${base}.layout.json`).then((r) => r.json())])
+                .then(([blob, layout]) => ({ tables: this.storage(new Uint32Array(blob)), maxFactor: layout.uniform_max_factor }));
+            this.uniform.catch(() => { this.uniform = null; });
+        }
+        return this.uniform;
     }
 
     storage(data, words = data.length, extraUsage = 0) {
@@ -103,10 +121,12 @@ export class CpPipeline {
         this.device.queue.submit([enc.finish()]);
     }
 
-    // Runs setup (explicit factors, or projected from the mesh) and the prefix sum, then both emit passes.
-    // Returns {patches, vertexCount, triangleCount, vertices, indices} with the output as GPU buffers.
+    // Runs setup (explicit factors, or projected from the mesh) and the prefix sum, then both emit passes, with
+    // the blob of the pattern params word 10 names. Returns {patches, vertexCount, triangleCount, vertices,
+    // indices} with the output as GPU buffers.
     async run(params, meshVertices, meshIndices, explicit, indexUsage = 0) {
         const n = params[0];
+        const tables = params[PATTERN_WORD] === PATTERNS.uniform ? (await this.uniformTables()).tables : this.tables;
         const bParams = this.storage(params);
         const bMesh = this.storage(meshVertices);
         const bIndices = this.storage(meshIndices);
@@ -114,28 +134,29 @@ export class CpPipeline {
         const bPatches = this.storage(null, patchWords);
         const none = [this.storage(null, 4), this.storage(null, 4)];
         const setup = explicit ? [this.explicitSetup, n] : [this.setup, Math.ceil(n / 64)];
-        this.dispatch([bParams, this.tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
+        this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
         const patches = await this.read(bPatches, patchWords);
         const vertexCount = patches[n * this.patchWords], triangleCount = patches[n * this.patchWords + 1];
         const vertices = this.storage(null, vertexCount * VERTEX_WORDS);
         const indices = this.storage(null, triangleCount * 3, indexUsage);
-        this.dispatch([bParams, this.tables, bMesh, bIndices, bPatches, vertices, indices],
+        this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices],
                       [[this.emitVertices, Math.min(n, 65535)], [this.emitTriangles, Math.min(n, 65535)]]);
         for (const b of [bParams, bMesh, bIndices, bPatches, ...none]) b.destroy();
         return { patches, vertexCount, triangleCount, vertices, indices };
     }
 
-    // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0): the
-    // pattern's (u, v) in 2^-24 and its provoking-first, counter-clockwise triangles, read back from the GPU.
+    // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0), or with
+    // pattern 'uniform' one uniform-density triangle (factors rounded and clamped to [1, N] by the module): the
+    // pattern's (u, v) in 2^-24 and its counter-clockwise triangles (CP: provoking first), read back from the GPU.
     // A quad is the two triangles of cp::split_quad (constexpr/ctess/cp_quad.hpp): A = (q0, q1, q3) with
     // factors (f0, f0, f3) and B = (q2, q3, q1) with (f2, f0, f1), the diagonal taking f0; B's points map to
     // (1 - u, 1 - v). Both halves keep their own diagonal points, as the CLI's provoking layout does.
-    async pattern(factors) {
+    async pattern(factors, pattern = 'cp') {
         const halves = factors.length === 4 ? [[factors[0], factors[0], factors[3]], [factors[2], factors[0], factors[1]]] : [factors];
         const n = halves.length;
-        const params = new Uint32Array(10 + 3 * n);
-        params.set([n, 0, 0, f32Bits(1), 0, 0, 0, 3, 0, n]);
-        params.set(halves.flat().map(f32Bits), 10);
+        const params = new Uint32Array(PARAMS_WORDS + 3 * n);
+        params.set([n, 0, 0, f32Bits(1), 0, 0, 0, 3, 0, n, PATTERNS[pattern]]);
+        params.set(halves.flat().map(f32Bits), PARAMS_WORDS);
         const mesh = new Float32Array([0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1]);
         const out = await this.run(params, new Uint32Array(mesh.buffer), new Uint32Array(halves.flatMap(() => [0, 1, 2])), true);
         const words = await this.read(out.vertices, out.vertexCount * VERTEX_WORDS);

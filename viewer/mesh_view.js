@@ -1,7 +1,7 @@
-// Mesh view: a built-in icosahedron/icosphere or quad torus run through the whole generated CP pipeline
-// (projected edge factors over a DiceRate, PN or Phong evaluation), drawn shaded with its wireframe, under an
-// orbit camera.
-import { f32Bits, VERTEX_WORDS } from './ctess_gpu.js';
+// Mesh view: a built-in icosahedron/icosphere or quad torus run through the whole generated pipeline with the
+// CP or the uniform-density pattern (projected edge factors over a DiceRate, PN or Phong evaluation), drawn
+// shaded with its wireframe, under an orbit camera.
+import { f32Bits, PATTERNS, VERTEX_WORDS } from './ctess_gpu.js';
 
 const FOV_Y = Math.PI / 4;
 
@@ -122,7 +122,7 @@ export class MeshView {
             this.camera.distance = Math.max(1.3, Math.min(40, this.camera.distance * Math.exp(e.deltaY * 0.001)));
             redraw();
         }, { passive: false });
-        for (const el of [ui.kind, ui.surface, ui.dice]) el.addEventListener('input', () => redraw());
+        for (const el of [ui.kind, ui.surface, ui.dice, ui.pattern]) el.addEventListener('input', () => redraw());
     }
 
     attach(device) {
@@ -143,7 +143,6 @@ export class MeshView {
     }
 
     async redraw(maxFactor) {
-        const cp = await this.pipeline();
         const kind = MESHES[this.ui.kind.value] ? this.ui.kind.value : 'ico0';
         const mesh = MESHES[kind]();
         const { yaw, pitch, distance } = this.camera;
@@ -151,9 +150,14 @@ export class MeshView {
         const dice = Number(this.ui.dice.value);
         const projectionScale = this.canvas.height / (2 * Math.tan(FOV_Y / 2));
         const surface = Number(this.ui.surface.value);
+        const pattern = PATTERNS[this.ui.pattern.value] !== undefined ? this.ui.pattern.value : 'cp';
+        // params word 10: the pattern; uniform factors are rounded and clamped to [1, N] by the setup pass
         const params = new Uint32Array([mesh.patches, surface, f32Bits(1), f32Bits(projectionScale / dice),
-                                        f32Bits(eye[0]), f32Bits(eye[1]), f32Bits(eye[2]), mesh.vertices.length / 8, 0, mesh.patches]);
-        const out = await cp.run(params, new Uint32Array(mesh.vertices.buffer), mesh.indices, false);
+                                        f32Bits(eye[0]), f32Bits(eye[1]), f32Bits(eye[2]), mesh.vertices.length / 8, 0, mesh.patches,
+                                        PATTERNS[pattern]]);
+        const pipeline = await this.pipeline();
+        const out = await pipeline.run(params, new Uint32Array(mesh.vertices.buffer), mesh.indices, false);
+        const uniformMax = pattern === 'uniform' ? (await pipeline.uniformTables()).maxFactor : null;
         const viewProj = mul(perspective(FOV_Y, this.canvas.width / this.canvas.height, 0.05, 100), lookAt(eye));
         const u = new Float32Array(20);
         u.set(viewProj);
@@ -176,14 +180,15 @@ export class MeshView {
         this.device.queue.submit([enc.finish()]);
         await this.device.queue.onSubmittedWorkDone();
         // What the pipeline wrote, for the test's watertightness check (docs/shaders.md's vertex records).
-        const readback = { vertices: await cp.read(out.vertices, out.vertexCount * VERTEX_WORDS), indices: await cp.read(out.indices, out.triangleCount * 3) };
+        const readback = { vertices: await pipeline.read(out.vertices, out.vertexCount * VERTEX_WORDS),
+                           indices: await pipeline.read(out.indices, out.triangleCount * 3), records: out.patches };
         out.vertices.destroy();
         out.indices.destroy();
         this.ui.diceValue.textContent = `${dice} px`;
         this.ui.vertices.textContent = out.vertexCount;
         this.ui.triangles.textContent = out.triangleCount;
         window.ctessViewer = {
-            view: 'mesh', mode: 'cp', max: maxFactor, mesh: kind, patches: mesh.patches,
+            view: 'mesh', mode: pattern, uniformMax, max: maxFactor, mesh: kind, patches: mesh.patches,
             surface: ['flat', 'pn', 'phong'][surface], diceRate: dice, vertices: out.vertexCount,
             triangles: out.triangleCount, readback,
         };

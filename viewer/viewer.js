@@ -1,8 +1,9 @@
-// ctess viewer: pattern view (one CP triangle from the generated WGSL on WebGPU, or a D3D11 or uniform-density
-// pattern from `ctess serve`'s /api/pattern) and mesh view (mesh_view.js). After each redraw, window.ctessViewer
-// holds {mode, factors, max, vertices, triangles, zeroArea, ratioToD3d11Even, sides, corners, readback} for automation
-// (docs/viewer.md); ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
-import { openDevice, CpPipeline } from './ctess_gpu.js';
+// ctess viewer: pattern view (one CP or uniform-density triangle from the generated WGSL on WebGPU, or a D3D11
+// pattern, or a uniform pattern split above the table's N, from `ctess serve`'s /api/pattern) and mesh view
+// (mesh_view.js). After each redraw, window.ctessViewer holds {mode, factors, max, source, vertices, triangles,
+// zeroArea, ratioToD3d11Even, sides, corners, readback} for automation (docs/viewer.md);
+// ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
+import { openDevice, WgslPipeline } from './ctess_gpu.js';
 import { MeshView, MESH_NAMES } from './mesh_view.js';
 
 const MODES = ['cp', 'd3d11-integer', 'd3d11-pow2', 'd3d11-odd', 'd3d11-even', 'uniform'];
@@ -35,10 +36,10 @@ function parseFactors(text, domain = state.domain) {
 const factorText = (f) => f.map((x) => String(Number(x.toPrecision(7)))).join(',');
 
 // ---- pattern sources ----
-const pipelines = new Map(); // max -> Promise<CpPipeline>
+const pipelines = new Map(); // max -> Promise<WgslPipeline>
 let device = null;
 function pipelineFor(max) {
-    if (!pipelines.has(max)) pipelines.set(max, CpPipeline.load(device, max));
+    if (!pipelines.has(max)) pipelines.set(max, WgslPipeline.load(device, max));
     return pipelines.get(max);
 }
 
@@ -66,13 +67,25 @@ async function apiPattern(mode, factors) {
 }
 
 // rt::uniform_factor (docs/algorithm.md §3.4), float arithmetic as in C++: nearest integer, halves up, in
-// [1, top]. Only the drawing frame uses it (the side lengths `ctess pattern --format svg` draws uniform with).
+// [1, top]. It shapes the drawing frame (the side lengths `ctess pattern --format svg` draws uniform with) and
+// picks the source: integer factors within the table's N run on the GPU, larger ones are split by the CLI.
 const uniformFactor = (f, top) => (!(f >= 1.5) ? 1 : !(f < top - 0.5) ? top : Math.floor(Math.fround(f + 0.5)));
 
+// A pattern with the source that drew it: 'wgsl' (the generated WGSL on WebGPU) or 'api' (ctess serve).
 async function computePattern(mode, factors, max) {
     if (mode === 'cp') {
         const p = await (await pipelineFor(max)).pattern(factors);
-        return { one: 1 << 24, uv: p.uv, indices: p.indices, vertices: p.vertexCount, triangles: p.triangleCount, sides: null };
+        return { one: 1 << 24, uv: p.uv, indices: p.indices, vertices: p.vertexCount, triangles: p.triangleCount, sides: null, source: 'wgsl' };
+    }
+    if (mode === 'uniform') {
+        // The pipeline clamps at the table's N and does not split (docs/shaders.md); above N the CLI splits.
+        const pipeline = await pipelineFor(max);
+        const n = (await pipeline.uniformTables()).maxFactor;
+        const sides = factors.map((f) => uniformFactor(f, n * n));
+        if (sides.every((s) => s <= n)) {
+            const p = await pipeline.pattern(factors, 'uniform');
+            return { one: 1 << 24, uv: p.uv, indices: p.indices, vertices: p.vertexCount, triangles: p.triangleCount, sides, source: 'wgsl' };
+        }
     }
     const json = await apiPattern(mode, factors);
     // Uniform factors go up to N² (split above the table's N, docs/algorithm.md §3.5); fixed_one is then 65534²,
@@ -81,7 +94,8 @@ async function computePattern(mode, factors, max) {
     return {
         one: json.fixed_one, uv: Uint32Array.from(json.vertices.flat()), indices: Uint32Array.from(json.triangles.flat()),
         vertices: json.vertex_count, triangles: json.triangle_count,
-        sides: mode === 'uniform' ? factors.map((f) => uniformFactor(f, top)) : null,
+        sides: mode === 'uniform' ? factors.map((f) => uniformFactor(f, top)) : null, source: 'api',
+        splitAbove: mode === 'uniform' ? json.max_tess_factor : null, // the table's N
     };
 }
 
@@ -207,6 +221,8 @@ function drawPattern(p, trail) {
     return zero;
 }
 
+const SOURCE_NAMES = { wgsl: 'the generated WGSL on WebGPU', api: 'ctess serve (/api/pattern)' };
+
 // ---- redraw loop: the latest state wins; window.ctessViewer is set after every redraw ----
 let busy = false, pending = false;
 async function redraw() {
@@ -219,7 +235,8 @@ async function redraw() {
             if (state.view === 'pattern') await redrawPattern();
             else {
                 const m = await meshView.redraw(state.max);
-                setStatus(`mesh · ${m.surface} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
+                const pattern = m.mode === 'uniform' ? `uniform density, factors clamped to [1, ${m.uniformMax}]` : 'CP';
+                setStatus(`mesh · ${pattern} · ${m.surface} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
             }
         } while (pending);
     } catch (e) {
@@ -254,15 +271,16 @@ async function redrawPattern() {
     $('count-triangles').textContent = p.triangles;
     $('count-zero').textContent = zero;
     $('count-ratio').textContent = ratio === null ? 'n/a (needs ctess serve)' : `${ratio.toFixed(3)}×`;
+    $('count-source').textContent = { wgsl: 'WGSL on WebGPU', api: 'ctess serve' }[p.source];
     window.ctessViewer = {
-        view: 'pattern', mode, domain, factors, max, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
+        view: 'pattern', mode, domain, factors, max, source: p.source, vertices: p.vertices, triangles: p.triangles, zeroArea: zero,
         ratioToD3d11Even: ratio, ms, sides: p.sides, trail: state.trail,
         corners: (domain === 'quad' ? [[0, 0], [1, 0], [1, 1], [0, 1]] : [[0, 0], [1, 0], [0, 1]]).map(([u, v]) => [toX(u, v), toY(v)]),
         readback: { one: p.one, uv: Array.from(p.uv), indices: Array.from(p.indices) },
     };
     setStatus(`${mode} · ${domain} · factors ${factorText(factors)}` +
               (p.sides ? ` · integer factors ${p.sides.join(',')} (pops at each step)` : ` · max ${max}`) +
-              (mode === 'cp' ? ' · computed by the generated WGSL on WebGPU' : ' · computed by ctess serve'));
+              (p.splitAbove ? ` · split above N = ${p.splitAbove}` : '') + ` · computed by ${SOURCE_NAMES[p.source]}`);
 }
 
 // ---- controls ----
@@ -281,7 +299,10 @@ function showFactors() {
 }
 function syncUrl() {
     const q = new URLSearchParams({ view: state.view, mode: state.mode, domain: state.domain, factors: factorText(state.factors), max: state.max });
-    if (state.view === 'mesh') q.set('mesh', $('mesh-kind').value);
+    if (state.view === 'mesh') {
+        q.set('mesh', $('mesh-kind').value);
+        q.set('pattern', $('mesh-pattern').value);
+    }
     history.replaceState(null, '', `?${q}`);
 }
 function changed() {
@@ -359,13 +380,15 @@ $('play').addEventListener('click', () => {
 });
 
 const meshView = new MeshView($('mesh-canvas'), {
-    kind: $('mesh-kind'), surface: $('surface'), dice: $('dice'), diceValue: $('dice-value'),
+    kind: $('mesh-kind'), pattern: $('mesh-pattern'), surface: $('surface'), dice: $('dice'), diceValue: $('dice-value'),
     vertices: $('mesh-vertices'), triangles: $('mesh-triangles'),
 }, () => pipelineFor(state.max), redraw);
 
 // ---- start ----
 if (MESH_NAMES.includes(query.get('mesh'))) $('mesh-kind').value = query.get('mesh');
+if (['cp', 'uniform'].includes(query.get('pattern'))) $('mesh-pattern').value = query.get('pattern');
 $('mesh-kind').addEventListener('change', syncUrl);
+$('mesh-pattern').addEventListener('change', syncUrl);
 if (state.domain === 'quad') {
     $('sweep-from').value = '1,1,1,1';
     $('sweep-to').value = '8,8,8,8';

@@ -54,7 +54,8 @@ LIST
 if [ -x /usr/bin/chromium ] || [ -n "${CTESS_CHROMIUM:-}" ]; then
   node "$here/snapshot.mjs" viewer "$ctess" viewer_pattern.png '?mode=cp&factors=16,8,4'
   node "$here/snapshot.mjs" viewer "$ctess" viewer_mesh.png '?view=mesh&mesh=torus'
+  node "$here/snapshot.mjs" viewer "$ctess" viewer_uniform_mesh.png '?view=mesh&mesh=torus&pattern=uniform'
 else
-  echo "chromium not found: viewer_pattern.png and viewer_mesh.png not regenerated"
+  echo "chromium not found: viewer_pattern.png, viewer_mesh.png and viewer_uniform_mesh.png not regenerated"
 fi
 echo "figures written to $here"

@@ -1,10 +1,12 @@
 // Loads viewer/ from `ctess serve` in headless chromium (WebGPU on SwiftShader, --enable-unsafe-webgpu) and
 // checks, against `ctess pattern --format json` (the CPU), bit for bit: the counts in window.ctessViewer and
 // the read-back vertices (u, v) and triangles, for CP (generated WGSL, max 64 and 256), the D3D11 modes and
-// uniform density (D3D11 and uniform through /api/pattern). Also: the URL sets the state, a slider changes the
-// counts, a uniform sweep visits only the CLI's patterns, the canvases are not blank, the mesh view's
-// triangle count follows the DiceRate, bad /api/pattern input gets a 400, a busy port is an error, and without
-// WebGPU the page says so.
+// uniform density (D3D11 and split uniform patterns through /api/pattern; uniform patterns within the table's N
+// from the generated WGSL, max 64 and 256, in 2^-24 units: each point the nearest to the CLI's, the triangles the
+// CLI's with their winding). Also: the URL sets the state, a slider changes the counts, a uniform sweep visits
+// only the CLI's patterns, the canvases are not blank, the mesh view's triangle count follows the DiceRate and
+// its read-back is closed (CP and uniform; uniform patch by patch against the CLI), bad /api/pattern input gets a
+// 400, a busy port is an error, and without WebGPU the page says so.
 //   node tests/viewer/test_viewer.mjs path/to/ctess        exit 0 pass, 1 fail, 77 skipped (no chromium)
 import { spawn, execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
@@ -53,9 +55,74 @@ check(exitOf(['serve', '--port', '70000']) === 2, 'serve --port 70000 must exit 
 const cli = (mode, factors, max) => JSON.parse(execFileSync(ctess, ['pattern', '--mode', mode, '--factors',
     factors.join(','), '--domain', factors.length === 4 ? 'quad' : 'tri', ...(mode === 'cp' ? ['--max', String(max)] : []), '--format', 'json'], { encoding: 'utf8', maxBuffer: 1 << 28 }));
 
+// Uniform patterns within the table's N come from the generated WGSL (2^-24 units), split ones from
+// /api/pattern (the CLI's JSON, bit for bit): the CLI's fixed_one says which (65534 unsplit, 65534² split).
+const UNIFORM_ONE = 65534, PIPELINE_ONE = 1 << 24;
+// The pipeline's weight for the CLI's w / 65534: the nearest multiple of 2^-24 (docs/shaders.md), exact in BigInt.
+// Never a tie: 2^24·w is even, so its remainder by 65534 is never 32767.
+function pipelineUnits(w) {
+    const scaled = BigInt(w) * BigInt(PIPELINE_ONE), q = scaled / BigInt(UNIFORM_ONE), r = scaled % BigInt(UNIFORM_ONE);
+    return Number(2n * r > BigInt(UNIFORM_ONE) ? q + 1n : q);
+}
+// A uniform pattern read back from the GPU (uv in 2^-24, indices from 0) against the CLI's JSON: every GPU
+// vertex is the nearest 2^-24 point of exactly one CLI vertex (|2(g·65534 − w·2^24)| < 65534, cross-multiplied in
+// BigInt), one to one; the triangles, as position triples, are the CLI's with the same winding (each rotated to
+// start at its smallest vertex index in the CLI's numbering). Returns an error message or null; sameOrder says
+// whether the vertex and triangle order are the CLI's too.
+function uniformMismatch(uv, indices, ref) {
+    if (uv.length !== 2 * ref.vertex_count || indices.length !== 3 * ref.triangle_count)
+        return `${uv.length / 2} vertices, ${indices.length / 3} triangles; CLI ${ref.vertex_count}, ${ref.triangle_count}`;
+    const cliAt = new Map();
+    ref.vertices.forEach(([u, v], i) => cliAt.set(`${pipelineUnits(u)},${pipelineUnits(v)}`, i));
+    if (cliAt.size !== ref.vertex_count) return 'two CLI vertices round to one 2^-24 point';
+    const toCli = [];
+    for (let i = 0; i < uv.length / 2; i++) {
+        const c = cliAt.get(`${uv[2 * i]},${uv[2 * i + 1]}`);
+        if (c === undefined) return `GPU vertex ${i} (${uv[2 * i]}, ${uv[2 * i + 1]}) is no CLI vertex`;
+        for (let k = 0; k < 2; k++) {
+            const gap = 2n * (BigInt(uv[2 * i + k]) * BigInt(UNIFORM_ONE) - BigInt(ref.vertices[c][k]) * BigInt(PIPELINE_ONE));
+            if (gap >= BigInt(UNIFORM_ONE) || -gap >= BigInt(UNIFORM_ONE)) return `GPU vertex ${i}: not the nearest 2^-24 point`;
+        }
+        toCli.push(c);
+    }
+    if (new Set(toCli).size !== toCli.length) return 'two GPU vertices at one CLI vertex';
+    const rotated = (t) => {
+        const k = t.indexOf(Math.min(...t));
+        return `${t[k]},${t[(k + 1) % 3]},${t[(k + 2) % 3]}`;
+    };
+    const expected = new Map();
+    for (const t of ref.triangles) expected.set(rotated(t), (expected.get(rotated(t)) ?? 0) + 1);
+    for (let t = 0; t < indices.length; t += 3) {
+        const key = rotated([toCli[indices[t]], toCli[indices[t + 1]], toCli[indices[t + 2]]]);
+        if (!expected.get(key)) return `GPU triangle ${t / 3} (CLI vertices ${key}) is not the CLI's (or not with its winding)`;
+        expected.set(key, expected.get(key) - 1);
+    }
+    return null;
+}
+const sameOrder = (uv, indices, ref) => ref.vertices.every(([u, v], i) => uv[2 * i] === pipelineUnits(u) && uv[2 * i + 1] === pipelineUnits(v)) &&
+                                        ref.triangles.flat().every((x, i) => indices[i] === x);
+let uniformFromWgsl = 0, uniformSameOrder = 0;
+
 function sameAsCli(state, mode, factors, max) {
     const ref = cli(mode, factors, max);
     const what = `${mode} ${factors.join(',')} max ${max}`;
+    if (mode === 'uniform') {
+        const split = ref.fixed_one !== UNIFORM_ONE;
+        if (!check(state.source === (split ? 'api' : 'wgsl'), `${what}: drawn by ${state.source}, CLI fixed_one ${ref.fixed_one}`)) return null;
+        if (!split) {
+            let ok = check(state.mode === mode && state.max === max && state.factors.every((f, k) => f === Math.fround(factors[k])),
+                           `${what}: state says ${state.mode} max ${state.max} factors ${state.factors}`);
+            ok &&= check(state.readback.one === PIPELINE_ONE && state.zeroArea === ref.degenerate_triangle_count &&
+                         state.vertices === ref.vertex_count && state.triangles === ref.triangle_count,
+                         `${what}: one ${state.readback.one}, counts ${state.vertices}/${state.triangles}/${state.zeroArea}, ` +
+                         `CLI ${ref.vertex_count}/${ref.triangle_count}/${ref.degenerate_triangle_count}`);
+            const wrong = ok && uniformMismatch(state.readback.uv, state.readback.indices, ref);
+            ok &&= check(!wrong, `${what} from WGSL: ${wrong}`);
+            uniformFromWgsl += ok;
+            uniformSameOrder += ok && sameOrder(state.readback.uv, state.readback.indices, ref);
+            return ok ? ref : null;
+        }
+    }
     let ok = check(state.mode === mode && state.max === max, `${what}: state says ${state.mode} max ${state.max}`);
     ok &&= check(state.factors.every((f, k) => f === Math.fround(factors[k])), `${what}: factors ${state.factors}`);
     ok &&= check(state.vertices === ref.vertex_count && state.triangles === ref.triangle_count,
@@ -102,6 +169,9 @@ async function typeFactors(factors) {
     await page.dispatchEvent('#factors', 'change');
 }
 
+// The uniform table's N, as the CLI reports it (16 by default, 11 with CTESS_UNIFORM_MAX_FACTOR=11).
+const UNIFORM_N = cli('uniform', [1, 1, 1]).max_tess_factor;
+
 // ---- CP and D3D11 patterns: the first from the URL, then through the mode and max selectors and the
 // exact-factors field, on one page (each page load compiles the WGSL again: about 7 s on SwiftShader) ----
 const cases = [
@@ -114,9 +184,13 @@ const cases = [
     ['cp', 256, [[10.3, 6, 3], [256, 256, 256], [150.5, 3, 40.25], [1, 256, 17.25], [70, 70.5, 71]]],
     ['cp', 64, [[12, 5, 12, 30], [8, 8, 8, 8], [1, 1, 1, 1], [2.5, 40, 1.5, 6.25]]], // quads
     ['d3d11-even', 64, [[12, 5, 12, 30]]],
-    // uniform density: in order, out of order, rounded (11, 6, 3), non-Euclidean, clamped to 1, split above the
-    // table's N (16 or 11; fixed_one 65534²), split and clamped to N² (256 for N = 16)
-    ['uniform', 64, [[11, 9, 6], [3, 11, 7], [10.5, 6.49, 2.5], [11, 4, 2], [0.3, 1, 1], [40, 30, 20], [300, 2, 299]]],
+    // uniform density: in order, out of order and its rotations, rounded (11, 6, 3; 3, 3, 7), non-Euclidean, clamped to
+    // 1, (N, N, N), just under and at N + 0.5, split above the table's N (16 or 11; fixed_one 65534²), split and
+    // clamped to N² (256 for N = 16); within N from the generated WGSL (max 64 and 256 modules), above it from the API
+    ['uniform', 64, [[11, 9, 6], [1, 1, 1], [3, 11, 7], [7, 3, 11], [11, 7, 3], [10.5, 6.49, 2.5], [2.5, 3.49, 7],
+                     [11, 4, 2], [0.3, 1, 1], [UNIFORM_N, UNIFORM_N, UNIFORM_N], [UNIFORM_N + 0.49, 2, 3], [UNIFORM_N + 0.5, 2, 3],
+                     [40, 30, 20], [300, 2, 299]]],
+    ['uniform', 256, [[1, 1, 1], [11, 9, 6], [9, 6, 11], [UNIFORM_N, UNIFORM_N, UNIFORM_N], [3.49, 2.5, UNIFORM_N - 0.5], [20, 5, 5]]],
 ];
 let compared = 0;
 await page.goto(`${base}?mode=cp&max=64&factors=10.3,6,3`);
@@ -141,6 +215,7 @@ let state;
 // ---- uniform density (docs/algorithm.md §3): integer factors, drawn with them as side lengths ----
 const uniformStart = Date.now();
 await page.selectOption('#mode', 'uniform');
+await page.selectOption('#max', '64');
 check(await page.$eval('#domain-quad', (o) => o.disabled), 'uniform: the quad domain must be disabled');
 const corners = (s) => s.corners.map((c, k) => Math.hypot(c[0] - s.corners[(k + 1) % 3][0], c[1] - s.corners[(k + 1) % 3][1]));
 const sameRatios = (lengths, sides) => lengths.every((l, k) => Math.abs(l / lengths[0] - sides[k] / sides[0]) < 1e-9);
@@ -160,7 +235,7 @@ state = await viewerState(factorsMatch, { mode: 'uniform', factors: [11, 4, 2], 
 check(sameRatios(corners(state), [1, 1, 1]), `uniform 11,4,2 (non-Euclidean) drawn with sides ${corners(state)}`);
 await typeFactors([40, 30, 20]);
 state = await viewerState(factorsMatch, { mode: 'uniform', factors: [40, 30, 20], max: 64 });
-check(state.readback.one === 65534 ** 2, `uniform 40,30,20 (split): fixed one ${state.readback.one}`);
+check(state.readback.one === 65534 ** 2 && state.source === 'api', `uniform 40,30,20 (split): fixed one ${state.readback.one}, from ${state.source}`);
 check(state.ratioToD3d11Even === state.triangles / cli('d3d11-even', [40, 30, 20]).triangle_count, `uniform ratio ${state.ratioToD3d11Even}`);
 // the e0 slider: 11 -> 11.3 rounds to the same pattern, 14 gives the CLI's 14, 9, 6
 await typeFactors([11, 9, 6]);
@@ -173,21 +248,23 @@ await page.locator('#f0').fill('14');
 state = await viewerState(factorsMatch, { mode: 'uniform', factors: [14, 9, 6], max: 64 });
 check(state.triangles !== at11.triangles, `uniform slider 11 -> 14: still ${state.triangles} triangles`);
 sameAsCli(state, 'uniform', [14, 9, 6], 64) && compared++;
-// a sweep 11,9,6 -> 12,9,6 pops: the positions it has drawn are exactly those of the CLI's two patterns
-await page.fill('#sweep-from', '11,9,6');
-await page.fill('#sweep-to', '12,9,6');
+// a sweep 10,9,6 -> 11,9,6 pops: the positions it has drawn are exactly those of the CLI's two patterns (drawn
+// from the WGSL's 2^-24 units: each the nearest such point to the CLI's; both within N = 11 or 16)
+await page.fill('#sweep-from', '10,9,6');
+await page.fill('#sweep-to', '11,9,6');
 await page.click('#play');
-state = await viewerState(() => window.ctessViewer?.trail && window.ctessViewer.factors[0] >= 11.5);
+state = await viewerState(() => window.ctessViewer?.trail && window.ctessViewer.factors[0] >= 10.5);
 await page.click('#play');
 const expected = new Set(), drawn = new Set(state.trail.map(([u, v]) => `${u},${v}`));
-for (const f of [[11, 9, 6], [12, 9, 6]]) {
+for (const f of [[10, 9, 6], [11, 9, 6]]) {
     const ref = cli('uniform', f);
-    for (const [u, v] of ref.vertices) expected.add(`${u / ref.fixed_one},${v / ref.fixed_one}`);
+    for (const [u, v] of ref.vertices) expected.add(`${pipelineUnits(u) / PIPELINE_ONE},${pipelineUnits(v) / PIPELINE_ONE}`);
 }
 check(drawn.size === expected.size && [...drawn].every((p) => expected.has(p)),
-      `uniform sweep: ${drawn.size} positions drawn, ${expected.size} in the CLI's 11,9,6 and 12,9,6`);
-console.log(`uniform sweep 11,9,6 -> 12,9,6: ${state.trail.length} points drawn at ${drawn.size} positions; ` +
-            `uniform checks after the 7 sets: ${((Date.now() - uniformStart) / 1000).toFixed(1)} s`);
+      `uniform sweep: ${drawn.size} positions drawn, ${expected.size} in the CLI's 10,9,6 and 11,9,6`);
+console.log(`uniform sweep 10,9,6 -> 11,9,6: ${state.trail.length} points drawn at ${drawn.size} positions; ` +
+            `uniform checks after the sets: ${((Date.now() - uniformStart) / 1000).toFixed(1)} s; ${uniformFromWgsl} uniform ` +
+            `patterns from WGSL equal the CLI's (${uniformSameOrder} in the CLI's vertex and triangle order too)`);
 
 // ---- the ratio to D3D11 fractional_even on the same edges ----
 await page.selectOption('#mode', 'cp');
@@ -309,6 +386,74 @@ console.log(`mesh welded: icosahedron ${weldIco.points} points, ${weldIco.edges}
             `${torusCoarse.triangles} -> ${torusFine.triangles} triangles (DiceRate 24 -> 6), ${weldFine.points} points, ` +
             `${weldFine.edges} edges, ${weldFine.faces} faces at 6; canvas ${(100 * stats.ink).toFixed(1)}% ink, ` +
             `${stats.colours} colours; ${((Date.now() - meshStart) / 1000).toFixed(1)} s`);
+
+// ---- the mesh view with the uniform pattern (params word 10 = 1, the uniform blob) ----
+// No CPU mesh pipeline is reachable from here (the CLI has no mesh command), so each patch stands in for it: its
+// integer factors are rt::uniform_factor of the factor bits the setup pass computed (nearest, halves up,
+// clamped to [1, N]: mirrored below in float arithmetic), and its counts, (u, v) and triangles are the CLI's
+// pattern for those factors (uniformMismatch); the totals are the sums. Then the surface is closed, as for CP.
+const uniformFactorRef = (f, n) => (!(f >= 1.5) ? 1 : !(f < n - 0.5) ? n : Math.floor(Math.fround(f + 0.5)));
+const cliUniform = new Map(); // 'a,b,c' -> the CLI's JSON
+async function uniformMeshAgainstCli(state) {
+    const { records, uv, indices } = await page.evaluate(() => {
+        const { vertices, indices, records } = window.ctessViewer.readback;
+        const pairs = [];
+        for (let i = 0; i < vertices.length; i += 10) pairs.push(vertices[i], vertices[i + 1]);
+        return { records: Array.from(records), uv: pairs, indices: Array.from(indices) };
+    });
+    const factor = new Float32Array(new Uint32Array(records).buffer);
+    const wanted = [];
+    let clamped = 0, vertices = 0, triangles = 0;
+    for (let t = 0; t < state.patches; t++) {
+        const rec = t * 48, f = [0, 1, 2].map((k) => uniformFactorRef(factor[rec + 11 + k], UNIFORM_N));
+        clamped += [0, 1, 2].filter((k) => factor[rec + 11 + k] >= UNIFORM_N + 0.5).length;
+        if (!check(f.every((x, k) => records[rec + 1 + k] === x), `uniform mesh patch ${t}: integer factors ${records.slice(rec + 1, rec + 4)}, expected ${f}`)) return null;
+        wanted.push(f.join(','));
+    }
+    for (const key of wanted) if (!cliUniform.has(key)) cliUniform.set(key, cli('uniform', key.split(',').map(Number)));
+    for (let t = 0; t < state.patches; t++) {
+        const rec = t * 48, ref = cliUniform.get(wanted[t]);
+        const [count, tcount, first, tfirst] = [records[rec + 7], records[rec + 8], records[rec + 9], records[rec + 10]];
+        const wrong = count !== ref.vertex_count || tcount !== ref.triangle_count ? `counts ${count}/${tcount}` :
+            uniformMismatch(uv.slice(2 * first, 2 * (first + count)), indices.slice(3 * tfirst, 3 * (tfirst + tcount)).map((i) => i - first), ref);
+        if (!check(!wrong, `uniform mesh patch ${t} (factors ${wanted[t]}): ${wrong}`)) return null;
+        vertices += count;
+        triangles += tcount;
+    }
+    check(vertices === state.vertices && triangles === state.triangles,
+          `uniform mesh: ${state.vertices}/${state.triangles}, the patches' CLI patterns sum to ${vertices}/${triangles}`);
+    return { clamped, distinct: new Set(wanted).size };
+}
+const uniformMeshStart = Date.now();
+await page.selectOption('#mesh-pattern', 'uniform');
+const torusUniform = await viewerState(() => window.ctessViewer?.mode === 'uniform' && window.ctessViewer.mesh === 'torus');
+check(torusUniform.uniformMax === UNIFORM_N && page.url().includes('pattern=uniform'), `uniform mesh: N ${torusUniform.uniformMax}, URL ${page.url()}`);
+const weldUniform = await weldCheck();
+check(weldUniform.unpaired === 0 && weldUniform.euler === 0 && weldUniform.faces === torusUniform.triangles,
+      `uniform torus (flat, DiceRate 24): ${torusUniform.triangles} triangles, ${JSON.stringify(weldUniform)}`);
+const torusUniformCli = await uniformMeshAgainstCli(torusUniform);
+// DiceRate 6, PN: factors above N are clamped (the pipeline does not split)
+await page.selectOption('#surface', '1');
+await page.locator('#dice').fill('6');
+const torusUniformFine = await viewerState(() => window.ctessViewer?.mode === 'uniform' && window.ctessViewer.diceRate === 6 && window.ctessViewer.surface === 'pn');
+const weldUniformFine = await weldCheck();
+check(weldUniformFine.unpaired === 0 && weldUniformFine.euler === 0 && weldUniformFine.faces === torusUniformFine.triangles,
+      `uniform torus (PN, DiceRate 6): ${JSON.stringify(weldUniformFine)}`);
+const torusUniformFineCli = await uniformMeshAgainstCli(torusUniformFine);
+check(torusUniformFineCli?.clamped > 0, `uniform torus at DiceRate 6: no factor above N = ${UNIFORM_N} (nothing clamped)`);
+// the icosphere (80 triangles), PN at DiceRate 6: a closed sphere, V - E + F = 2
+await page.selectOption('#mesh-kind', 'ico1');
+const icoUniform = await viewerState(() => window.ctessViewer?.mode === 'uniform' && window.ctessViewer.mesh === 'ico1');
+const weldIcoUniform = await weldCheck();
+check(weldIcoUniform.unpaired === 0 && weldIcoUniform.euler === 2 && weldIcoUniform.faces === icoUniform.triangles,
+      `uniform icosphere (PN, DiceRate 6): ${JSON.stringify(weldIcoUniform)}`);
+const icoUniformCli = await uniformMeshAgainstCli(icoUniform);
+stats = await pixelStats('#mesh-canvas');
+check(stats.ink > 0.1 && stats.colours > 50, `uniform icosphere canvas looks blank: ${JSON.stringify(stats)}`);
+console.log(`uniform mesh: torus ${torusUniform.triangles} triangles at DiceRate 24 (CP ${torusCoarse.triangles}), ` +
+            `${torusUniformFine.triangles} at 6 (CP ${torusFine.triangles}; ${torusUniformFineCli?.clamped} patch edges clamped to ${UNIFORM_N}); ` +
+            `icosphere ${icoUniform.triangles} at 6; distinct patterns ${torusUniformCli?.distinct} / ${torusUniformFineCli?.distinct} / ` +
+            `${icoUniformCli?.distinct}; ${((Date.now() - uniformMeshStart) / 1000).toFixed(1)} s`);
 // ---- the URL sets a D3D11 state too ----
 await page.goto(`${base}?mode=d3d11-odd&factors=2.5,3.7,5.1`);
 state = await viewerState(factorsMatch, { mode: 'd3d11-odd', factors: [2.5, 3.7, 5.1], max: 64 });
