@@ -10,9 +10,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <utility>
 #include <vector>
 
 #include "support/cli_run.hpp"
@@ -416,6 +418,27 @@ TEST_CASE("cli: pattern --mode uniform above the table splits (units 65534^2, we
     CHECK(json_number(shared.out, "degenerate_triangle_count") == 0);
     CHECK(json_number(shared.out, "triangle_count") == json_number(separate.out, "triangle_count"));
     CHECK(json_number(shared.out, "vertex_count") < json_number(separate.out, "vertex_count"));
+}
+
+TEST_CASE("cli: pattern --mode uniform above the table, shared = the provoking triangles welded by position",
+          "[cli][uniform]") {
+    // The library welds (docs/algorithm.md §3.5): each position once, the same triangles as position pairs.
+    const Run shared = ctess_cli("pattern --mode uniform --factors 40,30,25 --format json");
+    const Run separate = ctess_cli("pattern --mode uniform --factors 40,30,25 --format json --layout provoking");
+    REQUIRE(shared.exit_code == 0);
+    REQUIRE(separate.exit_code == 0);
+    const std::vector<std::uint32_t> sv = json_vertices(shared.out), pv = json_vertices(separate.out);
+    const std::vector<std::uint32_t> st = json_triangles(shared.out), pt = json_triangles(separate.out);
+    using Position = std::pair<std::uint32_t, std::uint32_t>;
+    std::set<Position> shared_positions, provoking_positions;
+    for (std::size_t i = 0; i < sv.size(); i += 2) shared_positions.insert({sv[i], sv[i + 1]});
+    for (std::size_t i = 0; i < pv.size(); i += 2) provoking_positions.insert({pv[i], pv[i + 1]});
+    CHECK(shared_positions.size() == sv.size() / 2);
+    CHECK(shared_positions == provoking_positions);
+    CHECK(json_number(shared.out, "vertex_count") == 364); // = 1 + (T + B) / 2 with T = 631, B = 95
+    REQUIRE(st.size() == pt.size());
+    for (std::size_t k = 0; k < st.size(); ++k)
+        REQUIRE(Position{sv[2 * st[k]], sv[2 * st[k] + 1]} == Position{pv[2 * pt[k]], pv[2 * pt[k] + 1]});
 }
 
 TEST_CASE("cli: pattern --mode uniform bad input is a usage error", "[cli][uniform][bad_input]") {

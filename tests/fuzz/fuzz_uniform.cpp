@@ -4,7 +4,10 @@
 // range; every point lies in the domain; every triangle has the requested orientation and a non-zero area,
 // and together they cover the domain exactly (integer areas); edge k carries uniform_factor(f_k) segments;
 // out-of-range queries give zeros; a short span writes nothing. UniformSplit (any factor, up to N^2): bounded
-// depth, indices in range, points in the domain, exact coverage in units of 65534^2.
+// depth, indices in range, points in the domain, exact coverage in units of 65534^2; in the shared layout
+// (welded, docs/algorithm.md §3.5) no position twice, V = 1 + (T + B) / 2 and the same triangles (position
+// triples, in order) as the provoking layout, whose positions are exactly the shared ones; a short span
+// writes nothing.
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -41,6 +44,37 @@ void check_mesh(const std::vector<DomainPoint>& v, const std::vector<std::uint32
     CTESS_FUZZ_CHECK(total == (winding == Winding::ccw ? full : -full));
 }
 
+// The shared layout of a split patch against the provoking layout of the same factors, welded here.
+void check_split_weld(const rt::UniformSplit& split, const std::vector<DomainPoint>& v,
+                      const std::vector<std::uint32_t>& idx, const rt::UniformTableSet& tables,
+                      const float* f, Winding winding) {
+    using Position = std::pair<std::uint32_t, std::uint32_t>;
+    const std::uint64_t one = rt::uniform_split_fixed_one;
+    std::set<Position> positions;
+    std::uint64_t boundary = 0;
+    for (const DomainPoint& p : v) {
+        CTESS_FUZZ_CHECK(positions.insert({p.u, p.v}).second);
+        boundary += p.u == 0 || p.v == 0 || std::uint64_t{p.u} + p.v == one;
+    }
+    CTESS_FUZZ_CHECK(split.counts().vertices == 1 + (split.counts().triangles + boundary) / 2);
+    const rt::UniformSplit provoking(tables, f[0], f[1], f[2], PatchOptions{Layout::provoking, winding});
+    std::vector<DomainPoint> pv(provoking.counts().vertices);
+    std::vector<std::uint32_t> pi(provoking.counts().index_count());
+    CTESS_FUZZ_CHECK(provoking.emit(pv, pi) && pi.size() == idx.size());
+    std::set<Position> welded;
+    for (std::size_t k = 0; k < pi.size(); ++k) {
+        const DomainPoint a = pv[pi[k]], b = v[idx[k]];
+        CTESS_FUZZ_CHECK(a == b);
+        welded.insert({a.u, a.v});
+    }
+    CTESS_FUZZ_CHECK(welded == positions);
+    std::vector<DomainPoint> short_v(v.size() - 1, DomainPoint{7, 7});
+    std::vector<std::uint32_t> short_i(idx.size(), 7u);
+    CTESS_FUZZ_CHECK(!split.emit(short_v, short_i));
+    for (const DomainPoint& p : short_v) CTESS_FUZZ_CHECK(p == (DomainPoint{7, 7}));
+    for (const std::uint32_t i : short_i) CTESS_FUZZ_CHECK(i == 7u);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -59,6 +93,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::vector<std::uint32_t> idx(n.index_count());
         CTESS_FUZZ_CHECK(split.emit(v, idx));
         check_mesh(v, idx, rt::uniform_split_fixed_one, options.winding);
+        if (options.layout == Layout::shared) check_split_weld(split, v, idx, tables, f, options.winding);
         return 0;
     }
 

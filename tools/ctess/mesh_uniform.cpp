@@ -6,30 +6,9 @@
 #include <ctess/runtime/uniform_patch.hpp>
 #include <ctess/runtime/uniform_split.hpp>
 
-#include <map>
-
 #include <fmt/core.h>
 
 namespace ctess::cli {
-
-namespace {
-
-// One vertex per exact position (the shared layout of a split patch).
-void weld_positions(Mesh& mesh) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> first;
-    std::vector<DomainPoint> kept;
-    std::vector<std::uint32_t> remap(mesh.vertices.size());
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const DomainPoint p = mesh.vertices[i];
-        const auto [it, inserted] = first.emplace(std::make_pair(p.u, p.v), std::uint32_t(kept.size()));
-        if (inserted) kept.push_back(p);
-        remap[i] = it->second;
-    }
-    for (std::uint32_t& i : mesh.indices) i = remap[i];
-    mesh.vertices = std::move(kept);
-}
-
-} // namespace
 
 Mesh tessellate_uniform(const PatternRequest& r) {
     if (r.domain != "tri") throw UsageError("--domain: the uniform mode tessellates the tri domain");
@@ -42,13 +21,12 @@ Mesh tessellate_uniform(const PatternRequest& r) {
     const bool above = r.factors[0] >= float(rt::uniform_tables.max_factor) + 0.5f ||
                        r.factors[1] >= float(rt::uniform_tables.max_factor) + 0.5f ||
                        r.factors[2] >= float(rt::uniform_tables.max_factor) + 0.5f;
-    if (above) { // split with the table's own patterns (§3.5); every subpatch's own vertices (and copies)
+    if (above) { // split with the table's own patterns (§3.5), welded in the shared layout
         const rt::UniformSplit split(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
         mesh.fixed_one = rt::uniform_split_fixed_one;
         mesh.vertices.resize(split.counts().vertices);
         mesh.indices.resize(split.counts().index_count());
         split.emit(mesh.vertices, mesh.indices);
-        if (!r.provoking_layout) weld_positions(mesh);
         return mesh;
     }
     const rt::UniformPatch patch(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
