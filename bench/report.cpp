@@ -588,8 +588,8 @@ int main(int argc, char** argv) {
             "rounded factor is at most {0}, `ctess::rt::UniformSplit` (§3.5) when one is above, so that "
             "every "
             "factor set is covered ({1} of the {2} sets below, and the plots above {0}.5, go through the "
-            "split). UniformSplit writes each subpatch's own vertices (positions shared bit for bit, not "
-            "welded): its vertex counts and cache figures are of that output as emitted. Lengths and angles "
+            "split). UniformSplit runs in its default provoking layout, which writes each subpatch's own "
+            "vertices (positions shared bit for bit; `Layout::shared` welds them, §3.5): its vertex counts and cache figures are of that output as emitted. Lengths and angles "
             "are measured in the domain's own metric: the equilateral triangle with unit edges (not the "
             "intrinsic metric that uniform density optimises).\n\n",
             un, split_sets, sets.size());
