@@ -155,7 +155,12 @@ TEST_CASE("uniform: longest intrinsic edge and triangle count against NVIDIA's t
         CHECK(mean <= 1.137);
         CHECK(longest <= 1.433);
         if (n == 11) CHECK(triangles <= 7400);
+        // The shipped table's own figures (README, docs/algorithm.md §3.1): a change to the data shows here.
+        CHECK(triangles == (n == 11 ? 7282u : 36848u));
+        CHECK(std::fabs(longest - (n == 11 ? 1.43233 : 1.43281)) < 5e-5);
+        CHECK(std::fabs(mean - (n == 11 ? 1.13689 : 1.13699)) < 5e-5);
     }
+    STATIC_REQUIRE(uf::tables::max_pattern_vertices(286) == 78); // N = 11: meshlet-sized (at most 78 vertices)
 }
 
 TEST_CASE("uniform: the storage tables hold the pattern data (interior words, 8-bit indices, offsets)",

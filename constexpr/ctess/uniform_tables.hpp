@@ -36,6 +36,17 @@ constexpr unsigned total_copies(unsigned n) {
     return total;
 }
 
+// The most vertices of any of the first n patterns (the packed indices are 8-bit).
+constexpr unsigned max_pattern_vertices(unsigned n) {
+    unsigned most = 0;
+    for (unsigned p = 0; p < n; ++p) {
+        const data::PatternRecord& r = data::patterns[p];
+        const unsigned vertices = r.f0 + r.f1 + r.f2 + r.interior;
+        most = vertices > most ? vertices : most;
+    }
+    return most;
+}
+
 // The copy rank of global triangle t: copies of the triangles before it.
 constexpr unsigned copies_before(const std::uint32_t* copy_words, unsigned t) {
     const std::uint32_t w = copy_words[t / copy_bits_per_word];
@@ -56,7 +67,7 @@ struct UniformTables {
     static constexpr unsigned triangles = pattern_offsets.triangle[patterns];
     static_assert(N >= 1 && N <= data_max_factor, "the pattern data stops at data_max_factor");
     static_assert(interior_words < 65536 && triangles < 65536, "offsets are 16-bit");
-    static_assert(3 * N + (N - 1) * (N - 2) / 2 < 256 || N > 16, "indices are 8-bit");
+    static_assert(max_pattern_vertices(patterns) <= 256, "indices are 8-bit: no pattern may pass 256 vertices");
     static constexpr unsigned copies = total_copies(patterns);
     static_assert(copies < 65536, "copy ranks are 16-bit");
 

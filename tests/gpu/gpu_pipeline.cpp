@@ -104,9 +104,8 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     return out;
 }
 
-// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 2, params[10] (the WGSL shaders are CP only, so the
-// pattern word is not sent; a uniform scene is refused), vertex floats, index count, then the
-// vertex floats and the indices. Result file: "CTGO", patch words, vertex words, index words, milliseconds
+// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[11] (the last one the pattern), vertex
+// floats, index count, then the vertex floats and the indices. Result file: "CTGO", patch words, vertex words, index words, milliseconds
 // (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
