@@ -160,7 +160,7 @@ TEST_CASE("uniform: longest intrinsic edge and triangle count against NVIDIA's t
         CHECK(std::fabs(longest - (n == 11 ? 1.43233 : 1.43281)) < 5e-5);
         CHECK(std::fabs(mean - (n == 11 ? 1.13689 : 1.13699)) < 5e-5);
     }
-    STATIC_REQUIRE(uf::tables::max_pattern_vertices(286) == 78); // N = 11: meshlet-sized (at most 78 vertices)
+    STATIC_REQUIRE(uf::tables::max_pattern_vertices(286) == 78); // N = 11: meshlet-sized
 }
 
 TEST_CASE("uniform: the storage tables hold the pattern data (interior words, 8-bit indices, offsets)",

@@ -67,7 +67,7 @@ struct UniformTables {
     static constexpr unsigned triangles = pattern_offsets.triangle[patterns];
     static_assert(N >= 1 && N <= data_max_factor, "the pattern data stops at data_max_factor");
     static_assert(interior_words < 65536 && triangles < 65536, "offsets are 16-bit");
-    static_assert(max_pattern_vertices(patterns) <= 256, "indices are 8-bit: no pattern may pass 256 vertices");
+    static_assert(max_pattern_vertices(patterns) <= 256, "indices are 8-bit: at most 256 vertices");
     static constexpr unsigned copies = total_copies(patterns);
     static_assert(copies < 65536, "copy ranks are 16-bit");
 
