@@ -164,8 +164,8 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
                 svg.circle(0.65 * px(a) + 0.35 * cx, 0.65 * py(a) + 0.35 * cy, 2.2, "fill=\"#e07b00\"");
             }
             // Legend at the bottom left, where the widest label still fits at any font's width.
-            svg.circle(kMargin - 34, kHeight - 17, 5, "fill=\"#e07b00\"");
-            svg.text(kMargin - 24, kHeight - 11, "provoking (first) vertex of each triangle",
+            svg.circle(kMargin - 34, kHeight - blank - 17, 5, "fill=\"#e07b00\"");
+            svg.text(kMargin - 24, kHeight - blank - 11, "provoking (first) vertex of each triangle",
                      "font-size=\"16\" fill=\"#445\"");
         }
     } else {
