@@ -462,3 +462,184 @@ TEST_CASE("cli: efficiency --family uniform totals the stored patterns", "[cli][
     CHECK(r.out.find("| a <= 11 | 286 | " + std::to_string(total) + " |") != std::string::npos);
     CHECK(r.out.find("binary longest-edge") != std::string::npos);
 }
+
+// --- uniform: factors, bad input, limits and options (docs/cli.md "Modes", "Errors and bad input") ---
+
+namespace {
+
+// The "uniform_factors" array of a uniform pattern's JSON.
+std::vector<long> json_uniform_factors(const std::string& json) {
+    const auto at = json.find("\"uniform_factors\": [");
+    REQUIRE(at != std::string::npos);
+    std::string body = json.substr(at + 20, json.find(']', at) - at - 20);
+    for (char& c : body)
+        if (c == ',') c = ' ';
+    std::vector<long> out;
+    std::istringstream in(body);
+    for (long x; in >> x;) out.push_back(x);
+    return out;
+}
+
+// Spec §3.2, written out independently: on an edge with f segments the smaller coordinate of point i is i / f
+// rounded half up in units of 65534, the larger is 65534 minus the other one.
+std::uint32_t spec_edge_parameter(std::uint32_t i, std::uint32_t f) {
+    const std::uint32_t small = std::min(i, f - i);
+    const std::uint32_t q = (2 * small * 65534 + f) / (2 * f);
+    return i <= f - i ? q : 65534 - q;
+}
+
+} // namespace
+
+TEST_CASE("cli: uniform factors are rounded to the nearest integer, halves up; above N the patch splits",
+          "[cli][uniform]") {
+    struct Case {
+        std::string factors;
+        std::vector<long> used; // one table pattern each
+    };
+    const Run n_run = ctess_cli("pattern --mode uniform --factors 1,1,1");
+    REQUIRE(n_run.exit_code == 0);
+    const long n = json_number(n_run.out, "max_tess_factor"); // the table's N
+    REQUIRE((n == 16 || n == 11));
+    const std::string below = std::to_string(n) + ".49", half = std::to_string(n) + ".5";
+    for (const Case& c : {Case{"10.6,9.4,6", {11, 9, 6}}, Case{"2.5,1.49,1.5", {3, 1, 2}},
+                          Case{"0.2,1e-30,1", {1, 1, 1}}, Case{below + ",3,3", {n, 3, 3}}}) {
+        INFO(c.factors);
+        const Run r = ctess_cli("pattern --mode uniform --format json --factors " + c.factors);
+        REQUIRE(r.exit_code == 0);
+        CHECK(json_uniform_factors(r.out) == c.used);
+        CHECK(json_number(r.out, "subpatch_count") == 1);
+        CHECK(json_number(r.out, "split_depth") == 0);
+        CHECK(json_number(r.out, "fixed_one") == 65534);
+    }
+    const Run split = ctess_cli("pattern --mode uniform --format json --factors " + half + ",3,3");
+    REQUIRE(split.exit_code == 0);
+    CHECK(json_uniform_factors(split.out) == std::vector<long>{n + 1, 3, 3});
+    CHECK(json_number(split.out, "subpatch_count") > 1);
+    CHECK(json_number(split.out, "split_depth") >= 1);
+    CHECK(json_number(split.out, "fixed_one") == 4294705156L); // 65534^2
+    CHECK(json_number(split.out, "max_tess_factor") == n);     // N, not the factor accepted
+}
+
+TEST_CASE("cli: uniform nan, inf, -inf, 0 and negative factors are exit 2 with no output",
+          "[cli][uniform][bad_input]") {
+    const std::string file = temp_path("uniform_bad.json");
+    for (const char* bad : {"inf", "-inf", "0", "-1", "nan", "-0"}) {
+        for (const std::string& factors : {std::string(bad) + ",3,3", "3,3," + std::string(bad)}) {
+            INFO(factors);
+            std::filesystem::remove(file);
+            const Run to_file = ctess_cli("pattern --mode uniform --factors " + factors + " --out " + file);
+            CHECK(to_file.exit_code == 2);
+            CHECK(to_file.out.find("finite and greater than 0") != std::string::npos);
+            CHECK_FALSE(std::filesystem::exists(file));
+            const Run to_stdout = ctess::test::run_shell(std::string(CTESS_CLI) +
+                                                         " pattern --mode uniform --format svg --factors " +
+                                                         factors + " 2>/dev/null");
+            CHECK(to_stdout.exit_code == 2);
+            CHECK(to_stdout.out.empty());
+        }
+    }
+}
+
+TEST_CASE("cli: huge uniform factors clamp to N^2 and split, with bounded output",
+          "[cli][uniform][bad_input]") {
+    const Run top = ctess_cli("pattern --mode uniform --format json --layout provoking --factors 1,1,1");
+    const long n = json_number(top.out, "max_tess_factor");
+    const std::string nn = std::to_string(n * n);
+    const Run reference = ctess_cli("pattern --mode uniform --format json --layout provoking --factors " +
+                                    nn + "," + nn + "," + nn);
+    REQUIRE(reference.exit_code == 0);
+    const auto body = [](const std::string& json) { return json.substr(json.find("\"max_tess_factor\"")); };
+    for (const char* huge : {"1e30", "3e38", "257", "3.4028235e38"}) {
+        INFO(huge);
+        const std::string h(huge);
+        const Run r = ctess_cli("pattern --mode uniform --format json --layout provoking --factors " + h +
+                                "," + h + "," + h);
+        REQUIRE(r.exit_code == 0);
+        CHECK(json_number(r.out, "fixed_one") == 4294705156L);
+        CHECK(json_uniform_factors(r.out) == std::vector<long>{n * n, n * n, n * n});
+        CHECK(json_number(r.out, "subpatch_count") > 1);
+        CHECK(body(r.out) == body(reference.out)); // the same patch as N^2 exactly
+        CHECK(r.out.size() < 4'000'000);           // 3.11 MB at N = 16 (docs/cli.md "Limits")
+        const Run one = ctess_cli("pattern --mode uniform --format json --factors " + h + ",3,3");
+        REQUIRE(one.exit_code == 0);
+        CHECK(json_uniform_factors(one.out) == std::vector<long>{n * n, 3, 3});
+        CHECK(json_number(one.out, "degenerate_triangle_count") == 0);
+    }
+    const Run svg =
+        ctess_cli("pattern --mode uniform --format svg --layout provoking --provoking --factors 3e38,"
+                  "3e38,3e38");
+    REQUIRE(svg.exit_code == 0);
+    CHECK(svg.out.size() < 20'000'000); // 16.6 MB at N = 16, the largest uniform output
+}
+
+TEST_CASE("cli: uniform 11,9,6 JSON vertices are the spec's boundary points and the pattern data",
+          "[cli][uniform]") {
+    const Run r = ctess_cli("pattern --mode uniform --factors 11,9,6 --format json");
+    REQUIRE(r.exit_code == 0);
+    const std::vector<std::uint32_t> v = json_vertices(r.out);
+    // Boundary, counter-clockwise from v0 (docs/algorithm.md §3.1): e0's points, v1, e1's points, v2, e2's.
+    std::vector<std::uint32_t> boundary = {0, 0};
+    for (std::uint32_t i = 1; i < 11; ++i) boundary.insert(boundary.end(), {spec_edge_parameter(i, 11), 0});
+    boundary.insert(boundary.end(), {65534, 0});
+    for (std::uint32_t i = 1; i < 9; ++i) {
+        const std::uint32_t p = spec_edge_parameter(i, 9);
+        boundary.insert(boundary.end(), {65534 - p, p});
+    }
+    boundary.insert(boundary.end(), {0, 65534});
+    for (std::uint32_t i = 1; i < 6; ++i) boundary.insert(boundary.end(), {0, spec_edge_parameter(6 - i, 6)});
+    REQUIRE(v.size() >= boundary.size());
+    CHECK(std::vector<std::uint32_t>(v.begin(), v.begin() + long(boundary.size())) == boundary);
+    // Every vertex, in order: the constexpr data's canonical numbering (the sorted triple needs no corner
+    // map).
+    const auto p = ctess::uniform::pattern(11, 9, 6);
+    std::vector<std::uint32_t> expected;
+    for (unsigned k = 0; k < p.vertex_count(); ++k)
+        expected.insert(expected.end(), {p.vertex(k).u, p.vertex(k).v});
+    CHECK(v == expected);
+    // 6,11,9: canonical v2 (opposite the largest) goes to output v0, v0 to v1, v1 to v2 (§3.4), so a
+    // canonical (u, v) with w = 65534 - u - v lands at (w, u).
+    const Run rotated = ctess_cli("pattern --mode uniform --factors 6,11,9 --format json");
+    REQUIRE(rotated.exit_code == 0);
+    const std::vector<std::uint32_t> rv = json_vertices(rotated.out);
+    using Position = std::pair<std::uint32_t, std::uint32_t>;
+    std::set<Position> got, mapped;
+    for (std::size_t i = 0; i + 1 < rv.size(); i += 2) got.insert({rv[i], rv[i + 1]});
+    for (unsigned k = 0; k < p.vertex_count(); ++k)
+        mapped.insert({65534 - p.vertex(k).u - p.vertex(k).v, p.vertex(k).u});
+    CHECK(got == mapped);
+    CHECK(json_uniform_factors(rotated.out) == std::vector<long>{6, 11, 9});
+}
+
+TEST_CASE("cli: options that do not apply to uniform are exit 2", "[cli][uniform][bad_input]") {
+    for (const char* args :
+         {"pattern --mode uniform --factors 3,3,3 --domain quad",
+          "pattern --mode uniform --factors 3,3,3 --domain iso",
+          "pattern --mode uniform --factors 3,3,3 --max 64",
+          "pattern --mode uniform --factors 3,3,3 --column-rule minimal",
+          "pattern --mode uniform --factors 3,3,3,3", "efficiency --family uniform --random 5",
+          "efficiency --family uniform --seed 1", "line --mode uniform --factor 3",
+          "sweep --mode uniform --from 1 --to 3 --svg /dev/null"}) {
+        INFO(args);
+        const Run r = ctess::test::run_shell(std::string(CTESS_CLI) + " " + args + " 2>/dev/null");
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.empty());
+    }
+    const Run help = ctess_cli("--help");
+    CHECK(help.out.find("d3d11-even, uniform") != std::string::npos);
+    const Run efficiency_help = ctess_cli("efficiency --help");
+    CHECK(efficiency_help.out.find("--family cp|uniform") != std::string::npos);
+}
+
+TEST_CASE("cli: a split uniform SVG names N and the subpatches", "[cli][uniform]") {
+    const Run r = ctess_cli("pattern --mode uniform --factors 40,30,20 --format svg");
+    REQUIRE(r.exit_code == 0);
+    const Run json = ctess_cli("pattern --mode uniform --factors 40,30,20 --format json");
+    const std::string label =
+        "uniform density, N = " + std::to_string(json_number(json.out, "max_tess_factor")) +
+        " · split into " + std::to_string(json_number(json.out, "subpatch_count")) + " subpatches, depth " +
+        std::to_string(json_number(json.out, "split_depth"));
+    CHECK(r.out.find(label) != std::string::npos);
+    CHECK(r.out.find("max factor") == std::string::npos);
+    const Run rounded = ctess_cli("pattern --mode uniform --factors 10.6,9.4,6 --format svg");
+    CHECK(rounded.out.find("used (11, 9, 6) · one table pattern") != std::string::npos);
+}

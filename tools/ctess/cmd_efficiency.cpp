@@ -1,4 +1,5 @@
-// ctess efficiency: the CP efficiency table against D3D11 fractional_even.
+// ctess efficiency: the CP efficiency table against D3D11 fractional_even, or (--family uniform) the
+// uniform-density table against D3D11 integer and CP.
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "efficiency.hpp"
@@ -14,6 +15,10 @@ int run_efficiency(int argc, char** argv) {
     const unsigned seed = parse_unsigned(args.get_or("seed", "2026"), "--seed", 0, 4294967295u);
     const std::string format = choice(args.get_or("format", "markdown"), {"markdown", "json"}, "--format");
     if (choice(args.get_or("family", "cp"), {"cp", "uniform"}, "--family") == "uniform") {
+        // every sorted triple of the table and a fixed split sample: no random rows to choose (docs/cli.md)
+        if (args.has("random") || args.has("seed"))
+            throw UsageError("--random and --seed apply to --family cp only (--family uniform reports every "
+                             "sorted triple of the table)");
         const auto rows = uniform_efficiency_rows(max);
         write_text(args.get_or("out", "-"),
                    format == "json"

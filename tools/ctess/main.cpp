@@ -21,14 +21,15 @@ commands:
   line     --mode M --factor f [--max 64|256] [--format text|json]
   sweep    --mode M --from a --to b [--steps n] --svg out.svg [--max 64|256]
   animate  --mode M --from a,b,c --to d,e,f --frames n --out DIR [pattern options]
-  efficiency [--max 64|256] [--random n] [--seed s] [--format markdown|json] [--out FILE]
+  efficiency [--family cp|uniform] [--max 64|256] [--random n] [--seed s] [--format markdown|json]
+           [--out FILE]   (--random and --seed: cp only)
   strip    --segments U,V [--format json] [--out FILE]            (U, V in [1, 1024])
   surface  --name sphere|torus|ripple [--angle deg] [--distance rel] [--min-level n] [--max-level n]
            [--format json|obj|svg|stats] [--view param|shaded] [--out FILE]   (levels in [0, 18])
   serve    [--port N] [--viewer DIR] [--shaders DIR]   the browser viewer on 127.0.0.1 (docs/viewer.md)
 
-pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even
-line modes:    the pattern modes plus pow2-subdivision, one-at-a-time, even-spacing
+pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even, uniform (tri, three factors)
+line modes:    cp and the d3d11 modes plus pow2-subdivision, one-at-a-time, even-spacing
 Factors must be finite and > 0. See docs/cli.md for the JSON schema and every option.
 )";
 

@@ -2,6 +2,7 @@
 #pragma once
 #include <ctess/domain_point.hpp>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,11 +19,21 @@ struct PatternRequest {
     bool staircase_columns = false; // CP only: column rule (a) instead of the minimal rule (b)
 };
 
+// What the uniform mode used (docs/algorithm.md §3.4, §3.5): the rounded, clamped integer factors in request
+// order, the table's N, and the split (1 subpatch, depth 0 when the factors fit the table). table_max is 0
+// for the other modes.
+struct UniformUse {
+    std::array<std::uint32_t, 3> factors{};
+    std::uint32_t table_max = 0;
+    std::uint32_t subpatches = 1, depth = 0;
+};
+
 struct Mesh {
     std::vector<DomainPoint> vertices;
     std::vector<std::uint32_t> indices;
     std::uint32_t fixed_one = 0;
     unsigned vertices_per_primitive = 3; // 2 for isolines
+    UniformUse uniform;                  // the uniform mode only
     std::size_t primitive_count() const { return indices.size() / vertices_per_primitive; }
 };
 

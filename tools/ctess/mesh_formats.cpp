@@ -1,9 +1,8 @@
 #include "mesh_formats.hpp"
 
-#include <ctess/runtime/uniform_patch.hpp>
-
 #include "svg_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -26,6 +25,12 @@ std::string mesh_to_json(const Mesh& mesh, const PatternRequest& r) {
     if (!is_d3d11_mode(r.mode)) {
         out += fmt::format("  \"max_tess_factor\": {},\n", r.max_factor);
         out += fmt::format("  \"layout\": \"{}\",\n", r.provoking_layout ? "provoking" : "shared");
+    }
+    if (mesh.uniform.table_max != 0) { // the integers the library used (docs/cli.md, "JSON")
+        const auto& u = mesh.uniform;
+        out +=
+            fmt::format("  \"uniform_factors\": [{}, {}, {}],\n", u.factors[0], u.factors[1], u.factors[2]);
+        out += fmt::format("  \"subpatch_count\": {},\n  \"split_depth\": {},\n", u.subpatches, u.depth);
     }
     out += fmt::format("  \"winding\": \"{}\",\n", r.ccw ? "ccw" : "cw");
     out += fmt::format("  \"fixed_one\": {},\n", mesh.fixed_one);
@@ -75,15 +80,14 @@ struct Frame {
     bool square = false;
     double side = kWidth - 2 * kMargin;
     double ux = 1, vx = 0.5, vy = std::sqrt(3.0) / 2.0, x0 = 0; // v1 = (ux, 0), v2 = (vx, vy), unit width
+    double bottom = kHeight - kMargin;                          // y of v = 0
     double x(double u, double v) const { return kMargin + side * (square ? u : x0 + u * ux + v * vx); }
-    double y(double v) const { return kHeight - kMargin - side * (square ? v : v * vy); }
+    double y(double v) const { return bottom - side * (square ? v : v * vy); }
 };
 
-void shape_uniform_frame(Frame& fr, const std::vector<float>& f, unsigned max_factor) {
-    if (f.size() != 3) return;
-    const std::uint32_t top = max_factor * max_factor; // split patches go up to N^2 (docs/algorithm.md §3.5)
-    const double a = rt::uniform_factor(f[0], top), b = rt::uniform_factor(f[1], top),
-                 c = rt::uniform_factor(f[2], top);
+// The integer factors the library used (rounded, clamped to N^2 when split) as side lengths.
+void shape_uniform_frame(Frame& fr, const UniformUse& use) {
+    const double a = use.factors[0], b = use.factors[1], c = use.factors[2];
     if (!(a < b + c && b < a + c && c < a + b)) return; // non-Euclidean: keep the equilateral frame
     const double x2 = (a * a + c * c - b * b) / (2 * a), y2 = std::sqrt(std::max(0.0, c * c - x2 * x2));
     const double lo = std::min(0.0, x2), hi = std::max(a, x2), width = hi - lo;
@@ -93,14 +97,21 @@ void shape_uniform_frame(Frame& fr, const std::vector<float>& f, unsigned max_fa
 } // namespace
 
 std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOptions& options) {
-    SvgWriter svg(kWidth, kHeight);
     Frame fr;
     fr.square = r.domain != "tri";
-    if (r.mode == "uniform" && !fr.square) shape_uniform_frame(fr, r.factors, r.max_factor);
+    const bool uniform = mesh.uniform.table_max != 0;
+    if (uniform) shape_uniform_frame(fr, mesh.uniform);
+    // The uniform mode has one more header line (what the library used); the caption moves below it.
+    const double top = kTop + (uniform && !options.caption.empty() ? 22 : 0);
     if (!fr.square)
-        fr.side = std::min(kWidth - 2 * kMargin, (kHeight - kMargin - kTop) / fr.vy);
+        fr.side = std::min(kWidth - 2 * kMargin, (kHeight - kMargin - top) / fr.vy);
     else
-        fr.side = std::min(kWidth - 2 * kMargin, kHeight - kMargin - kTop);
+        fr.side = std::min(kWidth - 2 * kMargin, kHeight - kMargin - top);
+    // A flat uniform triangle leaves blank space under the header: shorten the picture by it (the v2 label
+    // stays clear of the header). Not for animate's frames (a caption), which keep one size.
+    const double blank = uniform && options.caption.empty() ? std::max(0.0, fr.y(1) - top - 24) : 0.0;
+    fr.bottom -= blank;
+    SvgWriter svg(kWidth, kHeight - blank);
     const double one = mesh.fixed_one;
     auto px = [&](std::uint32_t i) { return fr.x(mesh.vertices[i].u / one, mesh.vertices[i].v / one); };
     auto py = [&](std::uint32_t i) { return fr.y(mesh.vertices[i].v / one); };
@@ -111,10 +122,24 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
     std::string stats = fmt::format("{} vertices · {} {}", mesh.vertices.size(), mesh.primitive_count(),
                                     mesh.vertices_per_primitive == 2 ? "line segments" : "triangles");
     if (mesh.vertices_per_primitive == 3) stats += fmt::format(" ({} zero-area, drawn red)", degenerate);
-    if (!is_d3d11_mode(r.mode)) stats += fmt::format(" · max factor {}", r.max_factor);
+    if (!uniform && !is_d3d11_mode(r.mode)) stats += fmt::format(" · max factor {}", r.max_factor);
     svg.text(kMargin - 40, 60, stats, "font-size=\"15\" fill=\"#445\"");
+    // Uniform: the integers used when they differ from the request (rounded; clamped to N^2), and the split.
+    const auto& used = mesh.uniform.factors;
+    const bool rounded = uniform && (r.factors[0] != float(used[0]) || r.factors[1] != float(used[1]) ||
+                                     r.factors[2] != float(used[2]));
+    double line_y = 82;
+    if (uniform) {
+        std::string what = fmt::format("uniform density, N = {}", mesh.uniform.table_max);
+        if (rounded) what += fmt::format(" · used ({}, {}, {})", used[0], used[1], used[2]);
+        what += mesh.uniform.subpatches > 1 ? fmt::format(" · split into {} subpatches, depth {}",
+                                                          mesh.uniform.subpatches, mesh.uniform.depth)
+                                            : std::string(" · one table pattern");
+        svg.text(kMargin - 40, line_y, what, "font-size=\"14\" fill=\"#667\"");
+        line_y += 22;
+    }
     if (!options.caption.empty())
-        svg.text(kMargin - 40, 82, options.caption, "font-size=\"14\" fill=\"#667\"");
+        svg.text(kMargin - 40, line_y, options.caption, "font-size=\"14\" fill=\"#667\"");
 
     if (mesh.vertices_per_primitive == 3) {
         for (std::size_t t = 0; t < mesh.primitive_count(); ++t) {
@@ -139,8 +164,8 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
                 svg.circle(0.65 * px(a) + 0.35 * cx, 0.65 * py(a) + 0.35 * cy, 2.2, "fill=\"#e07b00\"");
             }
             // Legend at the bottom left, where the widest label still fits at any font's width.
-            svg.circle(kMargin - 34, kHeight - 17, 5, "fill=\"#e07b00\"");
-            svg.text(kMargin - 24, kHeight - 11, "provoking (first) vertex of each triangle",
+            svg.circle(kMargin - 34, kHeight - blank - 17, 5, "fill=\"#e07b00\"");
+            svg.text(kMargin - 24, kHeight - blank - 11, "provoking (first) vertex of each triangle",
                      "font-size=\"16\" fill=\"#445\"");
         }
     } else {
@@ -161,13 +186,20 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
         svg.text(fr.x(1, 0) + 6, fr.y(0) + 22, cp_names ? "v1" : "U (1,0)", label);
         svg.text(fr.x(0, 1) - 14, fr.y(1) - 12, cp_names ? "v2" : "V (0,1)", label);
         const auto& f = r.factors;
-        auto fv = [&](std::size_t i) { return i < f.size() ? fmt::format("{:g}", f[i]) : std::string("?"); };
+        auto fv = [&](std::size_t i) {
+            if (i >= f.size()) return std::string("?");
+            if (uniform && f[i] != float(used[i])) return fmt::format("{:g} → {}", f[i], used[i]);
+            return fmt::format("{:g}", f[i]);
+        };
         const std::string bottom = cp_names ? "e0 = " + fv(0) : "Veq0 = " + fv(1);
         const std::string left = cp_names ? "e2 = " + fv(2) : "Ueq0 = " + fv(0);
         const std::string right = cp_names ? "e1 = " + fv(1) : "Weq0 = " + fv(2);
         svg.text(fr.x(0.5, 0) - 40, fr.y(0) + 40, bottom, edge_label);
         svg.text(fr.x(0, 0.5) - 110, fr.y(0.5), left, edge_label);
-        svg.text(fr.x(0.5, 0.5) + 16, fr.y(0.5), right, edge_label);
+        // kept inside the picture when a shaped uniform triangle puts e1 at the right border (about 9.5 px
+        // per character of the bold 15 px label)
+        svg.text(std::min(fr.x(0.5, 0.5) + 16, kWidth - 6 - 9.5 * double(right.size())), fr.y(0.5), right,
+                 edge_label);
         if (is_d3d11_mode(r.mode) && f.size() == 4)
             svg.text(fr.x(1, 0) - 150, fr.y(1) + 10, "inside = " + fv(3), edge_label);
     } else if (!is_d3d11_mode(r.mode)) { // a CP quad: corners q0..q3, edge k runs q_k -> q_(k+1)
