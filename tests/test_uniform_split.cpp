@@ -39,6 +39,27 @@ constexpr std::array<double, 2> tolerances{ctess::rt::uniform_split_interior_tol
 
 void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance);
 
+// Two patches on common integer corners (A = P0 P1 P2, B on P1, P2 and Q): a split patch's point d (units of
+// uniform_split_fixed_one) as an exact position, so points on a shared edge compare bit for bit.
+using Pos = std::array<int128, 2>;
+constexpr Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
+Pos position(DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
+    const int128 one = ctess::rt::uniform_split_fixed_one;
+    const int128 w = one - d.u - d.v;
+    return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
+}
+
+// The given triples, then `count` seeded random ones with factors in [low, low + range).
+std::vector<std::array<float, 3>> with_random(std::vector<std::array<float, 3>> cases, std::uint32_t state,
+                                              int count, unsigned low, unsigned range) {
+    for (int k = 0; k < count; ++k) {
+        std::array<float, 3> f{};
+        for (float& x : f) x = static_cast<float>(low + (state = state * 1664525u + 1013904223u) % range);
+        cases.push_back(f);
+    }
+    return cases;
+}
+
 } // namespace
 
 TEST_CASE("uniform split: exact coverage, positive triangles, bounded depth", "[uniform][split]") {
@@ -97,14 +118,8 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
     // every edge inside the root patch is used once in each direction (exact positions). The first four
     // triples cracked when a split patch subdivided an edge that its diced neighbour kept whole (found by
     // fuzz_uniform).
-    std::vector<std::array<float, 3>> cases = {
-        {193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}};
-    std::uint32_t state = 2026;
-    for (int k = 0; k < 60; ++k) {
-        std::array<float, 3> f{};
-        for (float& x : f) x = static_cast<float>(1 + (state = state * 1664525u + 1013904223u) % 256u);
-        cases.push_back(f);
-    }
+    const auto cases =
+        with_random({{193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}}, 2026, 60, 1, 256);
     const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
     auto on_root_edge = [one](DomainPoint a, DomainPoint b) {
         return (a.v == 0 && b.v == 0) || (a.u == 0 && b.u == 0) ||
@@ -137,13 +152,6 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
 
 TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any depth", "[uniform][split]") {
     // Patch A (P0, P1, P2) and patch B (P2, P1, Q) share A's e1 as B's e0; integer corners, exact positions.
-    using Pos = std::array<int128, 2>;
-    const Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
-    const int128 one = ctess::rt::uniform_split_fixed_one;
-    auto position = [&](DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
-        const int128 w = one - d.u - d.v;
-        return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
-    };
     const auto& set = ctess::rt::uniform_tables_16;
     std::size_t checked = 0;
     for (float shared : {1.0f, 7.0f, 16.0f, 17.0f, 31.0f, 32.0f, 33.0f, 97.0f, 200.0f, 256.0f})
@@ -255,14 +263,15 @@ TEST_CASE("uniform split: final edge lengths against the table's own bound, defa
     // most 1.4328, §3.1) when r is a real triangle, and unbounded by the table when it is not. The strict
     // tolerance dices no leaf edge above N (+ 0.5 rounding) except where depth 2 clamps; the default dices up
     // to 1.433 N.
-    std::vector<std::array<float, 3>> cases = {{40, 30, 25},  {48, 20, 33}, {70, 197, 186}, {176, 176, 176},
-                                               {100, 90, 60}, {17, 16, 16}, {64, 64, 20},   {56, 36, 23}};
-    std::uint32_t state = 77;
-    for (int k = 0; k < 40; ++k) {
-        std::array<float, 3> f{};
-        for (float& x : f) x = static_cast<float>(12 + (state = state * 1664525u + 1013904223u) % 245u);
-        cases.push_back(f);
-    }
+    const auto cases = with_random({{40, 30, 25},
+                                    {48, 20, 33},
+                                    {70, 197, 186},
+                                    {176, 176, 176},
+                                    {100, 90, 60},
+                                    {17, 16, 16},
+                                    {64, 64, 20},
+                                    {56, 36, 23}},
+                                   77, 40, 12, 245);
     const double one = ctess::rt::uniform_split_fixed_one;
     for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
         for (const double tolerance : tolerances) {
@@ -325,13 +334,6 @@ TEST_CASE("uniform split: a diced patch beside a split patch welds bit for bit o
     // of another edge and shares A's e1 (P1 -> P2) as its e0, walked P2 -> P1 (B = (P2, P1, Q)) or P1 -> P2
     // (B = (P1, P2, Q), the other orientation). The edge's points, as exact positions on common integer
     // corners, must be the same set from both sides.
-    using Pos = std::array<int128, 2>;
-    const Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
-    const int128 one = ctess::rt::uniform_split_fixed_one;
-    auto position = [&](DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
-        const int128 w = one - d.u - d.v;
-        return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
-    };
     std::size_t checked = 0;
     for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
         for (const double tolerance : tolerances) {
