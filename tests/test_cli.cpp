@@ -461,6 +461,14 @@ TEST_CASE("cli: efficiency --family uniform totals the stored patterns", "[cli][
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("| a <= 11 | 286 | " + std::to_string(total) + " |") != std::string::npos);
     CHECK(r.out.find("binary longest-edge") != std::string::npos);
+    // Both interior dice tolerances of the split (docs/algorithm.md §3.5), in text and JSON.
+    CHECK(r.out.find("| 1.433 N |") != std::string::npos);
+    CHECK(r.out.find("| 1.000 N |") != std::string::npos);
+    const Run j = ctess_cli("efficiency --family uniform --format json");
+    REQUIRE(j.exit_code == 0);
+    CHECK(j.out.find("\"interior_tolerance\": 1.433") != std::string::npos);
+    CHECK(j.out.find("\"interior_tolerance\": 1.000") != std::string::npos);
+    CHECK(j.out.find("\"longest_edge_mean_of_maxima\"") != std::string::npos);
 }
 
 // --- uniform: factors, bad input, limits and options (docs/cli.md "Modes", "Errors and bad input") ---

@@ -71,42 +71,47 @@ TEST_CASE("uniform split shared: equals an independent weld of the provoking out
           "[uniform][split][weld]") {
     const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
     std::uint32_t depth_two = 0;
-    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
-        for (const Winding winding : {Winding::ccw, Winding::cw})
-            for (const auto& f : triples_above(set->max_factor)) {
-                INFO("N " << set->max_factor << " factors " << f[0] << "," << f[1] << "," << f[2]
-                          << " winding " << (winding == Winding::ccw ? "ccw" : "cw"));
-                const UniformSplit shared(*set, f[0], f[1], f[2], PatchOptions{Layout::shared, winding});
-                const UniformSplit provoking(*set, f[0], f[1], f[2],
-                                             PatchOptions{Layout::provoking, winding});
-                depth_two += shared.depth() == 2;
-                const Emitted s = emit_all(shared), p = emit_all(provoking);
+    // Both interior dice tolerances (§3.5): the default 1.433 N and the strict N.
+    for (const double tolerance :
+         {ctess::rt::uniform_split_interior_tolerance, ctess::rt::uniform_split_strict_tolerance})
+        for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+            for (const Winding winding : {Winding::ccw, Winding::cw})
+                for (const auto& f : triples_above(set->max_factor)) {
+                    INFO("N " << set->max_factor << " tolerance " << tolerance << " factors " << f[0] << ","
+                              << f[1] << "," << f[2] << " winding "
+                              << (winding == Winding::ccw ? "ccw" : "cw"));
+                    const UniformSplit shared(*set, f[0], f[1], f[2], PatchOptions{Layout::shared, winding},
+                                              tolerance);
+                    const UniformSplit provoking(*set, f[0], f[1], f[2],
+                                                 PatchOptions{Layout::provoking, winding}, tolerance);
+                    depth_two += shared.depth() == 2;
+                    const Emitted s = emit_all(shared), p = emit_all(provoking);
 
-                // The independent weld: one number per exact position the provoking triangles use.
-                std::map<Position, std::uint32_t> weld;
-                for (const std::uint32_t i : p.indices) weld.emplace(position(p.vertices[i]), 0u);
-                REQUIRE(shared.counts().vertices == weld.size());
-                REQUIRE(shared.counts().triangles == provoking.counts().triangles);
+                    // The independent weld: one number per exact position the provoking triangles use.
+                    std::map<Position, std::uint32_t> weld;
+                    for (const std::uint32_t i : p.indices) weld.emplace(position(p.vertices[i]), 0u);
+                    REQUIRE(shared.counts().vertices == weld.size());
+                    REQUIRE(shared.counts().triangles == provoking.counts().triangles);
 
-                // No position twice, and the same positions.
-                std::set<Position> out;
-                for (const DomainPoint& d : s.vertices) out.insert(position(d));
-                REQUIRE(out.size() == s.vertices.size());
-                REQUIRE(std::equal(out.begin(), out.end(), weld.begin(), weld.end(),
-                                   [](const Position& a, const auto& b) { return a == b.first; }));
+                    // No position twice, and the same positions.
+                    std::set<Position> out;
+                    for (const DomainPoint& d : s.vertices) out.insert(position(d));
+                    REQUIRE(out.size() == s.vertices.size());
+                    REQUIRE(std::equal(out.begin(), out.end(), weld.begin(), weld.end(),
+                                       [](const Position& a, const auto& b) { return a == b.first; }));
 
-                // Every index in range; the same triangles with the same orientation.
-                for (const std::uint32_t i : s.indices) REQUIRE(i < s.vertices.size());
-                REQUIRE(triangles_of(s) == triangles_of(p));
+                    // Every index in range; the same triangles with the same orientation.
+                    for (const std::uint32_t i : s.indices) REQUIRE(i < s.vertices.size());
+                    REQUIRE(triangles_of(s) == triangles_of(p));
 
-                // Euler on a disk: V = 1 + (T + B) / 2, B the boundary points (one per boundary segment).
-                std::uint64_t boundary = 0;
-                for (const Position& q : out)
-                    boundary += q.second == 0 || q.first == 0 || std::uint64_t{q.first} + q.second == one;
-                CHECK(shared.counts().vertices == 1 + (shared.counts().triangles + boundary) / 2);
-                CHECK((shared.counts().triangles + boundary) % 2 == 0);
-            }
-    CHECK(depth_two >= 10); // the cases reach depth 2 at both N
+                    // Euler on a disk: V = 1 + (T + B) / 2, B the boundary points (one per boundary segment).
+                    std::uint64_t boundary = 0;
+                    for (const Position& q : out)
+                        boundary += q.second == 0 || q.first == 0 || std::uint64_t{q.first} + q.second == one;
+                    CHECK(shared.counts().vertices == 1 + (shared.counts().triangles + boundary) / 2);
+                    CHECK((shared.counts().triangles + boundary) % 2 == 0);
+                }
+    CHECK(depth_two >= 20); // the cases reach depth 2 at both N and both tolerances
 }
 
 TEST_CASE("uniform split shared: welded counts for a few triples", "[uniform][split][weld]") {

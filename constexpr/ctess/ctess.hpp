@@ -26,6 +26,7 @@
 
 #include "line_modes.hpp"
 
+#include "uniform_metric.hpp"
 #include "uniform_pattern.hpp"
 #include "uniform_quantise.hpp"
 

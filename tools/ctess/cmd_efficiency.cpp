@@ -20,10 +20,10 @@ int run_efficiency(int argc, char** argv) {
             throw UsageError("--random and --seed apply to --family cp only (--family uniform reports every "
                              "sorted triple of the table)");
         const auto rows = uniform_efficiency_rows(max);
+        const auto split = uniform_split_summaries();
         write_text(args.get_or("out", "-"),
-                   format == "json"
-                       ? uniform_efficiency_json(rows)
-                       : uniform_efficiency_markdown(rows) + uniform_split_markdown(uniform_split_rows()));
+                   format == "json" ? uniform_efficiency_json(rows, split)
+                                    : uniform_efficiency_markdown(rows) + uniform_split_markdown(split));
         return 0;
     }
     const auto rows = efficiency_rows(max, random, seed);

@@ -4,6 +4,7 @@
 #include <ctess/d3d11_tessellator.hpp>
 #include <ctess/runtime/uniform_patch.hpp>
 #include <ctess/runtime/uniform_split.hpp>
+#include <ctess/uniform_metric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -44,22 +45,21 @@ Totals totals(const std::vector<UniformEfficiencyRow>& rows, unsigned up_to) {
 // half, the median's intrinsic length on the new edge) until every factor is at most n, with the same
 // tolerance as UniformSplit for edges inside the root (inside[i]); returns the leaves.
 std::uint64_t binary_split_leaves(std::array<double, 3> f, std::array<bool, 3> inside, double n,
-                                  int depth = 0) {
+                                  double tolerance, int depth = 0) {
     bool fits = true;
-    for (int i = 0; i < 3; ++i)
-        fits = fits && f[i] < (inside[i] ? n * rt::uniform_split_interior_tolerance : n + 0.5);
+    for (int i = 0; i < 3; ++i) fits = fits && f[i] < (inside[i] ? n * tolerance : n + 0.5);
     if (fits || depth > 40) return 1;
     const int k = f[0] >= f[1] && f[0] >= f[2] ? 0 : f[1] >= f[2] ? 1 : 2;
     const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
     const double a = f[k], b = f[k1], c = f[k2];
     const double median = 0.5 * std::sqrt(std::max(0.0, 2 * b * b + 2 * c * c - a * a));
-    return binary_split_leaves({a / 2, b, median}, {inside[k], inside[k1], true}, n, depth + 1) +
-           binary_split_leaves({a / 2, c, median}, {inside[k], inside[k2], true}, n, depth + 1);
+    return binary_split_leaves({a / 2, b, median}, {inside[k], inside[k1], true}, n, tolerance, depth + 1) +
+           binary_split_leaves({a / 2, c, median}, {inside[k], inside[k2], true}, n, tolerance, depth + 1);
 }
 
 } // namespace
 
-std::vector<UniformSplitRow> uniform_split_rows() {
+std::vector<UniformSplitRow> uniform_split_rows(double interior_tolerance) {
     std::vector<UniformSplitRow> rows;
     const unsigned n = rt::uniform_tables.max_factor;
     std::uint32_t state = 2026u; // a fixed linear congruential sequence: the same triples everywhere
@@ -73,10 +73,13 @@ std::vector<UniformSplitRow> uniform_split_rows() {
         for (float& x : f) x = float(n + 1 + next() % (top - n));
         UniformSplitRow r;
         r.factors = f;
-        const rt::UniformSplit split(rt::uniform_tables, f[0], f[1], f[2]);
+        const rt::UniformSplit split(rt::uniform_tables, f[0], f[1], f[2], {}, interior_tolerance);
         r.subpatches = split.subpatch_count();
         r.triangles = split.counts().triangles;
-        r.binary_subpatches = binary_split_leaves({f[0], f[1], f[2]}, {false, false, false}, n);
+        r.binary_subpatches =
+            binary_split_leaves({f[0], f[1], f[2]}, {false, false, false}, n, split.interior_tolerance());
+        r.real_triangle = uniform::is_real_triangle(split.factors());
+        r.longest_edge = split.longest_edge();
         if (f[0] <= 64 && f[1] <= 64 && f[2] <= 64)
             r.d3d_max = d3d_integer_triangles(f, std::max({f[0], f[1], f[2]}));
         rows.push_back(r);
@@ -84,24 +87,55 @@ std::vector<UniformSplitRow> uniform_split_rows() {
     return rows;
 }
 
-std::string uniform_split_markdown(const std::vector<UniformSplitRow>& rows) {
+UniformSplitSummary summarize_uniform_split(const std::vector<UniformSplitRow>& rows,
+                                            double interior_tolerance) {
+    UniformSplitSummary t;
+    t.tolerance = interior_tolerance;
+    t.triples = rows.size();
     double sub = 0, bin = 0, tri = 0, d3d = 0;
-    std::size_t with_d3d = 0;
     for (const auto& r : rows) {
         sub += double(r.subpatches), bin += double(r.binary_subpatches);
-        if (r.d3d_max != 0) tri += double(r.triangles), d3d += double(r.d3d_max), ++with_d3d;
+        if (r.d3d_max != 0) tri += double(r.triangles), d3d += double(r.d3d_max), ++t.with_d3d;
+        if (!r.real_triangle) continue;
+        ++t.real_triangles;
+        t.longest_max = std::max(t.longest_max, r.longest_edge);
+        t.longest_mean += r.longest_edge;
+        t.longest_above_table += r.longest_edge > rt::uniform_split_interior_tolerance;
     }
-    std::string out = fmt::format(
-        "\nSplitting above the table: {} seeded random triples above {}, half up to 64, half up to {}\n\n",
-        rows.size(), rt::uniform_tables.max_factor,
-        rt::uniform_tables.max_factor * rt::uniform_tables.max_factor);
-    out += fmt::format("- uniform subpatches / binary longest-edge subpatches (same dice limit): {:.3f} "
-                       "(seed 001: 0.68)\n",
-                       sub / bin);
+    t.subpatch_ratio = bin != 0 ? sub / bin : 0.0;
+    t.triangle_ratio = d3d != 0 ? tri / d3d : 0.0;
+    if (t.real_triangles != 0) t.longest_mean /= double(t.real_triangles);
+    return t;
+}
+
+std::vector<UniformSplitSummary> uniform_split_summaries() {
+    std::vector<UniformSplitSummary> out;
+    for (double tolerance : {rt::uniform_split_interior_tolerance, rt::uniform_split_strict_tolerance})
+        out.push_back(summarize_uniform_split(uniform_split_rows(tolerance), tolerance));
+    return out;
+}
+
+std::string uniform_split_markdown(const std::vector<UniformSplitSummary>& summaries) {
+    if (summaries.empty()) return {};
+    const UniformSplitSummary& first = summaries.front();
+    const unsigned n = rt::uniform_tables.max_factor;
+    std::string out =
+        fmt::format("\nSplitting above the table: {} seeded random triples above {}, half up to 64, half up "
+                    "to {}; {} form "
+                    "a real triangle (a < b + c), {} are degenerate\n\n",
+                    first.triples, n, n * n, first.real_triangles, first.triples - first.real_triangles);
     out += fmt::format(
-        "- final triangles / D3D11 integer (inside = max), the {} triples with every factor <= 64: "
-        "{:.3f}\n",
-        with_d3d, with_d3d ? tri / d3d : 0.0);
+        "| interior dice tolerance | subpatches / binary longest-edge (same dice limit; seed 001: "
+        "0.68) | triangles / D3D11 integer (inside = max; {} triples <= 64) | longest edge: max | "
+        "mean of per-patch maxima | patches above 1.433 |\n|---|---|---|---|---|---|\n",
+        first.with_d3d);
+    for (const auto& s : summaries)
+        out += fmt::format("| {:.3f} N | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} of {} |\n", s.tolerance,
+                           s.subpatch_ratio, s.triangle_ratio, s.longest_max, s.longest_mean,
+                           s.longest_above_table, s.real_triangles);
+    out += "\nLongest edges in the root patch's intrinsic metric (rounded root factors as side lengths), "
+           "over the "
+           "real-triangle triples; the table's own longest edge is 1.433.\n";
     return out;
 }
 
@@ -153,7 +187,8 @@ std::string uniform_efficiency_markdown(const std::vector<UniformEfficiencyRow>&
     return out;
 }
 
-std::string uniform_efficiency_json(const std::vector<UniformEfficiencyRow>& rows) {
+std::string uniform_efficiency_json(const std::vector<UniformEfficiencyRow>& rows,
+                                    const std::vector<UniformSplitSummary>& split) {
     const Totals t = totals(rows, rt::uniform_tables.max_factor);
     std::string out = fmt::format("{{\"uniform_max_factor\": {}, \"rows\": [", rt::uniform_tables.max_factor);
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -165,8 +200,19 @@ std::string uniform_efficiency_json(const std::vector<UniformEfficiencyRow>& row
                            r.d3d_avg, r.cp);
     }
     out += fmt::format("\n], \"mean_ratio_inside_max\": {:.6f}, \"mean_ratio_inside_avg\": {:.6f}, "
-                       "\"mean_ratio_cp\": {:.6f}}}\n",
+                       "\"mean_ratio_cp\": {:.6f}, \"split\": [",
                        t.ratio_max, t.ratio_avg, t.ratio_cp);
+    for (std::size_t i = 0; i < split.size(); ++i) {
+        const auto& s = split[i];
+        out +=
+            fmt::format("{}\n  {{\"interior_tolerance\": {:.3f}, \"triples\": {}, \"real_triangles\": {}, "
+                        "\"subpatches_over_binary\": {:.6f}, \"d3d11_triples\": {}, "
+                        "\"triangles_over_d3d11_integer_inside_max\": {:.6f}, \"longest_edge_max\": {:.6f}, "
+                        "\"longest_edge_mean_of_maxima\": {:.6f}, \"longest_edge_above_1_433\": {}}}",
+                        i ? "," : "", s.tolerance, s.triples, s.real_triangles, s.subpatch_ratio, s.with_d3d,
+                        s.triangle_ratio, s.longest_max, s.longest_mean, s.longest_above_table);
+    }
+    out += "\n]}\n";
     return out;
 }
 

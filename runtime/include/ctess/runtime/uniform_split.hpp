@@ -11,10 +11,13 @@
 //   of that edge's own factor and position only; inside the parent it is computed from the edge's endpoints
 //   in either direction with the same result. Neighbours therefore agree bit for bit at any depth: no cracks.
 // * How many pieces a split gives an edge is a function of that edge's own factor and depth: an edge within
-//   the dice limit (N at the root; below it 1.433 N, the table's own longest edge, §3.1, which only edges
-//   inside the root patch can exceed) stays whole, whole edges keep their factor exactly, and a subpatch is
-//   diced when all three of its edges stay whole. So a patch that splits and its neighbour that dices put the
-//   same points on their shared edge.
+//   the dice limit (N at the root; below it tolerance x N, which only edges inside the root patch can
+//   exceed) stays whole, whole edges keep their factor exactly, and a subpatch is diced when all three of its
+//   edges stay whole. So a patch that splits and its neighbour that dices put the same points on their shared
+//   edge. The interior tolerance is a constructor argument in [1, 1.433]: 1.433 (the default, the table's own
+//   longest edge, §3.1) dices more interior edges whole (fewer subpatches, longer final edges); 1 (strict)
+//   dices no interior edge above N. Everything that decides an edge's pieces reads the same value, so both
+//   walks (counts, emit) and both sides of an edge agree.
 // * Depth is at most 2; at depth 2 factors are clamped to N (an interior edge may then stay longer than one).
 // * Output: positions in units of fixed_one = 65534^2 on the root patch. Depth-2 positions are rounded to
 //   that unit from an exact integer sum, which is the same on both sides of a shared edge.
@@ -42,6 +45,7 @@
 #include <ctess/counts.hpp>
 #include <ctess/domain_point.hpp>
 #include <ctess/patch_options.hpp>
+#include <ctess/uniform_metric.hpp>
 #include <ctess/uniform_pattern.hpp>
 
 #include "uniform_patch.hpp"
@@ -49,8 +53,10 @@
 namespace ctess::rt {
 
 inline constexpr std::uint32_t uniform_split_max_depth = 2;
-// Edges inside the root patch dice at N up to this factor / N: the table's own longest edge (§3.1).
+// Edges inside the root patch dice at N up to this factor / N by default: the table's own longest edge
+// (§3.1). The strict tolerance dices no interior edge above N (§3.5, the trade-off table).
 inline constexpr double uniform_split_interior_tolerance = 1.433;
+inline constexpr double uniform_split_strict_tolerance = 1.0;
 inline constexpr std::uint32_t uniform_split_fixed_one = uniform::fixed_one * uniform::fixed_one;
 
 namespace uniform_split_detail {
@@ -75,10 +81,16 @@ inline constexpr PatternBounds bounds = pattern_bounds();
 
 class UniformSplit {
   public:
-    UniformSplit(const UniformTableSet& tables, float f0, float f1, float f2,
-                 PatchOptions options = {}) noexcept
+    // interior_tolerance: the dice limit of edges inside the root patch, in units of N; clamped to
+    // [uniform_split_strict_tolerance, uniform_split_interior_tolerance] (NaN gives the strict 1).
+    UniformSplit(const UniformTableSet& tables, float f0, float f1, float f2, PatchOptions options = {},
+                 double interior_tolerance = uniform_split_interior_tolerance) noexcept
         : tables_(&tables), options_(options) {
         const std::uint32_t n = tables.max_factor;
+        tolerance_ = !(interior_tolerance > uniform_split_strict_tolerance) ? uniform_split_strict_tolerance
+                     : interior_tolerance > uniform_split_interior_tolerance
+                         ? uniform_split_interior_tolerance
+                         : interior_tolerance;
         const float top = static_cast<float>(n * n);
         for (int i = 0; i < 3; ++i) {
             const float f = i == 0 ? f0 : i == 1 ? f1 : f2;
@@ -100,6 +112,31 @@ class UniformSplit {
     std::uint32_t subpatch_count() const noexcept { return subpatches_; }
     std::uint32_t depth() const noexcept { return depth_; }
     std::array<double, 3> factors() const noexcept { return root_; }
+    double interior_tolerance() const noexcept { return tolerance_; }
+
+    // One diced subpatch: its pattern (the table's, for its factors rounded and clamped to [1, N]), its
+    // factors before rounding (its edges' intrinsic lengths in the root's metric), its corners on the root
+    // (units of uniform_split_fixed_one; exact at depth 1) and its depth.
+    struct Leaf {
+        const UniformPatch& patch;
+        std::array<double, 3> factors;
+        std::array<std::array<std::int64_t, 2>, 3> corners;
+        std::uint32_t depth;
+    };
+    // Calls f(const Leaf&) for every diced subpatch in output order.
+    template <class F>
+    void for_each_leaf(F&& f) const noexcept {
+        LeafCaller<F> c{f};
+        walk(c);
+    }
+
+    // The longest edge of the output's triangles in the root patch's intrinsic metric (§3.1: the rounded
+    // root factors as side lengths; negative squares clamp at 0), from the emitted positions.
+    double longest_edge() const noexcept {
+        EdgeMeter m;
+        walk(m);
+        return m.longest;
+    }
 
     // Writes the vertices (units of uniform_split_fixed_one) and triangles, welded in the shared layout.
     // Returns false and writes nothing when either span is too small.
@@ -149,6 +186,30 @@ class UniformSplit {
         }
     };
 
+    template <class F>
+    struct LeafCaller {
+        F& f;
+        void patch(const UniformPatch& p, const Sub& s, const UniformSplit&) {
+            f(Leaf{p, s.factor, s.corner, s.depth});
+        }
+    };
+    struct EdgeMeter {
+        double longest = 0;
+        void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
+            constexpr double one = uniform_split_fixed_one;
+            for (std::uint32_t k = 0; k < p.counts().triangles; ++k) {
+                const UniformTriangle tri = p.triangle(k);
+                for (int e = 0; e < 3; ++e) {
+                    const Point a = self.map(s, p.vertex(tri[e])),
+                                b = self.map(s, p.vertex(tri[(e + 1) % 3]));
+                    const double len = uniform::intrinsic_length(self.root_, double(b[0] - a[0]) / one,
+                                                                 double(b[1] - a[1]) / one);
+                    longest = len > longest ? len : longest;
+                }
+            }
+        }
+    };
+
     bool welded() const noexcept { return options_.layout == Layout::shared; }
 
     // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded (half
@@ -167,10 +228,8 @@ class UniformSplit {
     // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
     static double edge_factor(const std::array<double, 3>& f, DomainPoint a, DomainPoint b) noexcept {
         const double one = uniform::fixed_one;
-        const double du = (double(b.u) - double(a.u)) / one, dv = (double(b.v) - double(a.v)) / one;
-        const double dw = -du - dv;
-        const double s = -f[2] * f[2] * dv * dw - f[0] * f[0] * dw * du - f[1] * f[1] * du * dv;
-        return s > 0 ? std::sqrt(s) : 0.0;
+        return uniform::intrinsic_length(f, (double(b.u) - double(a.u)) / one,
+                                         (double(b.v) - double(a.v)) / one);
     }
 
     std::uint32_t rounded(double t) const noexcept {
@@ -189,11 +248,11 @@ class UniformSplit {
         return Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_, 0};
     }
 
-    // The dice limit of an edge at this depth: at the root N (+ rounding), below it the table's own longest
-    // edge (only edges inside the root patch can exceed N there: a sub-edge of a root edge is at most N).
+    // The dice limit of an edge at this depth: at the root N (+ rounding), below it tolerance x N (only edges
+    // inside the root patch can exceed N there: a sub-edge of a root edge is at most N).
     double dice_limit(std::uint32_t depth) const noexcept {
         const double n = tables_->max_factor;
-        return depth == 0 ? n + 0.5 : n * uniform_split_interior_tolerance;
+        return depth == 0 ? n + 0.5 : n * tolerance_;
     }
 
     // How many pieces a split divides an edge into: a function of the edge's own factor and depth only, so
@@ -449,6 +508,7 @@ class UniformSplit {
     const UniformTableSet* tables_;
     PatchOptions options_;
     std::array<double, 3> root_{1, 1, 1};
+    double tolerance_ = uniform_split_interior_tolerance;
     Counts counts_;
     std::uint32_t subpatches_ = 0, depth_ = 0;
 };
