@@ -29,6 +29,7 @@
 #include <ctess/domain_point.hpp>
 #include <ctess/patch_options.hpp>
 #include <ctess/uniform_pattern.hpp>
+#include <ctess/uniform_quantise.hpp>
 
 #include "uniform_table_set.hpp"
 
@@ -89,15 +90,17 @@ class UniformPatch {
             first = distinct_ + uniform::tables::copies_before(copy_words_, g) - first_copy_;
         return flip_ ? UniformTriangle{first, t[2], t[1]} : UniformTriangle{first, t[1], t[2]};
     }
-    // Writes every vertex and every triangle (3 indices each). Returns false and writes nothing when either
-    // span is too small.
-    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+    // Writes every vertex and every triangle (3 indices each), index_base added to every index (a caller that
+    // concatenates patches into one buffer passes its first vertex). Returns false and writes nothing when
+    // either span is too small. Bit for bit what vertex(i) and triangle(p) give (plus index_base).
+    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices,
+              std::uint32_t index_base = 0) const noexcept {
         if (vertices.size() < distinct_ + copies_ || indices.size() < 3u * triangles_) return false;
-        for (std::uint32_t i = 0; i < distinct_ + copies_; ++i) vertices[i] = vertex(i);
-        for (std::uint32_t p = 0; p < triangles_; ++p) {
-            const UniformTriangle t = triangle(p);
-            indices[3 * p] = t[0], indices[3 * p + 1] = t[1], indices[3 * p + 2] = t[2];
-        }
+        emit_vertices(vertices.data());
+        if (copies_ != 0)
+            emit_triangles<true>(indices.data(), index_base);
+        else
+            emit_triangles<false>(indices.data(), index_base);
         return true;
     }
 
@@ -114,6 +117,59 @@ class UniformPatch {
         }
         const std::uint32_t weight[3] = {uniform::fixed_one - c.u - c.v, c.u, c.v}; // canonical v0, v1, v2
         return {weight[source_[1]], weight[source_[2]]};
+    }
+
+    // The bulk path (docs/algorithm.md §3.4): canonical_vertex's arithmetic without a branch or a division
+    // per vertex, the copies read back from the output, the triangles in one pass with a running copy rank.
+    void emit_vertices(DomainPoint* out) const noexcept {
+        // Output coordinate k is weight source_[k + 1] of (one - u - v, u, v): offset + du * u + dv * v,
+        // exact in wrapping 32-bit arithmetic.
+        std::uint32_t offset[2], du[2], dv[2];
+        for (int k = 0; k < 2; ++k) {
+            const std::uint8_t s = source_[k + 1];
+            offset[k] = s == 0 ? uniform::fixed_one : 0u;
+            du[k] = s == 0 ? ~0u : s == 1 ? 1u : 0u;
+            dv[k] = s == 0 ? ~0u : s == 2 ? 1u : 0u;
+        }
+        const auto put = [&](DomainPoint* d, std::uint32_t u, std::uint32_t v) {
+            *d = {offset[0] + du[0] * u + dv[0] * v, offset[1] + du[1] * u + dv[1] * v};
+        };
+        // The boundary as uniform::boundary_vertex numbers it: e0 (p, 0), e1 (one - p, p), e2 (0, p) from v2.
+        const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
+        const std::uint32_t r0 = uniform::edge_reciprocal(f0), r1 = uniform::edge_reciprocal(f1),
+                            r2 = uniform::edge_reciprocal(f2);
+        DomainPoint* d = out;
+        for (std::uint32_t k = 0; k < f0; ++k) put(d++, uniform::edge_parameter(k, f0, r0), 0);
+        for (std::uint32_t k = 0; k < f1; ++k) {
+            const std::uint32_t p = uniform::edge_parameter(k, f1, r1);
+            put(d++, uniform::fixed_one - p, p);
+        }
+        for (std::uint32_t k = 0; k < f2; ++k) put(d++, 0, uniform::edge_parameter(f2 - k, f2, r2));
+        const std::uint32_t boundary = f0 + f1 + f2;
+        for (std::uint32_t j = 0; j < distinct_ - boundary; ++j) {
+            const std::uint32_t word = interior_[j];
+            put(d++, word & 0xFFFFu, word >> 16);
+        }
+        for (std::uint32_t k = 0; k < copies_; ++k) out[distinct_ + k] = out[copy_sources_[k]];
+    }
+
+    template <bool copies>
+    void emit_triangles(std::uint32_t* out, std::uint32_t base) const noexcept {
+        const std::uint32_t second = flip_ ? 2u : 1u, third = 3u - second;
+        std::uint32_t next_copy = base + distinct_; // copies are numbered in triangle order
+        for (std::uint32_t p = 0; p < triangles_; ++p) {
+            const std::uint8_t* t = indices_ + 3 * p;
+            std::uint32_t first = base + t[0];
+            if constexpr (copies) {
+                const std::uint32_t g = first_triangle_ + p;
+                const std::uint32_t bit = copy_words_[g / uniform::tables::copy_bits_per_word] >>
+                                              (g % uniform::tables::copy_bits_per_word) &
+                                          1u;
+                first = bit != 0 ? next_copy : first;
+                next_copy += bit;
+            }
+            out[3 * p] = first, out[3 * p + 1] = base + t[second], out[3 * p + 2] = base + t[third];
+        }
     }
 
     std::array<std::uint32_t, 3> sorted_{1, 1, 1};
