@@ -22,6 +22,8 @@
 // too small.
 #pragma once
 #include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -97,10 +99,7 @@ class UniformPatch {
               std::uint32_t index_base = 0) const noexcept {
         if (vertices.size() < distinct_ + copies_ || indices.size() < 3u * triangles_) return false;
         emit_vertices(vertices.data());
-        if (copies_ != 0)
-            emit_triangles<true>(indices.data(), index_base);
-        else
-            emit_triangles<false>(indices.data(), index_base);
+        emit_triangles(indices.data(), index_base);
         return true;
     }
 
@@ -122,17 +121,14 @@ class UniformPatch {
     // The bulk path (docs/algorithm.md §3.4): canonical_vertex's arithmetic without a branch or a division
     // per vertex, the copies read back from the output, the triangles in one pass with a running copy rank.
     void emit_vertices(DomainPoint* out) const noexcept {
-        // Output coordinate k is weight source_[k + 1] of (one - u - v, u, v): offset + du * u + dv * v,
-        // exact in wrapping 32-bit arithmetic.
-        std::uint32_t offset[2], du[2], dv[2];
-        for (int k = 0; k < 2; ++k) {
-            const std::uint8_t s = source_[k + 1];
-            offset[k] = s == 0 ? uniform::fixed_one : 0u;
-            du[k] = s == 0 ? ~0u : s == 1 ? 1u : 0u;
-            dv[k] = s == 0 ? ~0u : s == 2 ? 1u : 0u;
-        }
+        // Output coordinate k is weight source_[k + 1] of (one - u - v, u, v), picked by masks (no branch).
+        std::uint32_t mask[2][3];
+        for (int k = 0; k < 2; ++k)
+            for (std::uint8_t c = 0; c < 3; ++c) mask[k][c] = source_[k + 1] == c ? ~0u : 0u;
         const auto put = [&](DomainPoint* d, std::uint32_t u, std::uint32_t v) {
-            *d = {offset[0] + du[0] * u + dv[0] * v, offset[1] + du[1] * u + dv[1] * v};
+            const std::uint32_t w = uniform::fixed_one - u - v;
+            *d = {(w & mask[0][0]) | (u & mask[0][1]) | (v & mask[0][2]),
+                  (w & mask[1][0]) | (u & mask[1][1]) | (v & mask[1][2])};
         };
         // The boundary as uniform::boundary_vertex numbers it: e0 (p, 0), e1 (one - p, p), e2 (0, p) from v2.
         const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
@@ -153,23 +149,39 @@ class UniformPatch {
         for (std::uint32_t k = 0; k < copies_; ++k) out[distinct_ + k] = out[copy_sources_[k]];
     }
 
-    template <bool copies>
+    // The stored index bytes widened, then the copied triangles' first indices overwritten in triangle order
+    // (their rank is the running count, what copies_before gives triangle(p)).
     void emit_triangles(std::uint32_t* out, std::uint32_t base) const noexcept {
-        const std::uint32_t second = flip_ ? 2u : 1u, third = 3u - second;
-        std::uint32_t next_copy = base + distinct_; // copies are numbered in triangle order
-        for (std::uint32_t p = 0; p < triangles_; ++p) {
-            const std::uint8_t* t = indices_ + 3 * p;
-            std::uint32_t first = base + t[0];
-            if constexpr (copies) {
-                const std::uint32_t g = first_triangle_ + p;
-                const std::uint32_t bit = copy_words_[g / uniform::tables::copy_bits_per_word] >>
-                                              (g % uniform::tables::copy_bits_per_word) &
-                                          1u;
-                first = bit != 0 ? next_copy : first;
-                next_copy += bit;
-            }
-            out[3 * p] = first, out[3 * p + 1] = base + t[second], out[3 * p + 2] = base + t[third];
+        if (flip_)
+            widen_triangles<true>(out, indices_, triangles_, base);
+        else
+            widen_triangles<false>(out, indices_, triangles_, base);
+        if (copies_ == 0) return;
+        constexpr std::uint32_t bits = uniform::tables::copy_bits_per_word;
+        const std::uint32_t first = first_triangle_, end = first_triangle_ + triangles_;
+        std::uint32_t next_copy = base + distinct_;
+        for (std::uint32_t w = first / bits; w * bits < end; ++w) {
+            std::uint32_t word = copy_words_[w] & 0xFFFFu;
+            if (w * bits < first) word &= ~0u << (first - w * bits); // the previous pattern's triangles
+            if ((w + 1) * bits > end) word &= (1u << (end - w * bits)) - 1u; // the next pattern's
+            for (; word != 0; word &= word - 1)
+                out[3 * (w * bits + static_cast<std::uint32_t>(std::countr_zero(word)) - first)] =
+                    next_copy++;
         }
+    }
+
+    // Triangles' index bytes to 32-bit indices plus base, corners 1 and 2 swapped when flipped: a flat
+    // widening loop (the compiler vectorises it), then the swap.
+    template <bool flipped>
+    static void widen_triangles(std::uint32_t* out, const std::uint8_t* in, std::uint32_t triangles,
+                                std::uint32_t base) noexcept {
+        const std::size_t n = std::size_t{3} * triangles;
+        for (std::size_t k = 0; k < n; ++k) out[k] = base + in[k];
+        if constexpr (flipped)
+            for (std::size_t k = 0; k < n; k += 3) {
+                const std::uint32_t second = out[k + 1];
+                out[k + 1] = out[k + 2], out[k + 2] = second;
+            }
     }
 
     std::array<std::uint32_t, 3> sorted_{1, 1, 1};
