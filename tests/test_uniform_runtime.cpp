@@ -280,3 +280,58 @@ TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",
     CHECK_FALSE(p.emit(v, idx));
     CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
 }
+
+TEST_CASE("uniform runtime: emit() is vertex(i) and triangle(p) bit for bit, plus index_base",
+          "[uniform][runtime][emit]") {
+    // The bulk path (docs/algorithm.md §3.4) shares no code with random access past the constructor: its
+    // boundary parameters use the reciprocal, its copies a running rank, its winding a swap of bytes.
+    constexpr std::uint32_t base = 1000, spare = 5; // spare elements past the counts: never written
+    for (const UniformTableSet* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16}) {
+        const unsigned n = set->max_factor;
+        std::size_t checked = 0;
+        for (unsigned a = 1; a <= n; ++a)
+            for (unsigned b = 1; b <= a; ++b)
+                for (unsigned c = 1; c <= b; ++c)
+                    for (const auto& order : permutations)
+                        for (const ctess::Layout layout : {ctess::Layout::shared, ctess::Layout::provoking})
+                            for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw}) {
+                                const Factors sorted{a, b, c};
+                                const Factors f{sorted[order[0]], sorted[order[1]], sorted[order[2]]};
+                                INFO("max " << n << " factors " << f[0] << "," << f[1] << "," << f[2]
+                                            << " provoking " << (layout == ctess::Layout::provoking) << " cw "
+                                            << (winding == ctess::Winding::cw));
+                                const UniformPatch patch(*set, f, {layout, winding});
+                                const ctess::Counts counts = patch.counts();
+                                std::vector<DomainPoint> v(counts.vertices + spare, DomainPoint{7, 7});
+                                std::vector<std::uint32_t> idx(counts.index_count() + spare, 7u);
+                                for (const std::uint32_t b0 : {0u, base}) {
+                                    REQUIRE(patch.emit(v, idx, b0));
+                                    for (std::uint32_t i = 0; i < counts.vertices; ++i)
+                                        REQUIRE(v[i] == patch.vertex(i));
+                                    for (std::uint32_t p = 0; p < counts.triangles; ++p) {
+                                        const auto t = patch.triangle(p);
+                                        REQUIRE((idx[3 * p] == b0 + t[0] && idx[3 * p + 1] == b0 + t[1] &&
+                                                 idx[3 * p + 2] == b0 + t[2]));
+                                    }
+                                    for (std::uint32_t k = 0; k < spare; ++k) {
+                                        REQUIRE(v[counts.vertices + k] == DomainPoint{7, 7});
+                                        REQUIRE(idx[counts.index_count() + k] == 7u);
+                                    }
+                                }
+                                ++checked;
+                            }
+        REQUIRE(checked == 24 * uf::pattern_count(n));
+    }
+}
+
+TEST_CASE("uniform quantise: the reciprocal edge parameter equals the division up to f = 238",
+          "[uniform][runtime][emit]") {
+    // Exhaustive over 0 <= i <= f: exact through 238 (the header's static_assert covers 128), and the bound
+    // is tight: f = 239 has a point where the multiply and shift is off by one.
+    CHECK(uf::edge_reciprocal_exact(238));
+    CHECK_FALSE(uf::edge_reciprocal_exact(239));
+    // spot values: the midpoint of an even edge is exactly 0.5, the ends are exact
+    CHECK(uf::edge_parameter(8, 16, uf::edge_reciprocal(16)) == 32767);
+    CHECK(uf::edge_parameter(0, 11, uf::edge_reciprocal(11)) == 0);
+    CHECK(uf::edge_parameter(11, 11, uf::edge_reciprocal(11)) == uf::fixed_one);
+}

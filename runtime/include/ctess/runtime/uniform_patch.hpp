@@ -170,18 +170,17 @@ class UniformPatch {
         }
     }
 
-    // Triangles' index bytes to 32-bit indices plus base, corners 1 and 2 swapped when flipped: a flat
-    // widening loop (the compiler vectorises it), then the swap.
+    // Triangles' index bytes to 32-bit indices plus base: a flat widening loop (vectorised by the compiler),
+    // or one pass of corner triples with corners 1 and 2 swapped when flipped.
     template <bool flipped>
     static void widen_triangles(std::uint32_t* out, const std::uint8_t* in, std::uint32_t triangles,
                                 std::uint32_t base) noexcept {
         const std::size_t n = std::size_t{3} * triangles;
-        for (std::size_t k = 0; k < n; ++k) out[k] = base + in[k];
         if constexpr (flipped)
-            for (std::size_t k = 0; k < n; k += 3) {
-                const std::uint32_t second = out[k + 1];
-                out[k + 1] = out[k + 2], out[k + 2] = second;
-            }
+            for (std::size_t k = 0; k < n; k += 3)
+                out[k] = base + in[k], out[k + 1] = base + in[k + 2], out[k + 2] = base + in[k + 1];
+        else
+            for (std::size_t k = 0; k < n; ++k) out[k] = base + in[k];
     }
 
     std::array<std::uint32_t, 3> sorted_{1, 1, 1};
