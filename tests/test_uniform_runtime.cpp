@@ -286,6 +286,16 @@ TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",
     idx.resize(n.index_count() - 1);
     CHECK_FALSE(p.emit(v, idx));
     CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
+    // an index_base whose largest index would reach 2^32 - 1 (the restart value) or wrap: false, nothing
+    // written; the largest base that fits puts the last vertex at 2^32 - 2
+    idx.resize(n.index_count(), 7u);
+    std::fill(v.begin(), v.end(), DomainPoint{7, 7});
+    const std::uint32_t largest = 0xFFFFFFFFu - n.vertices;
+    CHECK_FALSE(p.emit(v, idx, largest + 1));
+    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+    CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
+    REQUIRE(p.emit(v, idx, largest));
+    CHECK(*std::max_element(idx.begin(), idx.end()) == 0xFFFFFFFEu);
 }
 
 TEST_CASE("uniform runtime: emit() is vertex(i) and triangle(p) bit for bit, plus index_base",

@@ -94,10 +94,12 @@ class UniformPatch {
     }
     // Writes every vertex and every triangle (3 indices each), index_base added to every index (a caller that
     // concatenates patches into one buffer passes its first vertex). Returns false and writes nothing when
-    // either span is too small. Bit for bit what vertex(i) and triangle(p) give (plus index_base).
+    // either span is too small or an index would reach 2^32 - 1 (the primitive-restart value, or wrap). Bit
+    // for bit what vertex(i) and triangle(p) give (plus index_base).
     bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices,
               std::uint32_t index_base = 0) const noexcept {
         if (vertices.size() < distinct_ + copies_ || indices.size() < 3u * triangles_) return false;
+        if (index_base > 0xFFFFFFFFu - (distinct_ + copies_)) return false; // an index would reach 0xFFFFFFFF
         emit_vertices(vertices.data());
         emit_triangles(indices.data(), index_base);
         return true;
