@@ -10,12 +10,14 @@
 
 namespace ctess::bench {
 
-// Bulk emission: the factors of issue 4 (one equal-factor set per octave, one mixed set).
+// Bulk emission: the factors of issue 4 (one equal-factor set per octave, one mixed set), plus an equal and a
+// mixed set at the uniform-density table's N = 16 (bench_uniform.cpp).
+inline constexpr std::int64_t bulk_factors[][3] = {{8, 8, 8},    {32, 32, 32}, {64, 64, 64},
+                                                   {32, 12, 20}, {16, 16, 16}, {16, 9, 11}};
+
 inline void bulk_factor_sets(benchmark::internal::Benchmark* b) {
     b->ArgNames({"f0", "f1", "f2"});
-    for (const auto& f : {std::vector<std::int64_t>{8, 8, 8}, std::vector<std::int64_t>{32, 32, 32},
-                          std::vector<std::int64_t>{64, 64, 64}, std::vector<std::int64_t>{32, 12, 20}})
-        b->Args(f);
+    for (const auto& f : bulk_factors) b->Args({f[0], f[1], f[2]});
 }
 
 // Random access: the bulk sets plus one with a T0 edge (f1 = 1), which takes the collapse path.

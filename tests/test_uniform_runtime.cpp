@@ -86,6 +86,18 @@ bool matches_some_mapping(const Emitted& e, const Factors& f, bool cw) {
     return false;
 }
 
+// Calls visit(factors, sorted) for every sorted triple of [1, n] in each of the six orders of its factors.
+template <class Visit>
+void for_each_ordered_triple(unsigned n, Visit&& visit) {
+    for (unsigned a = 1; a <= n; ++a)
+        for (unsigned b = 1; b <= a; ++b)
+            for (unsigned c = 1; c <= b; ++c)
+                for (const auto& order : permutations) {
+                    const Factors sorted{a, b, c};
+                    visit(Factors{sorted[order[0]], sorted[order[1]], sorted[order[2]]}, sorted);
+                }
+}
+
 std::vector<std::uint32_t> parameters(unsigned f) {
     std::vector<std::uint32_t> out;
     for (unsigned i = 0; i <= f; ++i) out.push_back(uf::edge_parameter(i, f));
@@ -99,37 +111,32 @@ TEST_CASE("uniform runtime: every triple in every order is the stored pattern wi
     for (const UniformTableSet* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16}) {
         const unsigned n = set->max_factor;
         std::size_t checked = 0;
-        for (unsigned a = 1; a <= n; ++a)
-            for (unsigned b = 1; b <= a; ++b)
-                for (unsigned c = 1; c <= b; ++c)
-                    for (const auto& order : permutations) {
-                        const Factors sorted{a, b, c};
-                        const Factors f{sorted[order[0]], sorted[order[1]], sorted[order[2]]};
-                        INFO("max " << n << " factors " << f[0] << "," << f[1] << "," << f[2]);
-                        for (bool cw : {false, true}) {
-                            const ctess::PatchOptions opt{ctess::Layout::shared,
-                                                          cw ? ctess::Winding::cw : ctess::Winding::ccw};
-                            const UniformPatch patch(*set, float(f[0]), float(f[1]), float(f[2]), opt);
-                            const Emitted e = emit_all(patch);
-                            REQUIRE(patch.counts().triangles == uf::pattern(a, b, c).triangle_count());
-                            REQUIRE(matches_some_mapping(e, f, cw));
-                            // random access equals the bulk emit
-                            for (std::uint32_t t = 0; t < patch.counts().triangles; ++t) {
-                                const auto tri = patch.triangle(t);
-                                REQUIRE((tri[0] == e.indices[3 * t] && tri[1] == e.indices[3 * t + 1] &&
-                                         tri[2] == e.indices[3 * t + 2]));
-                            }
-                            if (!cw) { // edge i carries exactly f_i segments
-                                const auto loop = ctess::test::boundary_loop_edges(
-                                    parameters(f[0]), parameters(f[1]), parameters(f[2]), uf::fixed_one);
-                                const auto topo =
-                                    ctess::test::surface_topology({e.vertices, e.indices}, loop);
-                                REQUIRE(topo.boundary_matches);
-                                REQUIRE(topo.edges_unique);
-                            }
-                        }
-                        ++checked;
-                    }
+        for_each_ordered_triple(n, [&](const Factors& f, const Factors& sorted) {
+            INFO("max " << n << " factors " << f[0] << "," << f[1] << "," << f[2]);
+            for (bool cw : {false, true}) {
+                const ctess::PatchOptions opt{ctess::Layout::shared,
+                                              cw ? ctess::Winding::cw : ctess::Winding::ccw};
+                const UniformPatch patch(*set, float(f[0]), float(f[1]), float(f[2]), opt);
+                const Emitted e = emit_all(patch);
+                REQUIRE(patch.counts().triangles ==
+                        uf::pattern(sorted[0], sorted[1], sorted[2]).triangle_count());
+                REQUIRE(matches_some_mapping(e, f, cw));
+                // random access equals the bulk emit
+                for (std::uint32_t t = 0; t < patch.counts().triangles; ++t) {
+                    const auto tri = patch.triangle(t);
+                    REQUIRE((tri[0] == e.indices[3 * t] && tri[1] == e.indices[3 * t + 1] &&
+                             tri[2] == e.indices[3 * t + 2]));
+                }
+                if (!cw) { // edge i carries exactly f_i segments
+                    const auto loop = ctess::test::boundary_loop_edges(parameters(f[0]), parameters(f[1]),
+                                                                       parameters(f[2]), uf::fixed_one);
+                    const auto topo = ctess::test::surface_topology({e.vertices, e.indices}, loop);
+                    REQUIRE(topo.boundary_matches);
+                    REQUIRE(topo.edges_unique);
+                }
+            }
+            ++checked;
+        });
         REQUIRE(checked == 6 * uf::pattern_count(n));
     }
 }
@@ -279,4 +286,64 @@ TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",
     idx.resize(n.index_count() - 1);
     CHECK_FALSE(p.emit(v, idx));
     CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
+    // an index_base whose largest index would reach 2^32 - 1 (the restart value) or wrap: false, nothing
+    // written; the largest base that fits puts the last vertex at 2^32 - 2
+    idx.resize(n.index_count(), 7u);
+    std::fill(v.begin(), v.end(), DomainPoint{7, 7});
+    const std::uint32_t largest = 0xFFFFFFFFu - n.vertices;
+    CHECK_FALSE(p.emit(v, idx, largest + 1));
+    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+    CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
+    REQUIRE(p.emit(v, idx, largest));
+    CHECK(*std::max_element(idx.begin(), idx.end()) == 0xFFFFFFFEu);
+}
+
+TEST_CASE("uniform runtime: emit() is vertex(i) and triangle(p) bit for bit, plus index_base",
+          "[uniform][runtime][emit]") {
+    // The bulk path (docs/algorithm.md §3.4) shares no code with random access past the constructor: its
+    // boundary parameters use the reciprocal, its copies a running rank, its winding a swap of bytes.
+    constexpr std::uint32_t base = 1000, spare = 5; // spare elements past the counts: never written
+    for (const UniformTableSet* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16}) {
+        const unsigned n = set->max_factor;
+        std::size_t checked = 0;
+        for_each_ordered_triple(n, [&](const Factors& f, const Factors&) {
+            for (const ctess::Layout layout : {ctess::Layout::shared, ctess::Layout::provoking})
+                for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw}) {
+                    INFO("max " << n << " factors " << f[0] << "," << f[1] << "," << f[2] << " provoking "
+                                << (layout == ctess::Layout::provoking) << " cw "
+                                << (winding == ctess::Winding::cw));
+                    const UniformPatch patch(*set, f, {layout, winding});
+                    const ctess::Counts counts = patch.counts();
+                    std::vector<DomainPoint> v(counts.vertices + spare, DomainPoint{7, 7});
+                    std::vector<std::uint32_t> idx(counts.index_count() + spare, 7u);
+                    for (const std::uint32_t b0 : {0u, base}) {
+                        REQUIRE(patch.emit(v, idx, b0));
+                        for (std::uint32_t i = 0; i < counts.vertices; ++i) REQUIRE(v[i] == patch.vertex(i));
+                        for (std::uint32_t p = 0; p < counts.triangles; ++p) {
+                            const auto t = patch.triangle(p);
+                            REQUIRE((idx[3 * p] == b0 + t[0] && idx[3 * p + 1] == b0 + t[1] &&
+                                     idx[3 * p + 2] == b0 + t[2]));
+                        }
+                        for (std::uint32_t k = 0; k < spare; ++k) {
+                            REQUIRE(v[counts.vertices + k] == DomainPoint{7, 7});
+                            REQUIRE(idx[counts.index_count() + k] == 7u);
+                        }
+                    }
+                    ++checked;
+                }
+        });
+        REQUIRE(checked == 24 * uf::pattern_count(n));
+    }
+}
+
+TEST_CASE("uniform quantise: the reciprocal edge parameter equals the division up to f = 238",
+          "[uniform][runtime][emit]") {
+    // Exhaustive over 0 <= i <= f: exact through 238 (the header's static_assert covers 128), and the bound
+    // is tight: f = 239 has a point where the multiply and shift is off by one.
+    CHECK(uf::edge_reciprocal_exact(238));
+    CHECK_FALSE(uf::edge_reciprocal_exact(239));
+    // spot values: the midpoint of an even edge is exactly 0.5, the ends are exact
+    CHECK(uf::edge_parameter(8, 16, uf::edge_reciprocal(16)) == 32767);
+    CHECK(uf::edge_parameter(0, 11, uf::edge_reciprocal(11)) == 0);
+    CHECK(uf::edge_parameter(11, 11, uf::edge_reciprocal(11)) == uf::fixed_one);
 }

@@ -20,6 +20,15 @@ constexpr float ieee_fmax(float a, float b) {
     return is_nan(a) ? b : is_nan(b) ? a : (a > b ? a : b);
 }
 
+// Set bits of a 16-bit word, inline: without a popcount instruction in the baseline ISA (x86-64, Cortex-M),
+// std::popcount becomes a library call.
+constexpr std::uint32_t popcount16(std::uint32_t x) {
+    x -= (x >> 1) & 0x5555u;
+    x = (x & 0x3333u) + ((x >> 2) & 0x3333u);
+    x = (x + (x >> 4)) & 0x0F0Fu;
+    return (x + (x >> 8)) & 0x1Fu;
+}
+
 // Round a finite, non-negative float below 2^32 to the nearest integer, ties to even.
 constexpr std::uint32_t round_half_even_u32(float x) {
     const auto whole = static_cast<std::uint32_t>(x); // truncates; exact for x < 2^32

@@ -9,6 +9,7 @@
 #include <bit>
 #include <cstdint>
 
+#include <ctess/numeric.hpp>
 #include <ctess/uniform_pattern.hpp>
 #include <ctess/uniform_provoking.hpp>
 
@@ -51,7 +52,7 @@ constexpr unsigned max_pattern_vertices(unsigned n) {
 constexpr unsigned copies_before(const std::uint32_t* copy_words, unsigned t) {
     const std::uint32_t w = copy_words[t / copy_bits_per_word];
     const std::uint32_t below = (1u << (t % copy_bits_per_word)) - 1u;
-    return (w >> 16) + static_cast<unsigned>(std::popcount(w & below));
+    return (w >> 16) + popcount16(w & below); // the bit count inline (numeric.hpp)
 }
 
 namespace detail {

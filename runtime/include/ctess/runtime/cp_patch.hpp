@@ -43,6 +43,7 @@
 #include <ctess/cp_line.hpp>
 #include <ctess/cp_tables_layout.hpp>
 #include <ctess/domain_point.hpp>
+#include <ctess/numeric.hpp> // popcount16
 #include <ctess/patch_options.hpp>
 
 #include "cp_line_state.hpp"
@@ -115,14 +116,6 @@ class CpPatchSetup {
                                           sign * e.slide);
     }
     static DomainPoint e1_point(std::uint32_t s) noexcept { return {cp::fixed_one - s, s}; }
-    // Set bits of a 16-bit word, inline: without a popcount instruction in the baseline ISA (x86-64,
-    // Cortex-M), std::popcount becomes a library call.
-    static std::uint32_t popcount16(std::uint32_t x) noexcept {
-        x -= (x >> 1) & 0x5555u;
-        x = (x & 0x3333u) + ((x >> 2) & 0x3333u);
-        x = (x + (x >> 4)) & 0x0F0Fu;
-        return (x + (x >> 8)) & 0x1Fu;
-    }
     static std::uint32_t skip_forward(const Skip* skip, unsigned count, std::uint32_t i) noexcept {
         for (unsigned k = 0; k < count; ++k) i += i >= skip[k].begin ? skip[k].length : 0u;
         return i;

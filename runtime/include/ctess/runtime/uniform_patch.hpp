@@ -22,6 +22,8 @@
 // too small.
 #pragma once
 #include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -29,6 +31,7 @@
 #include <ctess/domain_point.hpp>
 #include <ctess/patch_options.hpp>
 #include <ctess/uniform_pattern.hpp>
+#include <ctess/uniform_quantise.hpp>
 
 #include "uniform_table_set.hpp"
 
@@ -89,15 +92,16 @@ class UniformPatch {
             first = distinct_ + uniform::tables::copies_before(copy_words_, g) - first_copy_;
         return flip_ ? UniformTriangle{first, t[2], t[1]} : UniformTriangle{first, t[1], t[2]};
     }
-    // Writes every vertex and every triangle (3 indices each). Returns false and writes nothing when either
-    // span is too small.
-    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+    // Writes every vertex and every triangle (3 indices each), index_base added to every index (a caller that
+    // concatenates patches into one buffer passes its first vertex). Returns false and writes nothing when
+    // either span is too small or an index would reach 2^32 - 1 (the primitive-restart value, or wrap). Bit
+    // for bit what vertex(i) and triangle(p) give (plus index_base).
+    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices,
+              std::uint32_t index_base = 0) const noexcept {
         if (vertices.size() < distinct_ + copies_ || indices.size() < 3u * triangles_) return false;
-        for (std::uint32_t i = 0; i < distinct_ + copies_; ++i) vertices[i] = vertex(i);
-        for (std::uint32_t p = 0; p < triangles_; ++p) {
-            const UniformTriangle t = triangle(p);
-            indices[3 * p] = t[0], indices[3 * p + 1] = t[1], indices[3 * p + 2] = t[2];
-        }
+        if (index_base > 0xFFFFFFFFu - (distinct_ + copies_)) return false; // an index would reach 0xFFFFFFFF
+        emit_vertices(vertices.data());
+        emit_triangles(indices.data(), index_base);
         return true;
     }
 
@@ -114,6 +118,71 @@ class UniformPatch {
         }
         const std::uint32_t weight[3] = {uniform::fixed_one - c.u - c.v, c.u, c.v}; // canonical v0, v1, v2
         return {weight[source_[1]], weight[source_[2]]};
+    }
+
+    // The bulk path (docs/algorithm.md §3.4): canonical_vertex's arithmetic without a branch or a division
+    // per vertex, the copies read back from the output, the triangles in one pass with a running copy rank.
+    void emit_vertices(DomainPoint* out) const noexcept {
+        // Output coordinate k is weight source_[k + 1] of (one - u - v, u, v), picked by masks (no branch).
+        std::uint32_t mask[2][3];
+        for (int k = 0; k < 2; ++k)
+            for (std::uint8_t c = 0; c < 3; ++c) mask[k][c] = source_[k + 1] == c ? ~0u : 0u;
+        const auto put = [&](DomainPoint* d, std::uint32_t u, std::uint32_t v) {
+            const std::uint32_t w = uniform::fixed_one - u - v;
+            *d = {(w & mask[0][0]) | (u & mask[0][1]) | (v & mask[0][2]),
+                  (w & mask[1][0]) | (u & mask[1][1]) | (v & mask[1][2])};
+        };
+        // The boundary as uniform::boundary_vertex numbers it: e0 (p, 0), e1 (one - p, p), e2 (0, p) from v2.
+        const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
+        const std::uint32_t r0 = uniform::edge_reciprocal(f0), r1 = uniform::edge_reciprocal(f1),
+                            r2 = uniform::edge_reciprocal(f2);
+        DomainPoint* d = out;
+        for (std::uint32_t k = 0; k < f0; ++k) put(d++, uniform::edge_parameter(k, f0, r0), 0);
+        for (std::uint32_t k = 0; k < f1; ++k) {
+            const std::uint32_t p = uniform::edge_parameter(k, f1, r1);
+            put(d++, uniform::fixed_one - p, p);
+        }
+        for (std::uint32_t k = 0; k < f2; ++k) put(d++, 0, uniform::edge_parameter(f2 - k, f2, r2));
+        const std::uint32_t boundary = f0 + f1 + f2;
+        for (std::uint32_t j = 0; j < distinct_ - boundary; ++j) {
+            const std::uint32_t word = interior_[j];
+            put(d++, word & 0xFFFFu, word >> 16);
+        }
+        for (std::uint32_t k = 0; k < copies_; ++k) out[distinct_ + k] = out[copy_sources_[k]];
+    }
+
+    // The stored index bytes widened, then the copied triangles' first indices overwritten in triangle order
+    // (their rank is the running count, what copies_before gives triangle(p)).
+    void emit_triangles(std::uint32_t* out, std::uint32_t base) const noexcept {
+        if (flip_)
+            widen_triangles<true>(out, indices_, triangles_, base);
+        else
+            widen_triangles<false>(out, indices_, triangles_, base);
+        if (copies_ == 0) return;
+        constexpr std::uint32_t bits = uniform::tables::copy_bits_per_word;
+        const std::uint32_t first = first_triangle_, end = first_triangle_ + triangles_;
+        std::uint32_t next_copy = base + distinct_;
+        for (std::uint32_t w = first / bits; w * bits < end; ++w) {
+            std::uint32_t word = copy_words_[w] & 0xFFFFu;
+            if (w * bits < first) word &= ~0u << (first - w * bits); // the previous pattern's triangles
+            if ((w + 1) * bits > end) word &= (1u << (end - w * bits)) - 1u; // the next pattern's
+            for (; word != 0; word &= word - 1)
+                out[3 * (w * bits + static_cast<std::uint32_t>(std::countr_zero(word)) - first)] =
+                    next_copy++;
+        }
+    }
+
+    // Triangles' index bytes to 32-bit indices plus base: a flat widening loop (vectorised by the compiler),
+    // or one pass of corner triples with corners 1 and 2 swapped when flipped.
+    template <bool flipped>
+    static void widen_triangles(std::uint32_t* out, const std::uint8_t* in, std::uint32_t triangles,
+                                std::uint32_t base) noexcept {
+        const std::size_t n = std::size_t{3} * triangles;
+        if constexpr (flipped)
+            for (std::size_t k = 0; k < n; k += 3)
+                out[k] = base + in[k], out[k + 1] = base + in[k + 2], out[k + 2] = base + in[k + 1];
+        else
+            for (std::size_t k = 0; k < n; ++k) out[k] = base + in[k];
     }
 
     std::array<std::uint32_t, 3> sorted_{1, 1, 1};

@@ -1,0 +1,23 @@
+// UniformSplit (docs/algorithm.md §3.5) on the bulk factor sets above N = 16, both layouts (its shared layout
+// welds the subpatches), construction included.
+#include <ctess/runtime/uniform_split.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include "bench_uniform.hpp"
+
+namespace {
+
+using ctess::Layout;
+using ctess::bench::uniform_emit;
+using ctess::bench::uniform_factor_sets;
+using ctess::rt::UniformSplit;
+
+} // namespace
+
+BENCHMARK(uniform_emit<UniformSplit, Layout::provoking>)
+    ->Name("uniform/split_emit")
+    ->Apply(uniform_factor_sets<false>);
+BENCHMARK(uniform_emit<UniformSplit, Layout::shared>)
+    ->Name("uniform/split_emit_shared")
+    ->Apply(uniform_factor_sets<false>);
