@@ -173,16 +173,16 @@ class UniformSplit {
         std::span<DomainPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t v = 0, t = 0;
+        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then its
+        // points mapped into the root in place.
         void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
-            const std::uint32_t base = v;
-            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) {
-                const Point q = self.map(s, p.vertex(i));
-                vertices[v++] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
+            const Counts n = p.counts();
+            p.emit(vertices.subspan(v, n.vertices), indices.subspan(t, n.index_count()), v);
+            for (std::uint32_t i = v; i < v + n.vertices; ++i) {
+                const Point q = self.map(s, vertices[i]);
+                vertices[i] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
             }
-            for (std::uint32_t k = 0; k < p.counts().triangles; ++k) {
-                const UniformTriangle tri = p.triangle(k);
-                indices[t++] = base + tri[0], indices[t++] = base + tri[1], indices[t++] = base + tri[2];
-            }
+            v += n.vertices, t += n.index_count();
         }
     };
 
