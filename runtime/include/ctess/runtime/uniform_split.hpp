@@ -178,10 +178,7 @@ class UniformSplit {
         void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
             const Counts n = p.counts();
             p.emit(vertices.subspan(v, n.vertices), indices.subspan(t, n.index_count()), v);
-            for (std::uint32_t i = v; i < v + n.vertices; ++i) {
-                const Point q = self.map(s, vertices[i]);
-                vertices[i] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
-            }
+            self.map_in_place(s, vertices.subspan(v, n.vertices));
             v += n.vertices, t += n.index_count();
         }
     };
@@ -223,6 +220,32 @@ class UniformSplit {
             r[k] = (sum + std::int64_t{uniform::fixed_one} / 2) / std::int64_t{uniform::fixed_one};
         }
         return r;
+    }
+
+    // map() of every point, in place. When every corner is a multiple of 65534 (always at depth 0 and 1: a
+    // corner there is the root's pattern point times 65534) the exact sum divided by 65534 is
+    // w a0 + u a1 + v a2 = 65534 a0 + u (a1 - a0) + v (a2 - a0) with a = corner / 65534, a point of the root
+    // below 65534^2 < 2^32: unsigned 32-bit arithmetic (modulo 2^32, exact) gives the same integers.
+    void map_in_place(const Sub& s, std::span<DomainPoint> points) const noexcept {
+        constexpr std::int64_t unit = uniform::fixed_one;
+        bool multiples = true;
+        for (const Point& c : s.corner) multiples = multiples && c[0] % unit == 0 && c[1] % unit == 0;
+        if (!multiples) {
+            for (DomainPoint& d : points) {
+                const Point q = map(s, d);
+                d = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
+            }
+            return;
+        }
+        std::uint32_t base[2], du[2], dv[2];
+        for (int k = 0; k < 2; ++k) {
+            const auto a0 = static_cast<std::uint32_t>(s.corner[0][k] / unit),
+                       a1 = static_cast<std::uint32_t>(s.corner[1][k] / unit),
+                       a2 = static_cast<std::uint32_t>(s.corner[2][k] / unit);
+            base[k] = a0 * uniform::fixed_one, du[k] = a1 - a0, dv[k] = a2 - a0;
+        }
+        for (DomainPoint& d : points)
+            d = {base[0] + d.u * du[0] + d.v * dv[0], base[1] + d.u * du[1] + d.v * dv[1]};
     }
 
     // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
