@@ -431,29 +431,31 @@ class UniformSplit {
             weld_split(w, s, edges, split);
     }
 
-    // A leaf writes each of its vertices at its number and its triangles through that map.
+    // A leaf's bulk emit: its points into a stack buffer, its triangles straight into the output; the
+    // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
+    // written at their numbers, the indices renumbered in place.
     void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number{}; // local vertex -> global
+        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point; // local, then on the root
+        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number; // local vertex -> global
         const UniformPatch p = leaf_patch(s);
+        const Counts n = p.counts();
+        const std::span<std::uint32_t> indices = w.indices.subspan(w.t, n.index_count());
+        p.emit(std::span<DomainPoint>(point.data(), n.vertices), indices); // sized by emit(): cannot refuse
         // The leaf's own segments per edge equal its edges' counts (the same segments() walk).
         const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
                                              rounded(s.factor[2])};
-        const std::uint32_t boundary = r[0] + r[1] + r[2], all = p.counts().vertices;
-        for (std::uint32_t i = 0; i < all; ++i) {
-            const DomainPoint d = p.vertex(i);
+        const std::uint32_t boundary = r[0] + r[1] + r[2];
+        for (std::uint32_t i = 0; i < boundary; ++i) {
             int j = 0;
             std::uint32_t step = 0;
-            number[i] = i >= boundary           ? w.next + (i - boundary)
-                        : locate(d, r, j, step) ? edges[j].at(step)
-                                                : 0;
-            const Point q = map(s, d);
-            w.vertices[number[i]] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
+            number[i] = locate(point[i], r, j, step) ? edges[j].at(step) : 0;
         }
-        w.next += all - boundary;
-        for (std::uint32_t t = 0; t < p.counts().triangles; ++t) {
-            const UniformTriangle tri = p.triangle(t);
-            for (std::uint32_t c : tri) w.indices[w.t++] = number[c];
-        }
+        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = w.next + (i - boundary);
+        w.next += n.vertices - boundary;
+        map_in_place(s, std::span<DomainPoint>(point.data(), n.vertices));
+        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = point[i];
+        for (std::uint32_t& index : indices) index = number[index];
+        w.t += n.index_count();
     }
 
     // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
