@@ -173,8 +173,8 @@ class UniformSplit {
         std::span<DomainPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t v = 0, t = 0;
-        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then its
-        // points mapped into the root in place.
+        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then
+        // its points mapped into the root in place.
         void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
             const Counts n = p.counts();
             p.emit(vertices.subspan(v, n.vertices), indices.subspan(t, n.index_count()), v);
@@ -303,12 +303,21 @@ class UniformSplit {
         return UniformPatch(*tables_, {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])},
                             options_);
     }
-    UniformPatch split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
-        return UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw});
+    // A split node's pattern with its vertices read once (vertex(i) divides on every call); its stack
+    // share is the pattern-sized point array.
+    struct SplitPattern {
+        UniformPatch patch;
+        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point;
+        explicit SplitPattern(const UniformPatch& p) noexcept : patch(p) {
+            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) point[i] = p.vertex(i);
+        }
+    };
+    SplitPattern split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
+        return SplitPattern(UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw}));
     }
     // The subpatch of s on the split pattern's triangle tri (counter-clockwise).
-    Sub child(const Sub& s, const UniformPatch& pattern, const UniformTriangle& tri) const noexcept {
-        const DomainPoint a = pattern.vertex(tri[0]), b = pattern.vertex(tri[1]), c = pattern.vertex(tri[2]);
+    Sub child(const Sub& s, const SplitPattern& pattern, const UniformTriangle& tri) const noexcept {
+        const DomainPoint a = pattern.point[tri[0]], b = pattern.point[tri[1]], c = pattern.point[tri[2]];
         Sub c_sub;
         c_sub.depth = s.depth + 1;
         c_sub.corner = {map(s, a), map(s, b), map(s, c)}; // exact at depth 0 (root corners are multiples)
@@ -323,9 +332,9 @@ class UniformSplit {
             visitor.patch(leaf_patch(s), s, *this);
             return;
         }
-        const UniformPatch pattern = split_pattern(split);
-        for (std::uint32_t k = 0; k < pattern.counts().triangles; ++k)
-            visit(visitor, child(s, pattern, pattern.triangle(k)));
+        const SplitPattern pattern = split_pattern(split);
+        for (std::uint32_t k = 0; k < pattern.patch.counts().triangles; ++k)
+            visit(visitor, child(s, pattern, pattern.patch.triangle(k)));
     }
 
     // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
@@ -435,7 +444,7 @@ class UniformSplit {
     // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
     // written at their numbers, the indices renumbered in place.
     void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point; // local, then on the root
+        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point;    // local, then on the root
         std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number; // local vertex -> global
         const UniformPatch p = leaf_patch(s);
         const Counts n = p.counts();
@@ -461,8 +470,10 @@ class UniformSplit {
     // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
     void weld_split(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges,
                     const std::array<std::uint32_t, 3>& split) const noexcept {
-        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number{}; // pattern vertex -> global
-        const UniformPatch pattern = split_pattern(split);
+        // pattern vertex -> global; every entry below the pattern's count is written before it is read
+        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number;
+        const SplitPattern pattern = split_pattern(split);
+        const auto& point = pattern.point;
         // Distances (in final segments) of each split point along this node's edges.
         std::array<std::array<std::uint32_t, uniform::data_max_factor + 1>, 3> offset{};
         for (int j = 0; j < 3; ++j) {
@@ -472,43 +483,43 @@ class UniformSplit {
                     offset[j][p] + segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
         }
         // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
-        const std::uint32_t boundary = split[0] + split[1] + split[2], all = pattern.counts().vertices;
+        const std::uint32_t boundary = split[0] + split[1] + split[2], all = pattern.patch.counts().vertices;
         for (std::uint32_t i = 0; i < all; ++i) {
             int j = 0;
             std::uint32_t step = 0;
-            number[i] = i >= boundary                               ? w.next + (i - boundary)
-                        : locate(pattern.vertex(i), split, j, step) ? edges[j].at(offset[j][step])
-                                                                    : 0;
+            number[i] = i >= boundary                      ? w.next + (i - boundary)
+                        : locate(point[i], split, j, step) ? edges[j].at(offset[j][step])
+                                                           : 0;
         }
         w.next += all - boundary;
         // Interior edges, each owned by its half-edge from the lower to the higher pattern vertex, numbered
         // in triangle order; sorted by (lower, higher) to look up from either side.
         struct Owned {
-            std::uint32_t key, base;
+            std::uint32_t key, base, n;
         };
-        std::array<Owned, uniform_split_detail::bounds.interior_edges> owned{};
+        std::array<Owned, uniform_split_detail::bounds.interior_edges> owned; // the first owned_count used
         std::uint32_t owned_count = 0;
         auto along = [&](std::uint32_t a, std::uint32_t b, int& j, std::uint32_t& sa, std::uint32_t& sb) {
             if (a >= boundary || b >= boundary) return false;
             for (j = 0; j < 3; ++j) {
-                const int x = step_on(pattern.vertex(a), j, split[j]),
-                          y = step_on(pattern.vertex(b), j, split[j]);
+                const int x = step_on(point[a], j, split[j]), y = step_on(point[b], j, split[j]);
                 if (x >= 0 && y >= 0) return sa = std::uint32_t(x), sb = std::uint32_t(y), true;
             }
             return false;
         };
         auto edge_segments = [&](std::uint32_t a, std::uint32_t b) {
-            return segments(child_edge_factor(s, pattern.vertex(a), pattern.vertex(b)), s.depth + 1);
+            return segments(child_edge_factor(s, point[a], point[b]), s.depth + 1);
         };
-        for (std::uint32_t t = 0; t < pattern.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.triangle(t);
+        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
+            const UniformTriangle tri = pattern.patch.triangle(t);
             for (int e = 0; e < 3; ++e) {
                 const std::uint32_t a = tri[e], b = tri[(e + 1) % 3];
                 int j = 0;
                 std::uint32_t sa = 0, sb = 0;
                 if (a > b || along(a, b, j, sa, sb)) continue;
-                owned[owned_count++] = {(a << 16) | b, w.next};
-                w.next += edge_segments(a, b) - 1;
+                const std::uint32_t n = edge_segments(a, b);
+                owned[owned_count++] = {(a << 16) | b, w.next, n};
+                w.next += n - 1;
             }
         }
         std::sort(owned.begin(), owned.begin() + owned_count,
@@ -517,14 +528,15 @@ class UniformSplit {
             int j = 0;
             std::uint32_t sa = 0, sb = 0;
             if (along(a, b, j, sa, sb)) return edges[j].piece(offset[j][sa], offset[j][sb]);
-            const std::uint32_t lo = a < b ? a : b, hi = a < b ? b : a, n = edge_segments(lo, hi);
+            const std::uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
             const Owned* o = std::lower_bound(owned.begin(), owned.begin() + owned_count, (lo << 16) | hi,
                                               [](const Owned& x, std::uint32_t key) { return x.key < key; });
+            const std::uint32_t n = o->n;
             const Line line{number[lo], number[hi], o->base, n};
             return a == lo ? EdgeRef{line, 0, n, true} : EdgeRef{line, n, n, false};
         };
-        for (std::uint32_t t = 0; t < pattern.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.triangle(t);
+        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
+            const UniformTriangle tri = pattern.patch.triangle(t);
             weld_visit(w, child(s, pattern, tri),
                        {edge_ref(tri[0], tri[1]), edge_ref(tri[1], tri[2]), edge_ref(tri[0], tri[2])});
         }
