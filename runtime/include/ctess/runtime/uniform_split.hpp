@@ -32,9 +32,11 @@
 //   a disk, B the root's boundary segments). Below N it is UniformPatch's own numbering.
 //
 // Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()
-// traverses again and returns false (writing nothing) when a span is too small. The shared layout's emit()
-// keeps one pattern-sized set of arrays per split level on the stack (two levels at most; under 10 KB in all
-// with g++ 12 -O2).
+// traverses again and returns false (writing nothing) when a span is too small. Every walk keeps its split
+// pattern's points on the stack per split level (two levels at most); the shared layout's emit() also keeps
+// one pattern-sized set of arrays per level and one for the leaf: with g++ 12 -O2 about 1.5 KB per level of
+// a walk (4.6 KB in all) and about 13.3 KB for the shared layout's emit() (5.6 KB per split level, 2.1 KB
+// for the leaf).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -495,7 +497,7 @@ class UniformSplit {
         // Interior edges, each owned by its half-edge from the lower to the higher pattern vertex, numbered
         // in triangle order; sorted by (lower, higher) to look up from either side.
         struct Owned {
-            std::uint32_t key, base, n;
+            std::uint32_t key, base;
         };
         std::array<Owned, uniform_split_detail::bounds.interior_edges> owned; // the first owned_count used
         std::uint32_t owned_count = 0;
@@ -517,9 +519,8 @@ class UniformSplit {
                 int j = 0;
                 std::uint32_t sa = 0, sb = 0;
                 if (a > b || along(a, b, j, sa, sb)) continue;
-                const std::uint32_t n = edge_segments(a, b);
-                owned[owned_count++] = {(a << 16) | b, w.next, n};
-                w.next += n - 1;
+                owned[owned_count++] = {(a << 16) | b, w.next};
+                w.next += edge_segments(a, b) - 1;
             }
         }
         std::sort(owned.begin(), owned.begin() + owned_count,
@@ -528,10 +529,9 @@ class UniformSplit {
             int j = 0;
             std::uint32_t sa = 0, sb = 0;
             if (along(a, b, j, sa, sb)) return edges[j].piece(offset[j][sa], offset[j][sb]);
-            const std::uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
+            const std::uint32_t lo = a < b ? a : b, hi = a < b ? b : a, n = edge_segments(lo, hi);
             const Owned* o = std::lower_bound(owned.begin(), owned.begin() + owned_count, (lo << 16) | hi,
                                               [](const Owned& x, std::uint32_t key) { return x.key < key; });
-            const std::uint32_t n = o->n;
             const Line line{number[lo], number[hi], o->base, n};
             return a == lo ? EdgeRef{line, 0, n, true} : EdgeRef{line, n, n, false};
         };
