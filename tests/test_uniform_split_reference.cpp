@@ -1,7 +1,8 @@
 // UniformSplit (docs/algorithm.md §3.5) against the code it was optimised from: the reference copy of commit
 // 2407141f (tests/support/uniform_split_reference.hpp). Counts, depth, subpatches, every emitted vertex and
 // index, every leaf and the longest edge must be identical, for both tables, both layouts, both windings and
-// three interior tolerances, on fixed triples (clamped and bad input among them) and seeded random ones.
+// three interior tolerances, on fixed triples (clamped and bad input among them) and seeded random ones, at
+// every depth (0: within the table, 1 and 2: split).
 #include <ctess/runtime/uniform_split.hpp>
 
 #include <array>
@@ -51,13 +52,15 @@ TEST_CASE("uniform split: output identical to the reference code", "[uniform][sp
         {40, 30, 20},  {193, 160, 254},   {100, 3, 99},    {256, 256, 256},
         {32, 32, 32},  {64, 64, 64},      {32, 12, 20},    {17, 1, 16},
         {16, 16, 17},  {255.4f, 17, 200}, {250, 9, 250},   {121, 121, 122},
-        {inf, 5, 300}, {nan, 40, -3},     {1e9f, 1e9f, 2}, {33.5f, 64.49f, 31.51f}};
+        {inf, 5, 300}, {nan, 40, -3},     {1e9f, 1e9f, 2}, {33.5f, 64.49f, 31.51f},
+        {16, 9, 11},   {8, 8, 8},         {11, 7, 3},      {1, 1, 1}};
     std::uint32_t state = 20261124u;
-    for (int k = 0; k < 40; ++k) {
+    for (int k = 0; k < 120; ++k) {
         std::array<float, 3> f{};
         for (float& x : f) x = static_cast<float>((state = state * 1664525u + 1013904223u) % 30000u) / 100.0f;
         cases.push_back(f);
     }
+    std::array<int, 3> by_depth{}; // the cases compared at each depth: every depth must be reached
     for (const auto* tables : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
         for (const ctess::Layout layout : {ctess::Layout::provoking, ctess::Layout::shared})
             for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw})
@@ -73,6 +76,7 @@ TEST_CASE("uniform split: output identical to the reference code", "[uniform][sp
                         REQUIRE(now.counts() == then.counts());
                         REQUIRE(now.subpatch_count() == then.subpatch_count());
                         REQUIRE(now.depth() == then.depth());
+                        ++by_depth[now.depth() < 3 ? now.depth() : 0];
                         REQUIRE(now.factors() == then.factors());
                         const ctess::test::Emitted a = ctess::test::emit_all(now),
                                                    b = ctess::test::emit_all(then);
@@ -81,4 +85,7 @@ TEST_CASE("uniform split: output identical to the reference code", "[uniform][sp
                         REQUIRE(leaves(now) == leaves(then));
                         REQUIRE(now.longest_edge() == then.longest_edge());
                     }
+    CHECK(by_depth[0] > 0);
+    CHECK(by_depth[1] > 0);
+    CHECK(by_depth[2] > 0);
 }
