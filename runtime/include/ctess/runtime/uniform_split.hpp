@@ -32,9 +32,11 @@
 //   a disk, B the root's boundary segments). Below N it is UniformPatch's own numbering.
 //
 // Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()
-// traverses again and returns false (writing nothing) when a span is too small. The shared layout's emit()
-// keeps one pattern-sized set of arrays per split level on the stack (two levels at most; under 10 KB in all
-// with g++ 12 -O2).
+// traverses again and returns false (writing nothing) when a span is too small. Every walk keeps its split
+// pattern's points on the stack per split level (two levels at most); the shared layout's emit() also keeps
+// one pattern-sized set of arrays per level and one for the leaf: with g++ 12 -O2 about 1.5 KB per level of
+// a walk (4.6 KB in all) and about 13.3 KB for the shared layout's emit() (5.6 KB per split level, 2.1 KB
+// for the leaf).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -173,15 +175,12 @@ class UniformSplit {
         std::span<DomainPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t v = 0, t = 0;
-        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then its
-        // points mapped into the root in place.
+        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then
+        // its points mapped into the root in place.
         void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
             const Counts n = p.counts();
             p.emit(vertices.subspan(v, n.vertices), indices.subspan(t, n.index_count()), v);
-            for (std::uint32_t i = v; i < v + n.vertices; ++i) {
-                const Point q = self.map(s, vertices[i]);
-                vertices[i] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
-            }
+            self.map_in_place(s, vertices.subspan(v, n.vertices));
             v += n.vertices, t += n.index_count();
         }
     };
@@ -223,6 +222,32 @@ class UniformSplit {
             r[k] = (sum + std::int64_t{uniform::fixed_one} / 2) / std::int64_t{uniform::fixed_one};
         }
         return r;
+    }
+
+    // map() of every point, in place. When every corner is a multiple of 65534 (always at depth 0 and 1: a
+    // corner there is the root's pattern point times 65534) the exact sum divided by 65534 is
+    // w a0 + u a1 + v a2 = 65534 a0 + u (a1 - a0) + v (a2 - a0) with a = corner / 65534, a point of the root
+    // below 65534^2 < 2^32: unsigned 32-bit arithmetic (modulo 2^32, exact) gives the same integers.
+    void map_in_place(const Sub& s, std::span<DomainPoint> points) const noexcept {
+        constexpr std::int64_t unit = uniform::fixed_one;
+        bool multiples = true;
+        for (const Point& c : s.corner) multiples = multiples && c[0] % unit == 0 && c[1] % unit == 0;
+        if (!multiples) {
+            for (DomainPoint& d : points) {
+                const Point q = map(s, d);
+                d = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
+            }
+            return;
+        }
+        std::uint32_t base[2], du[2], dv[2];
+        for (int k = 0; k < 2; ++k) {
+            const auto a0 = static_cast<std::uint32_t>(s.corner[0][k] / unit),
+                       a1 = static_cast<std::uint32_t>(s.corner[1][k] / unit),
+                       a2 = static_cast<std::uint32_t>(s.corner[2][k] / unit);
+            base[k] = a0 * uniform::fixed_one, du[k] = a1 - a0, dv[k] = a2 - a0;
+        }
+        for (DomainPoint& d : points)
+            d = {base[0] + d.u * du[0] + d.v * dv[0], base[1] + d.u * du[1] + d.v * dv[1]};
     }
 
     // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
@@ -280,12 +305,21 @@ class UniformSplit {
         return UniformPatch(*tables_, {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])},
                             options_);
     }
-    UniformPatch split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
-        return UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw});
+    // A split node's pattern with its vertices read once (vertex(i) divides on every call); its stack
+    // share is the pattern-sized point array.
+    struct SplitPattern {
+        UniformPatch patch;
+        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point;
+        explicit SplitPattern(const UniformPatch& p) noexcept : patch(p) {
+            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) point[i] = p.vertex(i);
+        }
+    };
+    SplitPattern split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
+        return SplitPattern(UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw}));
     }
     // The subpatch of s on the split pattern's triangle tri (counter-clockwise).
-    Sub child(const Sub& s, const UniformPatch& pattern, const UniformTriangle& tri) const noexcept {
-        const DomainPoint a = pattern.vertex(tri[0]), b = pattern.vertex(tri[1]), c = pattern.vertex(tri[2]);
+    Sub child(const Sub& s, const SplitPattern& pattern, const UniformTriangle& tri) const noexcept {
+        const DomainPoint a = pattern.point[tri[0]], b = pattern.point[tri[1]], c = pattern.point[tri[2]];
         Sub c_sub;
         c_sub.depth = s.depth + 1;
         c_sub.corner = {map(s, a), map(s, b), map(s, c)}; // exact at depth 0 (root corners are multiples)
@@ -300,9 +334,9 @@ class UniformSplit {
             visitor.patch(leaf_patch(s), s, *this);
             return;
         }
-        const UniformPatch pattern = split_pattern(split);
-        for (std::uint32_t k = 0; k < pattern.counts().triangles; ++k)
-            visit(visitor, child(s, pattern, pattern.triangle(k)));
+        const SplitPattern pattern = split_pattern(split);
+        for (std::uint32_t k = 0; k < pattern.patch.counts().triangles; ++k)
+            visit(visitor, child(s, pattern, pattern.patch.triangle(k)));
     }
 
     // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
@@ -408,36 +442,40 @@ class UniformSplit {
             weld_split(w, s, edges, split);
     }
 
-    // A leaf writes each of its vertices at its number and its triangles through that map.
+    // A leaf's bulk emit: its points into a stack buffer, its triangles straight into the output; the
+    // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
+    // written at their numbers, the indices renumbered in place.
     void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number{}; // local vertex -> global
+        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point;    // local, then on the root
+        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number; // local vertex -> global
         const UniformPatch p = leaf_patch(s);
+        const Counts n = p.counts();
+        const std::span<std::uint32_t> indices = w.indices.subspan(w.t, n.index_count());
+        p.emit(std::span<DomainPoint>(point.data(), n.vertices), indices); // sized by emit(): cannot refuse
         // The leaf's own segments per edge equal its edges' counts (the same segments() walk).
         const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
                                              rounded(s.factor[2])};
-        const std::uint32_t boundary = r[0] + r[1] + r[2], all = p.counts().vertices;
-        for (std::uint32_t i = 0; i < all; ++i) {
-            const DomainPoint d = p.vertex(i);
+        const std::uint32_t boundary = r[0] + r[1] + r[2];
+        for (std::uint32_t i = 0; i < boundary; ++i) {
             int j = 0;
             std::uint32_t step = 0;
-            number[i] = i >= boundary           ? w.next + (i - boundary)
-                        : locate(d, r, j, step) ? edges[j].at(step)
-                                                : 0;
-            const Point q = map(s, d);
-            w.vertices[number[i]] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
+            number[i] = locate(point[i], r, j, step) ? edges[j].at(step) : 0;
         }
-        w.next += all - boundary;
-        for (std::uint32_t t = 0; t < p.counts().triangles; ++t) {
-            const UniformTriangle tri = p.triangle(t);
-            for (std::uint32_t c : tri) w.indices[w.t++] = number[c];
-        }
+        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = w.next + (i - boundary);
+        w.next += n.vertices - boundary;
+        map_in_place(s, std::span<DomainPoint>(point.data(), n.vertices));
+        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = point[i];
+        for (std::uint32_t& index : indices) index = number[index];
+        w.t += n.index_count();
     }
 
     // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
     void weld_split(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges,
                     const std::array<std::uint32_t, 3>& split) const noexcept {
-        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number{}; // pattern vertex -> global
-        const UniformPatch pattern = split_pattern(split);
+        // pattern vertex -> global; every entry below the pattern's count is written before it is read
+        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number;
+        const SplitPattern pattern = split_pattern(split);
+        const auto& point = pattern.point;
         // Distances (in final segments) of each split point along this node's edges.
         std::array<std::array<std::uint32_t, uniform::data_max_factor + 1>, 3> offset{};
         for (int j = 0; j < 3; ++j) {
@@ -447,13 +485,13 @@ class UniformSplit {
                     offset[j][p] + segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
         }
         // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
-        const std::uint32_t boundary = split[0] + split[1] + split[2], all = pattern.counts().vertices;
+        const std::uint32_t boundary = split[0] + split[1] + split[2], all = pattern.patch.counts().vertices;
         for (std::uint32_t i = 0; i < all; ++i) {
             int j = 0;
             std::uint32_t step = 0;
-            number[i] = i >= boundary                               ? w.next + (i - boundary)
-                        : locate(pattern.vertex(i), split, j, step) ? edges[j].at(offset[j][step])
-                                                                    : 0;
+            number[i] = i >= boundary                      ? w.next + (i - boundary)
+                        : locate(point[i], split, j, step) ? edges[j].at(offset[j][step])
+                                                           : 0;
         }
         w.next += all - boundary;
         // Interior edges, each owned by its half-edge from the lower to the higher pattern vertex, numbered
@@ -461,22 +499,21 @@ class UniformSplit {
         struct Owned {
             std::uint32_t key, base;
         };
-        std::array<Owned, uniform_split_detail::bounds.interior_edges> owned{};
+        std::array<Owned, uniform_split_detail::bounds.interior_edges> owned; // the first owned_count used
         std::uint32_t owned_count = 0;
         auto along = [&](std::uint32_t a, std::uint32_t b, int& j, std::uint32_t& sa, std::uint32_t& sb) {
             if (a >= boundary || b >= boundary) return false;
             for (j = 0; j < 3; ++j) {
-                const int x = step_on(pattern.vertex(a), j, split[j]),
-                          y = step_on(pattern.vertex(b), j, split[j]);
+                const int x = step_on(point[a], j, split[j]), y = step_on(point[b], j, split[j]);
                 if (x >= 0 && y >= 0) return sa = std::uint32_t(x), sb = std::uint32_t(y), true;
             }
             return false;
         };
         auto edge_segments = [&](std::uint32_t a, std::uint32_t b) {
-            return segments(child_edge_factor(s, pattern.vertex(a), pattern.vertex(b)), s.depth + 1);
+            return segments(child_edge_factor(s, point[a], point[b]), s.depth + 1);
         };
-        for (std::uint32_t t = 0; t < pattern.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.triangle(t);
+        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
+            const UniformTriangle tri = pattern.patch.triangle(t);
             for (int e = 0; e < 3; ++e) {
                 const std::uint32_t a = tri[e], b = tri[(e + 1) % 3];
                 int j = 0;
@@ -498,8 +535,8 @@ class UniformSplit {
             const Line line{number[lo], number[hi], o->base, n};
             return a == lo ? EdgeRef{line, 0, n, true} : EdgeRef{line, n, n, false};
         };
-        for (std::uint32_t t = 0; t < pattern.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.triangle(t);
+        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
+            const UniformTriangle tri = pattern.patch.triangle(t);
             weld_visit(w, child(s, pattern, tri),
                        {edge_ref(tri[0], tri[1]), edge_ref(tri[1], tri[2]), edge_ref(tri[0], tri[2])});
         }
