@@ -1,9 +1,9 @@
-// The procedural CP generator (cp::tessellate, constexpr/ctess/cp_pattern.hpp), the reference the runtime
+// The procedural CP generator (cp::tessellate, constexpr/ctess/cp/pattern.hpp), the reference the runtime
 // reproduces bit for bit: bulk emission, and random access by rebuilding the patch per query (it has no
 // other way to reach one triangle).
-#include <ctess/config.hpp>
-#include <ctess/cp_pattern.hpp>
-#include <ctess/domain_point.hpp>
+#include <ctess/core/config.hpp>
+#include <ctess/core/domain_point.hpp>
+#include <ctess/cp/pattern.hpp>
 
 #include <cstdint>
 #include <vector>

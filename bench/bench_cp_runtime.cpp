@@ -1,11 +1,11 @@
 // The table-driven CP runtime: counts only (cp_counts), bulk emission (CpPatchSetup + emit, both layouts; the
-// portable build of the fast path, which emit() skips where it has AVX2; and CpPatch + emit, which also builds
-// the random-access buckets), and random access to triangle(p) and vertex(i) on a CpPatch, as independent
-// calls (throughput) and as a dependent chain (latency: each call's index waits for the previous call's
-// result).
-#include <ctess/config.hpp>
-#include <ctess/domain_point.hpp>
-#include <ctess/runtime/cp_patch.hpp>
+// portable build of the fast path, which emit() skips where it has AVX2; and CpPatch + emit, which also
+// builds the random-access buckets), and random access to triangle(p) and vertex(i) on a CpPatch, as
+// independent calls (throughput) and as a dependent chain (latency: each call's index waits for the previous
+// call's result).
+#include <ctess/core/config.hpp>
+#include <ctess/core/domain_point.hpp>
+#include <ctess/runtime/cp/patch.hpp>
 
 #include <cstdint>
 #include <span>
@@ -105,7 +105,9 @@ using Setup = ctess::rt::CpPatchSetup;
 } // namespace
 
 BENCHMARK(cp_emit<Setup>)->Name("cp_runtime/emit")->Apply(bench::bulk_factor_sets);
-BENCHMARK(cp_emit<Setup, ctess::Layout::shared>)->Name("cp_runtime/emit_shared")->Apply(bench::bulk_factor_sets);
+BENCHMARK(cp_emit<Setup, ctess::Layout::shared>)
+    ->Name("cp_runtime/emit_shared")
+    ->Apply(bench::bulk_factor_sets);
 BENCHMARK(cp_emit<Current>)->Name("cp_runtime/patch_emit")->Apply(bench::bulk_factor_sets);
 BENCHMARK(cp_emit<PortableEmit>)->Name("cp_runtime/emit_portable")->Apply(bench::bulk_factor_sets);
 BENCHMARK(cp_counts)->Name("cp_runtime/counts")->Apply(bench::random_factor_sets);

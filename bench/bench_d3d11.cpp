@@ -2,8 +2,8 @@
 // integer and fractional_even partitioning. Edges: CP's e0 (v = 0), e1 (u + v = 1) and e2 (u = 0) are D3D's
 // Veq0, Weq0 and Ueq0; the inside factor is the mean of the three. Random access rebuilds the patch per
 // query (the tessellator has no other way to reach one triangle).
-#include <ctess/d3d11_tessellator.hpp>
-#include <ctess/domain_point.hpp>
+#include <ctess/core/domain_point.hpp>
+#include <ctess/d3d11/tessellator.hpp>
 
 #include <array>
 #include <cstdint>

@@ -1,12 +1,12 @@
-// The CPU mesh pipeline (runtime/include/ctess/runtime/mesh_pipeline.hpp) on all cores: a 10,000-patch
-// height-field grid seen from a camera above one corner (factors from about 4 to 35), flat surface. One
-// iteration is the whole frame: every patch's setup (in parallel, equal patch counts), the prefix sum
-// (serial), then every vertex and triangle (in parallel, equal output triangle counts: the patches near the
-// eye have far more). The patches are cut into one contiguous range per thread; each thread
-// runs the library's own per-patch functions on its range, so the library stays allocation- and
-// thread-free. Counters: triangles per second and the thread count (compare 1 and 2 threads for scaling).
-#include <ctess/config.hpp>
-#include <ctess/runtime/mesh_pipeline.hpp>
+// The CPU mesh pipeline (runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp) on all cores: a
+// 10,000-patch height-field grid seen from a camera above one corner (factors from about 4 to 35), flat
+// surface. One iteration is the whole frame: every patch's setup (in parallel, equal patch counts), the
+// prefix sum (serial), then every vertex and triangle (in parallel, equal output triangle counts: the patches
+// near the eye have far more). The patches are cut into one contiguous range per thread; each thread runs the
+// library's own per-patch functions on its range, so the library stays allocation- and thread-free. Counters:
+// triangles per second and the thread count (compare 1 and 2 threads for scaling).
+#include <ctess/core/config.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 #include <algorithm>
 #include <atomic>

@@ -1,7 +1,8 @@
 // OpenSubdiv's Bfr::Tessellation (3.5) at the same integer rates: a triangle parameterization (Loop), facet
 // size 3, the inner rate inferred (floor of the mean). OSD's edge k runs from corner k to corner k + 1, so
 // the rates are (f0, f1, f2) in CP's edge order. Per patch: construct the Tessellation, then GetCoords and
-// GetFacets into buffers made once (OpenSubdiv's documented usage). Random access rebuilds the patch per query.
+// GetFacets into buffers made once (OpenSubdiv's documented usage). Random access rebuilds the patch per
+// query.
 #include <cstdint>
 #include <vector>
 

@@ -2,8 +2,8 @@
 // same patch written element by element through vertex(i) and triangle(p) (what emit() did before its bulk
 // path). UniformSplit is timed in its own file, so that these instantiations do not change how the compiler
 // inlines vertex(i) and triangle(p) into it.
-#include <ctess/domain_point.hpp>
-#include <ctess/runtime/uniform_patch.hpp>
+#include <ctess/core/domain_point.hpp>
+#include <ctess/runtime/uniform/patch.hpp>
 
 #include <cstdint>
 #include <span>

@@ -1,9 +1,9 @@
 // Uniform density's whole-patch emission with construction (bench_uniform.cpp, bench_uniform_split.cpp),
 // timed as cp_runtime/emit and opensubdiv/emit are, on the bulk factor sets, from the N = 16 table.
 #pragma once
-#include <ctess/domain_point.hpp>
-#include <ctess/patch_options.hpp>
-#include <ctess/runtime/uniform_table_set.hpp>
+#include <ctess/core/domain_point.hpp>
+#include <ctess/core/patch_options.hpp>
+#include <ctess/runtime/uniform/table_set.hpp>
 
 #include <cstdint>
 #include <vector>

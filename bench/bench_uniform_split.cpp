@@ -1,6 +1,6 @@
 // UniformSplit (docs/algorithm.md §3.5) on the bulk factor sets above N = 16, both layouts (its shared layout
 // welds the subpatches), construction included.
-#include <ctess/runtime/uniform_split.hpp>
+#include <ctess/runtime/uniform/split.hpp>
 
 #include <benchmark/benchmark.h>
 

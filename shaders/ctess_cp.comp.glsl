@@ -1,7 +1,7 @@
 // ctess CP mesh pipeline, GLSL 4.50 compute (Vulkan). Generated from shaders/ctess_cp.comp.glsl by gen/: the
 // generator fills in the double-brace placeholders (max factor, token counts, table section offsets) and the entry
-// point. The same steps as runtime/include/ctess/runtime/mesh_pipeline.hpp, operation for operation; the
-// CP lookups mirror runtime/include/ctess/runtime/cp_patch.hpp and cp_search.hpp (docs/shaders.md).
+// point. The same steps as runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp, operation for operation; the
+// CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 #version 450
 
 const uint MAX_FACTOR = {{MAX_FACTOR}}u;
@@ -57,7 +57,7 @@ uvec2 add_wide(uvec2 x, uint y) {
 // ---- tables ----
 uint table_u16(uint base, uint i) { return (tables[base + (i >> 1)] >> ((i & 1u) * 16u)) & 0xFFFFu; }
 
-// ---- CP line (constexpr/ctess/cp_line.hpp) ----
+// ---- CP line (constexpr/ctess/cp/line.hpp) ----
 uint round_half_even_shift(uint n, uint s) {
     if (s == 0u) return n;
     uint q = n >> s, r = n & ((1u << s) - 1u), half_ = 1u << (s - 1u);

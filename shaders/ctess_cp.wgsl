@@ -1,7 +1,7 @@
 // ctess CP mesh pipeline, WGSL compute. Generated from shaders/ctess_cp.wgsl by gen/: the generator fills in the double-brace
 // placeholders (max factor, token counts, table section offsets). Four entry points, the same steps as
-// runtime/include/ctess/runtime/mesh_pipeline.hpp and as shaders/ctess_cp.comp.glsl, operation for operation;
-// the CP lookups mirror runtime/include/ctess/runtime/cp_patch.hpp and cp_search.hpp (docs/shaders.md).
+// runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_cp.comp.glsl, operation for operation;
+// the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 
 const MAX_FACTOR: u32 = {{MAX_FACTOR}}u;
 const TOKENS: u32 = {{TOKENS}}u;
@@ -55,7 +55,7 @@ fn add_wide(x: vec2<u32>, y: u32) -> vec2<u32> {
 // ---- tables ----
 fn table_u16(base: u32, i: u32) -> u32 { return (tables[base + (i >> 1u)] >> ((i & 1u) * 16u)) & 0xFFFFu; }
 
-// ---- CP line (constexpr/ctess/cp_line.hpp) ----
+// ---- CP line (constexpr/ctess/cp/line.hpp) ----
 fn round_half_even_shift(n: u32, s: u32) -> u32 {
     if (s == 0u) { return n; }
     let q = n >> s; let r = n & ((1u << s) - 1u); let half_ = 1u << (s - 1u);

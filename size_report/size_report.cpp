@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include <ctess/runtime/cp_table_integrity.hpp>
-#include <ctess/runtime/cp_table_set.hpp>
+#include <ctess/runtime/cp/table_integrity.hpp>
+#include <ctess/runtime/cp/table_set.hpp>
 
-#include "cp_table_objects.hpp"
-#include "uniform_table_objects.hpp"
+#include "cp/table_objects.hpp"
+#include "uniform/table_objects.hpp"
 
 namespace {
 
@@ -202,12 +202,15 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
                 (std::strncmp(name, ".text", 5) == 0 || std::strncmp(name, ".rodata", 7) == 0))
                 sum += size;
         }
-        if (obj.find("cp_tables_") != std::string::npos)
+        // Object names are the sources' stems (size_report/CMakeLists.txt): runtime/src/cp/tables_*.cpp and
+        // the column chunks' cp_tables_256_columns_k wrappers are tables; cp/patch_*.cpp and the probe
+        // runtime.
+        const std::string stem = obj.substr(obj.find_last_of('/') + 1);
+        if (stem.find("tables_") != std::string::npos)
             f.tables += sum;
-        else if (obj.find("cp_runtime_probe") != std::string::npos ||
-                 obj.find("cp_patch_") != std::string::npos)
+        else if (stem.starts_with("cp_runtime_probe") || stem.starts_with("patch_"))
             f.runtime += sum;
-        else if (obj.find("arm_verify_probe") != std::string::npos)
+        else if (stem.starts_with("arm_verify_probe"))
             f.verify += sum;
     }
     unsigned long long text = 0, data = 0;

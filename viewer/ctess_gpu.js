@@ -148,7 +148,7 @@ export class WgslPipeline {
     // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0), or with
     // pattern 'uniform' one uniform-density triangle (factors rounded and clamped to [1, N] by the module): the
     // pattern's (u, v) in 2^-24 and its counter-clockwise triangles (CP: provoking first), read back from the GPU.
-    // A quad is the two triangles of cp::split_quad (constexpr/ctess/cp_quad.hpp): A = (q0, q1, q3) with
+    // A quad is the two triangles of cp::split_quad (constexpr/ctess/cp/quad.hpp): A = (q0, q1, q3) with
     // factors (f0, f0, f3) and B = (q2, q3, q1) with (f2, f0, f1), the diagonal taking f0; B's points map to
     // (1 - u, 1 - v). Both halves keep their own diagonal points, as the CLI's provoking layout does.
     async pattern(factors, pattern = 'cp') {

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <span>
 
-#include <ctess/runtime/cp_patch.hpp>
+#include <ctess/runtime/cp/patch.hpp>
 
 namespace ctess::rt::probe {
 

@@ -3,8 +3,9 @@
 // a PN-evaluated icosphere (triangles, ctess::rt::CpPatch) and a quad torus (cp::split_quad, two CpPatch
 // halves, cp::quad_point, evaluate_quad_surface) with edge factors from each edge's length, welds the output
 // by exact position bits and checks that each surface is closed: the boundary of the sum of its triangles is
-// empty, i.e. every welded edge is used as often in one direction as in the other (zero-area triangles at CP's
-// thresholds cancel their own edges; a crack or a hole leaves edges over). Exit 0 when both are watertight.
+// empty, i.e. every welded edge is used as often in one direction as in the other (zero-area triangles at
+// CP's thresholds cancel their own edges; a crack or a hole leaves edges over). Exit 0 when both are
+// watertight.
 #include <ctess/runtime.hpp>
 
 #include <array>
@@ -56,8 +57,8 @@ struct Welder {
 
 Mesh icosphere() {
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    const float p[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    const float p[12][3] = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
     const std::uint32_t f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                     {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                     {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
@@ -96,14 +97,16 @@ std::size_t tessellate_triangles(const Mesh& m, float density, Welder& out) {
     std::vector<std::uint32_t> indices;
     for (const auto& f : m.faces) {
         const ctess::rt::CpPatch patch(ctess::rt::cp_tables, edge_factor(m, f[0], f[1], density),
-                                       edge_factor(m, f[1], f[2], density), edge_factor(m, f[2], f[0], density));
+                                       edge_factor(m, f[1], f[2], density),
+                                       edge_factor(m, f[2], f[0], density));
         points.resize(patch.vertex_count());
         indices.resize(3 * std::size_t{patch.triangle_count()});
         if (!patch.emit(points, indices)) return 1;
         const SurfaceCorner c[3] = {m.corners[f[0]], m.corners[f[1]], m.corners[f[2]]};
         std::vector<std::uint32_t> id(points.size());
         for (std::size_t i = 0; i < points.size(); ++i) {
-            const std::uint32_t w[3] = {ctess::cp::fixed_one - points[i].u - points[i].v, points[i].u, points[i].v};
+            const std::uint32_t w[3] = {ctess::cp::fixed_one - points[i].u - points[i].v, points[i].u,
+                                        points[i].v};
             id[i] = out.id(ctess::rt::evaluate_surface(c, w, pn).position);
         }
         for (std::size_t t = 0; t < indices.size(); t += 3)
@@ -145,12 +148,15 @@ int main() {
     int failures = 0;
     for (const float density : {2.3f, 7.9f, 21.7f}) {
         Welder sphere, torus;
-        const std::size_t sphere_bad = tessellate_triangles(icosphere(), density, sphere) + sphere.open_edges();
-        const std::size_t torus_bad = tessellate_quads(quad_torus(12, 8), density, torus) + torus.open_edges();
-        std::printf("density %.1f: icosphere %zu triangles, %zu open edges; quad torus %zu triangles, %zu open "
-                    "edges\n",
-                    static_cast<double>(density), sphere.triangles.size(), sphere_bad, torus.triangles.size(),
-                    torus_bad);
+        const std::size_t sphere_bad =
+            tessellate_triangles(icosphere(), density, sphere) + sphere.open_edges();
+        const std::size_t torus_bad =
+            tessellate_quads(quad_torus(12, 8), density, torus) + torus.open_edges();
+        std::printf(
+            "density %.1f: icosphere %zu triangles, %zu open edges; quad torus %zu triangles, %zu open "
+            "edges\n",
+            static_cast<double>(density), sphere.triangles.size(), sphere_bad, torus.triangles.size(),
+            torus_bad);
         failures += sphere_bad != 0 || torus_bad != 0 || sphere.triangles.size() <= 20 ||
                     torus.triangles.size() <= 2 * 96;
     }

@@ -1,14 +1,15 @@
 // libFuzzer target: ctess::rt::CpPatch through its public API, against the procedural cp::tessellate.
 // Input: table set, layout and winding, three edges given as float bit patterns or as raw line states (any
-// token, any lerp), then index queries and span sizes. The CpPatchSetup emit path and cp_counts are checked too. Properties: counts, every vertex and triangle, and emit into exact spans
-// equal the procedural pattern; out-of-range queries give {0, 0} and {0, 0, 0}; emit into a short or empty
-// span returns false and writes nothing.
+// token, any lerp), then index queries and span sizes. The CpPatchSetup emit path and cp_counts are checked
+// too. Properties: counts, every vertex and triangle, and emit into exact spans equal the procedural pattern;
+// out-of-range queries give {0, 0} and {0, 0, 0}; emit into a short or empty span returns false and writes
+// nothing.
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
-#include <ctess/cp_pattern.hpp>
-#include <ctess/runtime/cp_patch.hpp>
+#include <ctess/cp/pattern.hpp>
+#include <ctess/runtime/cp/patch.hpp>
 
 #include "fuzz_input.hpp"
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the D3D11 tessellator (constexpr/ctess/d3d11_tessellator.hpp), every domain and
+// libFuzzer target: the D3D11 tessellator (constexpr/ctess/d3d11/tessellator.hpp), every domain and
 // partitioning, factors as arbitrary float bit patterns. Properties: the count-only call equals the filled
 // one and fits max_*_counts; every index names an emitted point; every point lies in the domain (16.16, and
 // u + v <= 1 on triangles); counter-clockwise output is the clockwise output with each triangle's last two
@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include <ctess/d3d11_tessellator.hpp>
+#include <ctess/d3d11/tessellator.hpp>
 
 #include "fuzz_input.hpp"
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the CPU mesh pipeline (runtime/include/ctess/runtime/mesh_pipeline.hpp) on small
+// libFuzzer target: the CPU mesh pipeline (runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp) on small
 // arbitrary meshes: vertex floats as any bit pattern (NaN, inf, zero-area triangles), indices in and out of
 // range, any dice and surface options, optionally a base triangle repeated tens of thousands of times (totals
 // past the limits), then patch records tampered with before emit. Properties: setup_patches is ok or a limit;
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include <ctess/runtime/mesh_pipeline.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 #include "fuzz_input.hpp"
 

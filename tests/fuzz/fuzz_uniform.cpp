@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include <ctess/runtime/uniform_split.hpp>
+#include <ctess/runtime/uniform/split.hpp>
 
 #include "fuzz_input.hpp"
 

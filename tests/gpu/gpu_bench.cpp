@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <ctess/runtime/cp_table_set.hpp>
+#include <ctess/runtime/cp/table_set.hpp>
 
 #include "gpu_pipeline.hpp"
 

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <sys/wait.h>
 
-#include <ctess/runtime/mesh_pipeline.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 namespace ctess::gpu_test {
 
@@ -79,8 +79,8 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     const auto* p = static_cast<const std::uint32_t*>(vk.mapped(b_patches));
     out.patches.assign(p, p + std::size_t{n} * record_words + 2);
     if (limits.counts_only) return out;
-    // The shader's u32 totals wrap past 2^32 (it then writes the overflow marker): recount them in 64 bits and
-    // refuse a mesh past the pipeline's limits before sizing the outputs, as the CPU pipeline does.
+    // The shader's u32 totals wrap past 2^32 (it then writes the overflow marker): recount them in 64 bits
+    // and refuse a mesh past the pipeline's limits before sizing the outputs, as the CPU pipeline does.
     std::uint64_t sum_v = 0, sum_t = 0;
     for (std::size_t t = 0; t < n; ++t) {
         sum_v += out.patches[t * record_words + 7];
@@ -105,8 +105,8 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
 }
 
 // Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[11] (the last one the pattern), vertex
-// floats, index count, then the vertex floats and the indices. Result file: "CTGO", patch words, vertex words, index words, milliseconds
-// (float bits), then the three arrays.
+// floats, index count, then the vertex floats and the indices. Result file: "CTGO", patch words, vertex
+// words, index words, milliseconds (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
                         RunLimits limits) {

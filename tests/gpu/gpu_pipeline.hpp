@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <ctess/runtime/cp_table_set.hpp>
+#include <ctess/runtime/cp/table_set.hpp>
 
 #include "pipeline_output.hpp"
 #include "vk_compute.hpp"
@@ -28,8 +28,9 @@ inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
 // Both throw std::runtime_error on failure, and when the totals overflow (unless counts_only).
 PipelineOutput run_vulkan(VkCompute& vk, const std::string& shader_dir, unsigned max_factor,
                           const Scene& scene, RunLimits limits = {});
-// Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back. `node` is a shell command
-// prefix: the node binary, optionally preceded by environment assignments (the backend, tests/gpu/CMakeLists.txt).
+// Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back. `node` is a shell
+// command prefix: the node binary, optionally preceded by environment assignments (the backend,
+// tests/gpu/CMakeLists.txt).
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
                         RunLimits limits = {});

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include <ctess/runtime/mesh_pipeline.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 namespace ctess::gpu_test {
 

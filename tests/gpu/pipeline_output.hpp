@@ -1,6 +1,6 @@
 // The CP mesh pipeline's outputs as the GPU buffers lay them out, the CPU reference run that fills them
-// (runtime/include/ctess/runtime/mesh_pipeline.hpp), and their comparison. No GPU API here: the CPU tests use
-// it too.
+// (runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp), and their comparison. No GPU API here: the CPU
+// tests use it too.
 #pragma once
 #include <array>
 #include <chrono>
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <ctess/runtime/mesh_pipeline.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 #include "gpu_scenes.hpp"
 
@@ -67,7 +67,8 @@ inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) 
     const rt::MeshView mesh = scene.view();
     std::vector<rt::PatchRecord> patches(mesh.triangle_count);
     rt::PipelineTotals totals;
-    if (const rt::PipelineStatus st = rt::setup_patches(tables, rt::uniform_tables, mesh, scene.options, patches, totals);
+    if (const rt::PipelineStatus st =
+            rt::setup_patches(tables, rt::uniform_tables, mesh, scene.options, patches, totals);
         st != rt::PipelineStatus::ok)
         throw std::runtime_error(std::string("setup_patches: ") + rt::pipeline_status_message(st));
     std::vector<rt::TessVertex> vertices(totals.vertices);

@@ -44,7 +44,7 @@ const maxGroups = Number(process.env.CTESS_MAX_WORKGROUPS ?? 65535);
 const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
 const layoutJson = JSON.parse(readFileSync(`${dir}/ctess_cp_${max}.layout.json`, 'utf8'));
 const recordWords = layoutJson.patch_words;
-// The pipeline's limits (runtime/include/ctess/runtime/mesh_pipeline.hpp): past them, exit status 3.
+// The pipeline's limits (runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp): past them, exit status 3.
 const maxPatches = 65535 * 64, maxVertices = Math.floor(0xFFFFFFFF / 10), maxTriangles = Math.floor(0xFFFFFFFF / 3);
 const pastLimits = (msg) => { console.error(`run_wgsl: ${msg}: past the pipeline's limits (${maxPatches} patches, ` +
                                             `${maxVertices} vertices, ${maxTriangles} triangles)`); process.exit(3); };

@@ -1,14 +1,14 @@
 // The generated shaders against the CPU mesh pipeline, on one backend per build of this file:
-// CTESS_GPU_VULKAN (GLSL -> SPIR-V on lavapipe) or CTESS_GPU_DAWN (WGSL on Dawn: its GLES backend on llvmpipe,
-// or its Vulkan backend on SwiftShader, as tests/gpu/CMakeLists.txt sets the environment).
-// Both maximum factors run in every build. No test skips: a missing driver or node module is a failure.
+// CTESS_GPU_VULKAN (GLSL -> SPIR-V on lavapipe) or CTESS_GPU_DAWN (WGSL on Dawn: its GLES backend on
+// llvmpipe, or its Vulkan backend on SwiftShader, as tests/gpu/CMakeLists.txt sets the environment). Both
+// maximum factors run in every build. No test skips: a missing driver or node module is a failure.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <memory>
 #include <string>
 
-#include <ctess/runtime/cp_table_set.hpp>
+#include <ctess/runtime/cp/table_set.hpp>
 
 #include "gpu_checks.hpp"
 #include "gpu_pipeline.hpp"
@@ -28,7 +28,9 @@ const char* const backend_name = "Vulkan (lavapipe)";
 // Under the asan-ubsan preset LeakSanitizer finds 128 bytes that lavapipe reallocs and never frees, in a
 // module the Vulkan loader has unloaded by exit, so no suppression can name it: leak checks are off for the
 // Vulkan tests only. (A hook ASan reads at start-up; without ASan nothing calls it.)
-extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
+extern "C" const char* __asan_default_options() {
+    return "detect_leaks=0";
+}
 namespace {
 VkCompute& device() {
     static std::unique_ptr<VkCompute> vk = std::make_unique<VkCompute>();
@@ -46,7 +48,8 @@ PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name
     work += name;
     work += "_";
     work += std::to_string(max_factor);
-    return run_dawn(CTESS_DAWN_ENV CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work, limits);
+    return run_dawn(CTESS_DAWN_ENV CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work,
+                    limits);
 }
 #else
 #error "define CTESS_GPU_VULKAN or CTESS_GPU_DAWN"

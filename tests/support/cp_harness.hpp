@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <ctess/cp_line.hpp>
-#include <ctess/cp_pattern.hpp>
+#include <ctess/cp/line.hpp>
+#include <ctess/cp/pattern.hpp>
 
 #include "mesh_checks.hpp"
 

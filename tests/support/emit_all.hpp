@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <ctess/domain_point.hpp>
+#include <ctess/core/domain_point.hpp>
 
 #include <catch2/catch.hpp>
 

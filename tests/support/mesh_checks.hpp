@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include <ctess/domain_point.hpp>
+#include <ctess/core/domain_point.hpp>
 
 namespace ctess::test {
 

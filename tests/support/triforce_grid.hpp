@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <ctess/domain_point.hpp>
+#include <ctess/core/domain_point.hpp>
 
 namespace ctess::test {
 

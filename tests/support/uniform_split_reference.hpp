@@ -1,8 +1,10 @@
-// Test-only reference for the UniformSplit speed work: runtime/include/ctess/runtime/uniform_split.hpp of
+// Test-only reference for the UniformSplit speed work: runtime/include/ctess/runtime/uniform/split.hpp of
 // commit 2407141fa08959c89b5fdef2faca15d042e4a2c4, unchanged but for its namespace (ctess::rt ->
 // ctess::rt::reference) and its include of uniform_patch.hpp. test_uniform_split_reference.cpp asserts that
 // the optimised UniformSplit writes exactly what this one writes. Do not edit (regenerate with:
-// git show 2407141f:runtime/include/ctess/runtime/uniform_split.hpp | sed -e 's/^namespace ctess::rt {/namespace ctess::rt::reference {/' -e 's/^} \/\/ namespace ctess::rt$/} \/\/ namespace ctess::rt::reference/' -e 's|#include "uniform_patch.hpp"|#include <ctess/runtime/uniform_patch.hpp>|').
+// git show 2407141f:runtime/include/ctess/runtime/uniform/split.hpp | sed -e 's/^namespace ctess::rt
+// {/namespace ctess::rt::reference {/' -e 's/^} \/\/ namespace ctess::rt$/} \/\/ namespace
+// ctess::rt::reference/' -e 's|#include "uniform_patch.hpp"|#include <ctess/runtime/uniform/patch.hpp>|').
 // Uniform-density splitting above the table (docs/algorithm.md §3.5, seed 001): a patch whose factors exceed
 // the table's maximum N is split with the table's own pattern for the split factors, and each subpatch is
 // diced (or split once more) with the table.
@@ -47,13 +49,13 @@
 #include <cstdint>
 #include <span>
 
-#include <ctess/counts.hpp>
-#include <ctess/domain_point.hpp>
-#include <ctess/patch_options.hpp>
-#include <ctess/uniform_metric.hpp>
-#include <ctess/uniform_pattern.hpp>
+#include <ctess/core/counts.hpp>
+#include <ctess/core/domain_point.hpp>
+#include <ctess/core/patch_options.hpp>
+#include <ctess/uniform/metric.hpp>
+#include <ctess/uniform/pattern.hpp>
 
-#include <ctess/runtime/uniform_patch.hpp>
+#include <ctess/runtime/uniform/patch.hpp>
 
 namespace ctess::rt::reference {
 
@@ -178,8 +180,8 @@ class UniformSplit {
         std::span<DomainPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t v = 0, t = 0;
-        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then its
-        // points mapped into the root in place.
+        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then
+        // its points mapped into the root in place.
         void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
             const Counts n = p.counts();
             p.emit(vertices.subspan(v, n.vertices), indices.subspan(t, n.index_count()), v);

@@ -8,7 +8,7 @@ if(NOT GXX OR NOT CLANGXX)
 endif()
 file(MAKE_DIRECTORY ${WORK})
 set(common -std=c++20 -O1 -I${SRC}/constexpr -I${SRC}/runtime/include -I${SRC}/runtime/src)
-set(sources ${SRC}/runtime/src/uniform_tables_11.cpp ${SRC}/runtime/src/uniform_tables_16.cpp
+set(sources ${SRC}/runtime/src/uniform/tables_11.cpp ${SRC}/runtime/src/uniform/tables_16.cpp
             ${SRC}/tests/uniform/dump_uniform_tables.cpp)
 execute_process(COMMAND ${GXX} ${common} -fconstexpr-ops-limit=4294967296 -fconstexpr-loop-limit=4194304
                         ${sources} -o ${WORK}/dump_gxx RESULT_VARIABLE rc1)

@@ -2,7 +2,7 @@
 // (tests/uniform/compare_compilers.cmake).
 #include <cstdio>
 
-#include "uniform_table_objects.hpp"
+#include "uniform/table_objects.hpp"
 
 int main() {
     std::fwrite(&ctess::rt::detail::uniform_table_11, 1, sizeof ctess::rt::detail::uniform_table_11, stdout);

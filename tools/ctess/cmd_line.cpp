@@ -2,8 +2,8 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 
-#include <ctess/config.hpp>
-#include <ctess/line_modes.hpp>
+#include "line_modes.hpp"
+#include <ctess/core/config.hpp>
 
 #include <string>
 

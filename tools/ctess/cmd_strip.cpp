@@ -4,7 +4,7 @@
 #include "file_output.hpp"
 #include "surface_formats.hpp"
 
-#include <ctess/grid_strip.hpp>
+#include <ctess/surface/grid_strip.hpp>
 
 #include <vector>
 

@@ -4,7 +4,7 @@
 #include "file_output.hpp"
 #include "svg_writer.hpp"
 
-#include <ctess/line_modes.hpp>
+#include "line_modes.hpp"
 
 #include <algorithm>
 #include <cmath>

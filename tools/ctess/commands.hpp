@@ -2,7 +2,7 @@
 #pragma once
 #include <string>
 
-#include <ctess/line_modes.hpp>
+#include "line_modes.hpp"
 
 #include "cli_args.hpp"
 #include "mesh.hpp"

@@ -2,9 +2,9 @@
 
 #include "mesh.hpp"
 
-#include <ctess/cp_orientation.hpp>
-#include <ctess/cp_pattern.hpp>
-#include <ctess/d3d11_tessellator.hpp>
+#include <ctess/cp/orientation.hpp>
+#include <ctess/cp/pattern.hpp>
+#include <ctess/d3d11/tessellator.hpp>
 
 #include <algorithm>
 #include <random>

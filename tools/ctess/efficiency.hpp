@@ -28,7 +28,7 @@ struct EfficiencySummary {
 // Equal factors, two-high-one-low triples and `random_count` seeded random triples in [2, 64].
 // One row: CP (as given and oriented by cp::smallest_edge_rotation) against D3D11 fractional_even.
 EfficiencyRow efficiency_row(const std::array<float, 3>& factors, unsigned max_factor,
-                            const std::string& group = "custom");
+                             const std::string& group = "custom");
 std::vector<EfficiencyRow> efficiency_rows(unsigned max_factor, unsigned random_count, std::uint32_t seed);
 EfficiencySummary summarize(const std::vector<EfficiencyRow>& rows);
 std::string efficiency_markdown(const std::vector<EfficiencyRow>& rows, const EfficiencySummary& s,

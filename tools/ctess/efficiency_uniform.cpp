@@ -1,10 +1,10 @@
 #include "efficiency_uniform.hpp"
 
-#include <ctess/cp_pattern.hpp>
-#include <ctess/d3d11_tessellator.hpp>
-#include <ctess/runtime/uniform_patch.hpp>
-#include <ctess/runtime/uniform_split.hpp>
-#include <ctess/uniform_metric.hpp>
+#include <ctess/cp/pattern.hpp>
+#include <ctess/d3d11/tessellator.hpp>
+#include <ctess/runtime/uniform/patch.hpp>
+#include <ctess/runtime/uniform/split.hpp>
+#include <ctess/uniform/metric.hpp>
 
 #include <algorithm>
 #include <cmath>

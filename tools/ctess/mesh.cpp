@@ -2,9 +2,9 @@
 
 #include "cli_args.hpp"
 
-#include <ctess/cp_pattern.hpp>
-#include <ctess/cp_quad.hpp>
-#include <ctess/d3d11_tessellator.hpp>
+#include <ctess/cp/pattern.hpp>
+#include <ctess/cp/quad.hpp>
+#include <ctess/d3d11/tessellator.hpp>
 
 #include <array>
 #include <limits>
@@ -15,8 +15,8 @@
 namespace ctess::cli {
 
 const std::vector<std::string>& pattern_modes() {
-    static const std::vector<std::string> modes = {"cp", "d3d11-integer", "d3d11-pow2", "d3d11-odd",
-                                                   "d3d11-even", "uniform"};
+    static const std::vector<std::string> modes = {"cp",        "d3d11-integer", "d3d11-pow2",
+                                                   "d3d11-odd", "d3d11-even",    "uniform"};
     return modes;
 }
 

@@ -1,6 +1,6 @@
 // A tessellated patch as the CLI handles it: exact domain points, primitives, and what produced them.
 #pragma once
-#include <ctess/domain_point.hpp>
+#include <ctess/core/domain_point.hpp>
 
 #include <array>
 #include <cstdint>

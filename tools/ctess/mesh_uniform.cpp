@@ -3,8 +3,8 @@
 #include "cli_args.hpp"
 #include "mesh.hpp"
 
-#include <ctess/runtime/uniform_patch.hpp>
-#include <ctess/runtime/uniform_split.hpp>
+#include <ctess/runtime/uniform/patch.hpp>
+#include <ctess/runtime/uniform/split.hpp>
 
 #include <fmt/core.h>
 

@@ -2,7 +2,7 @@
 
 #include "svg_writer.hpp"
 
-#include <ctess/grid_strip.hpp>
+#include <ctess/surface/grid_strip.hpp>
 
 #include <algorithm>
 #include <cmath>

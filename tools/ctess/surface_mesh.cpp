@@ -2,8 +2,8 @@
 
 #include "cli_args.hpp"
 
-#include <ctess/runtime/chord_error.hpp>
-#include <ctess/runtime/parametric_surfaces.hpp>
+#include <ctess/runtime/surface/chord_error.hpp>
+#include <ctess/runtime/surface/parametric.hpp>
 
 #include <stdexcept>
 

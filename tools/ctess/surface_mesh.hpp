@@ -1,8 +1,8 @@
 // An adaptively tessellated built-in surface as the CLI handles it (ctess surface): the request, the mesh
 // copied out of the library's workspace, and the comparison with a uniform grid of the same chord error.
 #pragma once
-#include <ctess/conforming_bintree.hpp>
-#include <ctess/runtime/adaptive_surface.hpp>
+#include <ctess/runtime/surface/adaptive.hpp>
+#include <ctess/surface/conforming_bintree.hpp>
 
 #include <cstdint>
 #include <string>

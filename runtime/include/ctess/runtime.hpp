@@ -1,4 +1,5 @@
-// ctess's front door for the embedded runtime: O(1) patches over the compile-time tables, the CPU mesh
+// ctess's umbrella header for the embedded runtime (one front door per feature: runtime/cp.hpp, uniform.hpp,
+// pipeline.hpp, surface.hpp): O(1) patches over the compile-time tables, the CPU mesh
 // pipeline and crack-free surface evaluation. Link ctess::runtime (the configured tables, named
 // ctess::rt::cp_tables and ctess::rt::uniform_tables in code), or pick per table set: ctess::runtime_64 /
 // ctess::runtime_256 (cp_tables_64 / cp_tables_256), ctess::uniform_runtime_11 / _16.
@@ -11,15 +12,7 @@
 
 #include <ctess/ctess.hpp>
 
-#include "runtime/adaptive_surface.hpp"
-#include "runtime/chord_error.hpp"
-#include "runtime/cp_patch.hpp"
-#include "runtime/cp_table_set.hpp"
-#include "runtime/mesh_pipeline.hpp"
-#include "runtime/parametric_surfaces.hpp"
-#include "runtime/surface_eval.hpp"
-#include "runtime/tess_factor.hpp"
-#include "runtime/uniform_patch.hpp"
-#include "runtime/uniform_pipeline_patch.hpp"
-#include "runtime/uniform_split.hpp"
-#include "runtime/uniform_table_set.hpp"
+#include "runtime/cp.hpp"
+#include "runtime/pipeline.hpp"
+#include "runtime/surface.hpp"
+#include "runtime/uniform.hpp"

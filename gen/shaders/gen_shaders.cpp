@@ -1,0 +1,166 @@
+// ctess_gen_shaders: writes, for one maximum factor, the CP table blob (with the configured uniform-density
+// tables, CTESS_UNIFORM_MAX_FACTOR, in its last sections) and the compute shaders that read it.
+//
+//   ctess_gen_shaders --max 64 --shaders <repo>/shaders --out <dir>
+//
+// Output (docs/shaders.md):
+//   ctess_cp_<max>.tables.bin     the CP table blob (u32 little-endian; gen/shaders/table_blob.hpp), for WGSL
+//   ctess_cp_<max>.uniform.tables.bin  the same plus the uniform-density sections, for GLSL
+//   ctess_cp_<max>.uniform.layout.json  the uniform blob's size and its uniform sections' offsets
+//   ctess_cp_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
+//   ctess_cp_<max>.wgsl           WGSL, all four entry points in one module
+//   ctess_cp_<max>.layout.json    the blob's section offsets and size, and the entry points
+// Exit status: 0, or 2 with a message for bad arguments, 1 when a file cannot be read or written.
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <ctess/cp/tables_layout.hpp>
+#include <ctess/runtime/cp/table_set.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
+#include <ctess/runtime/uniform/table_set.hpp>
+
+#include "shader_template.hpp"
+#include "table_blob.hpp"
+
+namespace {
+
+struct Pass {
+    const char* name;  // file suffix
+    const char* entry; // entry point
+    unsigned local_size;
+};
+constexpr Pass passes[] = {{"patch_setup", "ctess_patch_setup", 64},
+                           {"prefix_sum", "ctess_prefix_sum", 128},
+                           {"emit_vertices", "ctess_emit_vertices", 64},
+                           {"emit_triangles", "ctess_emit_triangles", 64}};
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        std::string why = "cannot read ";
+        why += path;
+        throw std::runtime_error(why);
+    }
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void write_file(const std::string& path, std::string_view data) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(data.data(), static_cast<std::streamsize>(data.size()));
+    if (!out) {
+        std::string why = "cannot write ";
+        why += path;
+        throw std::runtime_error(why);
+    }
+}
+
+// The blob's section offsets and the other values the templates take (both templates read every one).
+std::map<std::string, std::string, std::less<>> constants(const ctess::gen::TableBlobLayout& l) {
+    std::map<std::string, std::string, std::less<>> v;
+    auto put = [&v](const char* name, std::uint32_t value) { v.emplace(name, std::to_string(value)); };
+    put("MAX_FACTOR", l.max_factor);
+    put("TOKENS", l.tokens);
+    put("SHAPES", l.shapes);
+    put("TOKEN_RANGE", l.token_range);
+    put("TOKEN_RECORD", l.token_record);
+    put("POINT", l.point);
+    put("COLUMN_RECORD", l.column_record);
+    put("COLUMN_POOL", l.column_pool);
+    put("GAP_OFFSET", l.gap_offset);
+    put("GAP_WORD", l.gap_word);
+    put("T1_LAST_FAN", l.t1_last_fan);
+    put("SEARCH_WINDOW", ctess::cp::tables::search_window);
+    put("UNIFORM_MAX_FACTOR", l.uniform_max_factor);
+    put("UNIFORM_OFFSET", l.uniform_offset);
+    put("UNIFORM_INTERIOR", l.uniform_interior);
+    put("UNIFORM_TRIANGLE", l.uniform_triangle);
+    return v;
+}
+
+int usage(const char* why) {
+    std::fprintf(stderr,
+                 "ctess_gen_shaders: %s\nusage: ctess_gen_shaders --max 64|256 --shaders DIR --out DIR\n",
+                 why);
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::string max, shaders, out;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (i + 1 >= argc) return usage("missing value after an option");
+        if (arg == "--max")
+            max = argv[++i];
+        else if (arg == "--shaders")
+            shaders = argv[++i];
+        else if (arg == "--out")
+            out = argv[++i];
+        else
+            return usage("unknown option");
+    }
+    if (max != "64" && max != "256") return usage("--max must be 64 or 256");
+    if (shaders.empty() || out.empty()) return usage("--shaders and --out are required");
+    const ctess::rt::CpTableSet& tables = max == "64" ? ctess::rt::cp_tables_64 : ctess::rt::cp_tables_256;
+    try {
+        const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables, ctess::rt::uniform_tables);
+        const std::string prefix = out + "/ctess_cp_" + max;
+        // Two blobs: .uniform.tables.bin, every section (both patterns), and .tables.bin, the CP sections and
+        // the padding only (enough for the CP pattern; docs/shaders.md).
+        write_file(prefix + ".uniform.tables.bin",
+                   std::string_view(reinterpret_cast<const char*>(blob.words.data()), blob.words.size() * 4));
+        std::vector<std::uint32_t> cp_words(blob.words.begin(),
+                                            blob.words.begin() + blob.layout.uniform_offset);
+        cp_words.insert(cp_words.end(), ctess::gen::blob_padding, 0u);
+        write_file(prefix + ".tables.bin",
+                   std::string_view(reinterpret_cast<const char*>(cp_words.data()), cp_words.size() * 4));
+
+        const std::string glsl = read_file(shaders + "/ctess_cp.comp.glsl");
+        for (const Pass& p : passes) {
+            auto v = constants(blob.layout);
+            v.emplace("LOCAL_SIZE", std::to_string(p.local_size));
+            v.emplace("ENTRY", p.entry);
+            write_file(prefix + "_" + p.name + ".comp", ctess::gen::fill_template(glsl, v));
+        }
+        const std::string wgsl = read_file(shaders + "/ctess_cp.wgsl");
+        write_file(prefix + ".wgsl", ctess::gen::fill_template(wgsl, constants(blob.layout)));
+
+        const ctess::gen::TableBlobLayout& l = blob.layout;
+        std::ostringstream json;
+        json << "{\n  \"max_tess_factor\": " << l.max_factor << ",\n  \"tables_words\": " << cp_words.size()
+             << ",\n  \"tables_bytes\": " << cp_words.size() * 4
+             << ",\n  \"sections\": {\"token_range\": " << l.token_range
+             << ", \"token_record\": " << l.token_record << ", \"point\": " << l.point
+             << ", \"column_record\": " << l.column_record << ", \"column_pool\": " << l.column_pool
+             << ", \"gap_offset\": " << l.gap_offset << ", \"gap_word\": " << l.gap_word
+             << ", \"t1_last_fan\": " << l.t1_last_fan << "},\n  \"passes\": [";
+        for (std::size_t k = 0; k < std::size(passes); ++k)
+            json << (k ? ", " : "") << "{\"name\": \"" << passes[k].name << "\", \"entry\": \""
+                 << passes[k].entry << "\", \"workgroup_size\": " << passes[k].local_size << "}";
+        json << "],\n  \"patch_words\": " << sizeof(ctess::rt::PatchRecord) / 4
+             << ",\n  \"setup_block_word\": 16,\n  \"vertex_words\": 10,\n  \"mesh_vertex_floats\": 8\n}\n";
+        write_file(prefix + ".layout.json", json.str());
+        // The uniform blob: the same CP sections, then the uniform-density ones (docs/shaders.md).
+        std::ostringstream uniform_json;
+        uniform_json << "{\n  \"max_tess_factor\": " << l.max_factor
+                     << ",\n  \"uniform_max_factor\": " << l.uniform_max_factor
+                     << ",\n  \"tables_words\": " << l.words << ",\n  \"tables_bytes\": " << l.words * 4
+                     << ",\n  \"sections\": {\"uniform_offset\": " << l.uniform_offset
+                     << ", \"uniform_interior\": " << l.uniform_interior
+                     << ", \"uniform_triangle\": " << l.uniform_triangle << "}\n}\n";
+        write_file(prefix + ".uniform.layout.json", uniform_json.str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ctess_gen_shaders: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

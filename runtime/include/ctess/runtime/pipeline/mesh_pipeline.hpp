@@ -1,0 +1,404 @@
+// The CP mesh pipeline on the CPU: per-edge tessellation factors (tess_factor.hpp), the orientation rule per
+// base triangle (cp_orientation.hpp), per-patch counts and their exclusive prefix sum, then every output
+// vertex (exact barycentrics, then position, normal and uv by surface_eval.hpp) and every output triangle
+// (indices in provoking-vertex order). The generated GLSL and WGSL shaders run the same steps with the same
+// formulas and the same record layouts; this is the reference they are tested against.
+//
+// Two pattern families (PipelineOptions::pattern): CP (docs/algorithm.md §2, the default) or uniform density
+// (§3, uniform_pipeline_patch.hpp): each base triangle gets UniformPatch's pattern of its three edge factors,
+// rounded and clamped to [1, N] of the uniform tables (no splitting above N in the pipeline), with its
+// barycentrics converted exactly to 2^-24 base weights. The uniform pattern needs the overloads that take a
+// UniformTableSet as well; the CP-only overloads refuse it (PipelineStatus::no_uniform_tables).
+//
+// Counts first, then fills (as OpenSubdiv's Bfr::Tessellation): nothing here allocates.
+//
+//   std::vector<PatchRecord> patches(mesh.triangle_count);
+//   PipelineTotals totals;
+//   if (setup_patches(cp_tables_64, mesh, options, patches, totals) != PipelineStatus::ok) ...
+//   std::vector<TessVertex> vertices(totals.vertices);
+//   std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
+//   emit_mesh(cp_tables_64, mesh, options, patches, vertices, indices);
+//
+// Bad input: a base triangle with a vertex index >= vertex_count is culled (no vertices, no triangles);
+// factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors: T0 or the
+// maximum). Every other failure is a PipelineStatus other than ok, and pipeline_status_message() says why:
+// spans that are too small, a mesh past the GPU pipeline's limits (totals are summed in 64 bits and checked
+// against max_pipeline_patches/vertices/triangles, so they never wrap), or patch records that setup_patches
+// did not produce. On a failure emit_mesh writes nothing and setup_patches leaves totals unchanged.
+#pragma once
+#include <cstdint>
+#include <span>
+
+#include <ctess/cp/line.hpp>
+#include <ctess/cp/orientation.hpp>
+
+#include "tess_factor.hpp"
+#include <ctess/runtime/cp/patch.hpp>
+#include <ctess/runtime/cp/setup_block.hpp>
+#include <ctess/runtime/cp/table_set.hpp>
+#include <ctess/runtime/surface/eval.hpp>
+#include <ctess/runtime/uniform/pipeline_words.hpp>
+
+namespace ctess::rt {
+
+inline constexpr unsigned mesh_vertex_floats = 8; // position xyz, normal xyz, uv
+
+struct MeshView {
+    const float* vertices = nullptr; // mesh_vertex_floats per vertex
+    std::uint32_t vertex_count = 0;
+    const std::uint32_t* indices = nullptr; // 3 per base triangle, counter-clockwise
+    std::uint32_t triangle_count = 0;
+};
+
+// The pattern family of every patch; the shaders read it as params word 10 (docs/shaders.md).
+enum class Pattern : std::uint32_t { cp = 0, uniform = 1 };
+
+struct PipelineOptions {
+    DiceOptions dice{};
+    SurfaceOptions surface{};
+    Pattern pattern = Pattern::cp;
+};
+
+// One base triangle (patch). 48 words: the GPU's patch buffer uses this layout. Words 16-47 are the setup
+// block the GPU's emit passes read instead of redoing the patch setup (patch_setup_block.hpp). A uniform
+// patch has rotation 0, token[k] = the integer factor of base edge Ek, t16 zero, and the uniform setup words
+// (uniform_pipeline_patch.hpp).
+struct PatchRecord {
+    std::uint32_t rotation = 0;  // cp::Rotation::shift: pattern vertex v_k is base vertex (k + rotation) % 3
+    std::uint32_t token[3] = {}; // pattern edges e0, e1, e2: CP line state
+    std::uint32_t t16[3] = {};
+    std::uint32_t vertex_count = 0;
+    std::uint32_t triangle_count = 0;
+    std::uint32_t first_vertex = 0; // exclusive prefix sums over the patches
+    std::uint32_t first_triangle = 0;
+    float factor[3] = {}; // base edges E0 = w0w1, E1 = w1w2, E2 = w2w0, before clamping
+    std::uint32_t reserved[2] = {};
+    std::uint32_t setup[setup_word::words] = {};
+};
+static_assert(sizeof(PatchRecord) == 192);
+
+// One output vertex. 10 words: the GPU's vertex buffer uses this layout.
+struct TessVertex {
+    std::uint32_t u = 0, v = 0; // base weights of w1 and w2, units of 2^-24 (w0 = 2^24 - u - v)
+    float position[3] = {};
+    float normal[3] = {};
+    float uv[2] = {};
+};
+static_assert(sizeof(TessVertex) == 40);
+
+struct PipelineTotals {
+    std::uint32_t vertices = 0;
+    std::uint32_t triangles = 0;
+};
+
+enum class PipelineStatus : std::uint8_t {
+    ok,
+    span_too_small,     // the patches, vertices or indices span is shorter than the counts need
+    too_many_patches,   // more base triangles than max_pipeline_patches
+    too_many_vertices,  // total vertices past max_pipeline_vertices
+    too_many_triangles, // total triangles past max_pipeline_triangles
+    bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
+    no_uniform_tables,  // Pattern::uniform through an overload without a UniformTableSet
+    bad_option,         // a Pattern value other than cp and uniform
+};
+
+// The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
+// dimension of workgroups of 64, at most 65,535 of them (the smallest maxComputeWorkGroupCount Vulkan and
+// WebGPU guarantee); the emit passes address vertex and index words with 32-bit integers.
+inline constexpr std::uint32_t max_dispatch_workgroups = 65535;
+inline constexpr std::uint32_t patch_setup_workgroup = 64;
+inline constexpr std::uint64_t max_pipeline_patches =
+    std::uint64_t{max_dispatch_workgroups} * patch_setup_workgroup;
+inline constexpr std::uint64_t max_pipeline_vertices = 0xFFFFFFFFu / (sizeof(TessVertex) / 4); // 429,496,729
+inline constexpr std::uint64_t max_pipeline_triangles = 0xFFFFFFFFu / 3; // 1,431,655,765
+
+constexpr const char* pipeline_status_message(PipelineStatus status) {
+    switch (status) {
+    case PipelineStatus::ok:
+        return "ok";
+    case PipelineStatus::span_too_small:
+        return "an output span is smaller than the counts need";
+    case PipelineStatus::too_many_patches:
+        return "the mesh has more base triangles than the patch setup dispatch allows (65,535 x 64)";
+    case PipelineStatus::too_many_vertices:
+        return "the mesh needs more output vertices than 32-bit vertex words can address (429,496,729)";
+    case PipelineStatus::too_many_triangles:
+        return "the mesh needs more output triangles than 32-bit index words can address (1,431,655,765)";
+    case PipelineStatus::bad_patch_record:
+        return "a patch record was not produced by setup_patches";
+    case PipelineStatus::no_uniform_tables:
+        return "the uniform pattern needs a UniformTableSet (the overloads that take one)";
+    case PipelineStatus::bad_option:
+        return "the pattern option is neither cp nor uniform";
+    }
+    return "unknown status";
+}
+
+// Checks a run's size against the limits, in 64 bits (the GPU host code calls it on the totals too).
+constexpr PipelineStatus check_pipeline_size(std::uint64_t patches, std::uint64_t vertices,
+                                             std::uint64_t triangles) {
+    if (patches > max_pipeline_patches) return PipelineStatus::too_many_patches;
+    if (vertices > max_pipeline_vertices) return PipelineStatus::too_many_vertices;
+    if (triangles > max_pipeline_triangles) return PipelineStatus::too_many_triangles;
+    return PipelineStatus::ok;
+}
+
+namespace detail {
+
+inline Vec3 mesh_position(const MeshView& mesh, std::uint32_t v) {
+    const float* p = mesh.vertices + std::size_t{v} * mesh_vertex_floats;
+    return {p[0], p[1], p[2]};
+}
+
+inline SurfaceCorner mesh_corner(const MeshView& mesh, std::uint32_t v) {
+    const float* p = mesh.vertices + std::size_t{v} * mesh_vertex_floats;
+    return {{p[0], p[1], p[2]}, {p[3], p[4], p[5]}, {p[6], p[7]}, v};
+}
+
+inline bool base_triangle(const MeshView& mesh, std::uint32_t t, std::uint32_t (&w)[3]) {
+    for (unsigned k = 0; k < 3; ++k) w[k] = mesh.indices[std::size_t{t} * 3 + k];
+    return w[0] < mesh.vertex_count && w[1] < mesh.vertex_count && w[2] < mesh.vertex_count;
+}
+
+} // namespace detail
+
+namespace detail {
+
+// The unclamped factors of base edges E0, E1, E2 (endpoints in mesh-index order, so neighbours agree) and the
+// edges' squared lengths.
+inline void base_edges(const MeshView& mesh, const std::uint32_t (&w)[3], const DiceOptions& dice,
+                       float (&factor)[3], float (&length2)[3]) {
+    const float scale = dice.factor_scale();
+    for (unsigned k = 0; k < 3; ++k) {
+        const std::uint32_t i = w[k], j = w[(k + 1) % 3];
+        const Vec3 a = mesh_position(mesh, i < j ? i : j);
+        const Vec3 b = mesh_position(mesh, i < j ? j : i);
+        factor[k] = edge_tess_factor(a, b, dice.eye, scale);
+        const Vec3 d = b - a;
+        length2[k] = dot(d, d);
+    }
+}
+
+} // namespace detail
+
+// Patch t's rotation, line states, counts and setup block (first_vertex and first_triangle are left 0). The
+// CP pattern, whatever options.pattern says.
+inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, std::uint32_t t,
+                               const PipelineOptions& options) {
+    PatchRecord rec;
+    std::uint32_t w[3];
+    if (!detail::base_triangle(mesh, t, w)) return rec;
+    float length2[3];
+    detail::base_edges(mesh, w, options.dice, rec.factor, length2);
+    const cp::Rotation rot = cp::smallest_edge_rotation(length2[0], length2[1], length2[2]);
+    rec.rotation = rot.shift;
+    cp::LineState s[3];
+    for (unsigned k = 0; k < 3; ++k) {
+        s[k] = cp::clamp_line_state(cp::line_state(rec.factor[(k + rot.shift) % 3], tables.max_factor),
+                                    tables.max_factor);
+        rec.token[k] = s[k].token;
+        rec.t16[k] = s[k].t16;
+    }
+    // One CpPatchSetup gives both the counts and the block.
+    const PatchSetupBlock block = patch_setup_block(tables, s[0], s[1], s[2]);
+    rec.vertex_count = block.vertices;
+    rec.triangle_count = block.triangles;
+    for (unsigned k = 0; k < setup_word::words; ++k) rec.setup[k] = block.word[k];
+    return rec;
+}
+
+// The pipeline's uniform patches: one vertex per position (the shaders have no provoking copies for uniform),
+// counter-clockwise as the base triangles.
+inline constexpr PatchOptions uniform_pipeline_options{Layout::shared, Winding::ccw};
+
+// Patch t's uniform record: rotation 0, token[k] = the rounded and clamped factor of base edge Ek, counts and
+// the uniform setup words.
+inline PatchRecord setup_uniform_patch(const UniformTableSet& tables, const MeshView& mesh, std::uint32_t t,
+                                       const PipelineOptions& options) {
+    PatchRecord rec;
+    std::uint32_t w[3];
+    if (!detail::base_triangle(mesh, t, w)) return rec;
+    float length2[3];
+    detail::base_edges(mesh, w, options.dice, rec.factor, length2);
+    for (unsigned k = 0; k < 3; ++k) rec.token[k] = uniform_factor(rec.factor[k], tables.max_factor);
+    const UniformPatch patch(tables, {rec.token[0], rec.token[1], rec.token[2]}, uniform_pipeline_options);
+    rec.vertex_count = patch.counts().vertices;
+    rec.triangle_count = patch.counts().triangles;
+    uniform_setup_words(rec.setup, patch);
+    return rec;
+}
+
+namespace detail {
+
+inline PipelineStatus check_pattern(const UniformTableSet* uniform, const PipelineOptions& options) {
+    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
+        return PipelineStatus::bad_option;
+    if (options.pattern == Pattern::uniform && uniform == nullptr) return PipelineStatus::no_uniform_tables;
+    return PipelineStatus::ok;
+}
+
+inline PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet* uniform,
+                                    const MeshView& mesh, const PipelineOptions& options,
+                                    std::span<PatchRecord> patches, PipelineTotals& totals) {
+    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_pattern(uniform, options); s != PipelineStatus::ok) return s;
+    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
+        return s;
+    std::uint64_t vertices = 0, triangles = 0;
+    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
+        PatchRecord rec = options.pattern == Pattern::uniform
+                              ? setup_uniform_patch(*uniform, mesh, t, options)
+                              : setup_patch(tables, mesh, t, options);
+        rec.first_vertex = static_cast<std::uint32_t>(vertices);
+        rec.first_triangle = static_cast<std::uint32_t>(triangles);
+        vertices += rec.vertex_count;
+        triangles += rec.triangle_count;
+        if (const PipelineStatus s = check_pipeline_size(0, vertices, triangles); s != PipelineStatus::ok)
+            return s;
+        patches[t] = rec;
+    }
+    totals = {static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(triangles)};
+    return PipelineStatus::ok;
+}
+
+} // namespace detail
+
+// Every patch's record, with the exclusive prefix sums and the totals. Stops at the first patch that takes a
+// total past its limit (the records before it are written, totals is left unchanged).
+inline PipelineStatus setup_patches(const CpTableSet& tables, const MeshView& mesh,
+                                    const PipelineOptions& options, std::span<PatchRecord> patches,
+                                    PipelineTotals& totals) {
+    return detail::setup_patches(tables, nullptr, mesh, options, patches, totals);
+}
+// The same with the uniform tables, for PipelineOptions::pattern = Pattern::uniform.
+inline PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet& uniform,
+                                    const MeshView& mesh, const PipelineOptions& options,
+                                    std::span<PatchRecord> patches, PipelineTotals& totals) {
+    return detail::setup_patches(tables, &uniform, mesh, options, patches, totals);
+}
+
+inline CpPatch patch_of(const CpTableSet& tables, const PatchRecord& rec) {
+    return CpPatch(tables, cp::LineState{rec.token[0], rec.t16[0]}, cp::LineState{rec.token[1], rec.t16[1]},
+                   cp::LineState{rec.token[2], rec.t16[2]});
+}
+
+inline UniformPatch uniform_patch_of(const UniformTableSet& tables, const PatchRecord& rec) {
+    return UniformPatch(tables, {rec.token[0], rec.token[1], rec.token[2]}, uniform_pipeline_options);
+}
+
+namespace detail {
+// The output vertex of exact base weights (w1, w2) = (base.u, base.v), units of cp::fixed_one.
+inline TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base,
+                                 const SurfaceOptions& surface) {
+    const std::uint32_t w[3] = {cp::fixed_one - base.u - base.v, base.u, base.v};
+    const SurfacePoint s = evaluate_surface(corner, w, surface);
+    return {base.u,
+            base.v,
+            {s.position.x, s.position.y, s.position.z},
+            {s.normal.x, s.normal.y, s.normal.z},
+            {s.uv[0], s.uv[1]}};
+}
+} // namespace detail
+
+// Vertex i of a patch: exact base weights, then the surface.
+inline TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const SurfaceCorner (&corner)[3],
+                               std::uint32_t i, const SurfaceOptions& surface) {
+    return detail::surface_vertex(
+        corner, cp::to_base_point(cp::Rotation{static_cast<std::uint8_t>(rec.rotation)}, patch.vertex(i)),
+        surface);
+}
+
+namespace detail {
+
+// The counts a record must have: its pattern's, or none for a culled patch; false when the record cannot be
+// one setup_patches wrote.
+inline bool record_counts(const CpTableSet& tables, const UniformTableSet* uniform, const PatchRecord& rec,
+                          bool culled, Pattern pattern, Counts& counts) {
+    counts = {};
+    if (pattern == Pattern::cp) {
+        if (rec.rotation > 2) return false;
+        if (!culled) counts = patch_of(tables, rec).counts();
+        return true;
+    }
+    if (culled) return true;
+    if (rec.rotation != 0) return false;
+    for (unsigned k = 0; k < 3; ++k)
+        if (rec.token[k] < 1 || rec.token[k] > uniform->max_factor || rec.t16[k] != 0) return false;
+    counts = uniform_patch_of(*uniform, rec).counts();
+    return true;
+}
+
+inline PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices) {
+    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_pattern(uniform, options); s != PipelineStatus::ok) return s;
+    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
+        return s;
+    std::uint64_t vertex_sum = 0, triangle_sum = 0;
+    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
+        const PatchRecord& rec = patches[t];
+        std::uint32_t w[3];
+        const bool culled = !base_triangle(mesh, t, w);
+        Counts counts;
+        if (!record_counts(tables, uniform, rec, culled, options.pattern, counts) ||
+            rec.first_vertex != vertex_sum || rec.first_triangle != triangle_sum ||
+            rec.vertex_count != counts.vertices || rec.triangle_count != counts.triangles)
+            return PipelineStatus::bad_patch_record;
+        vertex_sum += rec.vertex_count;
+        triangle_sum += rec.triangle_count;
+        if (const PipelineStatus s = check_pipeline_size(0, vertex_sum, triangle_sum);
+            s != PipelineStatus::ok)
+            return s;
+    }
+    if (vertex_sum > vertices.size() || 3 * triangle_sum > indices.size())
+        return PipelineStatus::span_too_small;
+    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
+        const PatchRecord& rec = patches[t];
+        std::uint32_t w[3];
+        if (!base_triangle(mesh, t, w) || rec.vertex_count == 0) continue;
+        const SurfaceCorner corner[3] = {mesh_corner(mesh, w[0]), mesh_corner(mesh, w[1]),
+                                         mesh_corner(mesh, w[2])};
+        std::uint32_t* out = indices.data() + 3 * std::size_t{rec.first_triangle};
+        if (options.pattern == Pattern::uniform) {
+            const UniformPatch patch = uniform_patch_of(*uniform, rec);
+            for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
+                vertices[rec.first_vertex + i] =
+                    surface_vertex(corner, uniform_base_point(patch, i), options.surface);
+            for (std::uint32_t p = 0; p < rec.triangle_count; ++p) {
+                const UniformTriangle tri = patch.triangle(p);
+                for (unsigned k = 0; k < 3; ++k) out[3 * p + k] = rec.first_vertex + tri[k];
+            }
+            continue;
+        }
+        const CpPatch patch = patch_of(tables, rec);
+        for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
+            vertices[rec.first_vertex + i] = patch_vertex(patch, rec, corner, i, options.surface);
+        for (std::uint32_t p = 0; p < rec.triangle_count; ++p) {
+            const CpTriangle tri = patch.triangle(p);
+            for (unsigned k = 0; k < 3; ++k) out[3 * p + k] = rec.first_vertex + tri[k];
+        }
+    }
+    return PipelineStatus::ok;
+}
+
+} // namespace detail
+
+// Every vertex and triangle of the mesh, at the records' offsets. Checks every record first (its counts are
+// its pattern's counts, its offsets the exclusive prefix sums, a culled patch is empty) and the spans; on
+// any failure writes nothing.
+inline PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh,
+                                const PipelineOptions& options, std::span<const PatchRecord> patches,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    return detail::emit_mesh(tables, nullptr, mesh, options, patches, vertices, indices);
+}
+// The same with the uniform tables, for PipelineOptions::pattern = Pattern::uniform.
+inline PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices) {
+    return detail::emit_mesh(tables, &uniform, mesh, options, patches, vertices, indices);
+}
+
+} // namespace ctess::rt

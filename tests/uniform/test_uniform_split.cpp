@@ -1,0 +1,381 @@
+// Uniform-density splitting above the table (docs/algorithm.md §3.5): exact coverage without inverted or
+// zero-area triangles, bounded depth, counts equal to what emit writes, crack-free neighbours at any depth
+// (shared-edge positions equal bit for bit), the patch itself below N, and bad input clamped.
+#include <ctess/runtime/uniform/split.hpp>
+#include <ctess/uniform/metric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <set>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "support/emit_all.hpp"
+
+using ctess::DomainPoint;
+using ctess::rt::UniformSplit;
+
+namespace {
+
+__extension__ using int128 = __int128;
+
+using ctess::test::emit_all;
+using ctess::test::Emitted;
+
+int128 area2(DomainPoint a, DomainPoint b, DomainPoint c) {
+    const int128 bu = int128{b.u} - a.u, bv = int128{b.v} - a.v, cu = int128{c.u} - a.u,
+                 cv = int128{c.v} - a.v;
+    return bu * cv - bv * cu;
+}
+
+// The default interior dice tolerance (1.433 N) and the strict one (N), §3.5: the same invariants hold.
+constexpr std::array<double, 2> tolerances{ctess::rt::uniform_split_interior_tolerance,
+                                           ctess::rt::uniform_split_strict_tolerance};
+
+void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance);
+
+// Two patches on common integer corners (A = P0 P1 P2, B on P1, P2 and Q): a split patch's point d (units of
+// uniform_split_fixed_one) as an exact position, so points on a shared edge compare bit for bit.
+using Pos = std::array<int128, 2>;
+constexpr Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
+Pos position(DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
+    const int128 one = ctess::rt::uniform_split_fixed_one;
+    const int128 w = one - d.u - d.v;
+    return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
+}
+
+// The given triples, then `count` seeded random ones with factors in [low, low + range).
+std::vector<std::array<float, 3>> with_random(std::vector<std::array<float, 3>> cases, std::uint32_t state,
+                                              int count, unsigned low, unsigned range) {
+    for (int k = 0; k < count; ++k) {
+        std::array<float, 3> f{};
+        for (float& x : f) x = static_cast<float>(low + (state = state * 1664525u + 1013904223u) % range);
+        cases.push_back(f);
+    }
+    return cases;
+}
+
+} // namespace
+
+TEST_CASE("uniform split: exact coverage, positive triangles, bounded depth", "[uniform][split]") {
+    for (const auto* tables : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const double tolerance : tolerances) check_coverage(*tables, tolerance);
+}
+
+namespace {
+void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
+    const double n = set.max_factor;
+    const std::array<std::array<float, 3>, 9> cases = {{{40, 30, 20},
+                                                        {17, 1, 16},
+                                                        {100, 3, 99},
+                                                        {256, 256, 256},
+                                                        {255.4f, 17, 200},
+                                                        {33, 64, 31},
+                                                        {16, 16, 17},
+                                                        {250, 9, 250},
+                                                        {1e9f, 5, 200}}};
+    for (const auto& f : cases) {
+        INFO("N " << n << " tolerance " << tolerance << " factors " << f[0] << "," << f[1] << "," << f[2]);
+        const UniformSplit s(set, f[0], f[1], f[2], {}, tolerance);
+        REQUIRE(s.depth() <= ctess::rt::uniform_split_max_depth);
+        const Emitted e = emit_all(s);
+        int128 sum = 0;
+        for (std::size_t t = 0; t < e.indices.size(); t += 3) {
+            const int128 a =
+                area2(e.vertices[e.indices[t]], e.vertices[e.indices[t + 1]], e.vertices[e.indices[t + 2]]);
+            REQUIRE(a > 0);
+            sum += a;
+        }
+        const int128 one = ctess::rt::uniform_split_fixed_one;
+        REQUIRE(sum == one * one);
+        // A split edge with factor T gets S = ceil(T / N) sub-edges of factor T * span (at most N each, so
+        // they never split again); each rounds on its own, so the edge carries T segments within S / 2.
+        std::set<std::uint32_t> on_e0, on_e1, on_e2;
+        for (const DomainPoint& p : e.vertices) {
+            if (p.v == 0) on_e0.insert(p.u);
+            if (std::uint64_t{p.u} + p.v == ctess::rt::uniform_split_fixed_one) on_e1.insert(p.v);
+            if (p.u == 0) on_e2.insert(p.v);
+        }
+        const auto r = s.factors();
+        const std::size_t counts[3] = {on_e0.size() - 1, on_e1.size() - 1, on_e2.size() - 1};
+        for (int i = 0; i < 3; ++i) {
+            const double sub_edges = r[i] <= n ? 1.0 : std::ceil(std::min(r[i] / n, n));
+            INFO("edge " << i << ": " << counts[i] << " segments for factor " << r[i]);
+            CHECK(std::fabs(double(counts[i]) - r[i]) <= (r[i] <= n ? 0.0 : sub_edges / 2));
+        }
+    }
+}
+} // namespace
+
+TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches dice and which split",
+          "[uniform][split]") {
+    // A subpatch that dices and its neighbour that splits must put the same points on their shared edge:
+    // every edge inside the root patch is used once in each direction (exact positions). The first four
+    // triples cracked when a split patch subdivided an edge that its diced neighbour kept whole (found by
+    // fuzz_uniform).
+    const auto cases =
+        with_random({{193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}}, 2026, 60, 1, 256);
+    const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
+    auto on_root_edge = [one](DomainPoint a, DomainPoint b) {
+        return (a.v == 0 && b.v == 0) || (a.u == 0 && b.u == 0) ||
+               (std::uint64_t{a.u} + a.v == one && std::uint64_t{b.u} + b.v == one);
+    };
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const double tolerance : tolerances)
+            for (const auto& f : cases) {
+                INFO("N " << set->max_factor << " tolerance " << tolerance << " factors " << f[0] << ","
+                          << f[1] << "," << f[2]);
+                const Emitted e = emit_all(UniformSplit(*set, f[0], f[1], f[2], {}, tolerance));
+                std::map<std::pair<std::uint64_t, std::uint64_t>, int>
+                    net; // (lower, higher) position: up minus down
+                auto key = [](DomainPoint p) { return (std::uint64_t{p.u} << 32) | p.v; };
+                for (std::size_t t = 0; t < e.indices.size(); t += 3)
+                    for (unsigned j = 0; j < 3; ++j) {
+                        const std::uint64_t a = key(e.vertices[e.indices[t + j]]),
+                                            b = key(e.vertices[e.indices[t + (j + 1) % 3]]);
+                        net[{a < b ? a : b, a < b ? b : a}] += a < b ? 1 : -1;
+                    }
+                std::size_t inside_open = 0;
+                for (const auto& [edge, n] : net) {
+                    const DomainPoint a{std::uint32_t(edge.first >> 32), std::uint32_t(edge.first)};
+                    const DomainPoint b{std::uint32_t(edge.second >> 32), std::uint32_t(edge.second)};
+                    inside_open += n != 0 && !on_root_edge(a, b);
+                }
+                CHECK(inside_open == 0);
+            }
+}
+
+TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any depth", "[uniform][split]") {
+    // Patch A (P0, P1, P2) and patch B (P2, P1, Q) share A's e1 as B's e0; integer corners, exact positions.
+    const auto& set = ctess::rt::uniform_tables_16;
+    std::size_t checked = 0;
+    for (float shared : {1.0f, 7.0f, 16.0f, 17.0f, 31.0f, 32.0f, 33.0f, 97.0f, 200.0f, 256.0f})
+        for (float other : {1.0f, 12.0f, 40.0f, 150.0f, 256.0f}) {
+            const UniformSplit a(set, other, shared, 256.0f - other / 2);
+            const UniformSplit b(set, shared, other / 3 + 1, 200.0f);
+            const Emitted ea = emit_all(a), eb = emit_all(b);
+            std::set<Pos> on_a, on_b;
+            for (const DomainPoint& d : ea.vertices)
+                if (std::uint64_t{d.u} + d.v == ctess::rt::uniform_split_fixed_one)
+                    on_a.insert(position(d, P0, P1, P2));
+            for (const DomainPoint& d : eb.vertices)
+                if (d.v == 0) on_b.insert(position(d, P2, P1, Q));
+            INFO("shared " << shared << " other " << other);
+            REQUIRE(on_a.size() >= 2);
+            REQUIRE(on_a == on_b);
+            ++checked;
+        }
+    REQUIRE(checked == 50);
+}
+
+TEST_CASE("uniform split: the provoking layout gives every triangle its own first vertex",
+          "[uniform][split][provoking]") {
+    // Each subpatch keeps its own vertices and copies: the triangles are the shared layout's as positions,
+    // in the same order, and no two triangles of the whole output share a first index.
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const auto& f : std::array<std::array<float, 3>, 5>{
+                 {{40, 30, 20}, {17, 1, 16}, {256, 256, 256}, {100, 3, 99}, {12, 9, 5}}}) {
+            INFO("max " << set->max_factor << " factors " << f[0] << "," << f[1] << "," << f[2]);
+            const UniformSplit shared(*set, f[0], f[1], f[2], {ctess::Layout::shared, ctess::Winding::ccw});
+            const UniformSplit provoking(*set, f[0], f[1], f[2],
+                                         {ctess::Layout::provoking, ctess::Winding::ccw});
+            REQUIRE(provoking.counts().triangles == shared.counts().triangles);
+            REQUIRE(provoking.counts().vertices >= shared.counts().vertices);
+            REQUIRE(provoking.counts().vertices >= provoking.counts().triangles);
+            const Emitted s = emit_all(shared), e = emit_all(provoking);
+            std::vector<int> provokes(e.vertices.size(), 0);
+            for (std::size_t t = 0; t < e.indices.size(); ++t) {
+                REQUIRE(e.vertices[e.indices[t]] == s.vertices[s.indices[t]]);
+                if (t % 3 == 0) REQUIRE(++provokes[e.indices[t]] == 1);
+            }
+        }
+}
+
+TEST_CASE("uniform split: below the table it is the plain patch, scaled", "[uniform][split]") {
+    const auto& set = ctess::rt::uniform_tables_16;
+    const UniformSplit s(set, 11, 9, 6);
+    const ctess::rt::UniformPatch p(set, 11, 9, 6);
+    REQUIRE(s.subpatch_count() == 1);
+    REQUIRE(s.depth() == 0);
+    REQUIRE(s.counts() == p.counts());
+    const Emitted e = emit_all(s);
+    for (std::uint32_t i = 0; i < p.counts().vertices; ++i) {
+        const DomainPoint q = p.vertex(i);
+        REQUIRE(e.vertices[i] ==
+                DomainPoint{q.u * ctess::uniform::fixed_one, q.v * ctess::uniform::fixed_one});
+    }
+}
+
+TEST_CASE("uniform split bad input: clamps, bounded output, emit refuses small spans",
+          "[uniform][split][bad_input]") {
+    const auto& set = ctess::rt::uniform_tables_11;
+    constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+    constexpr float inf_f = std::numeric_limits<float>::infinity();
+    for (float f : {nan_f, -inf_f, -1.0f, 0.0f, 1.4f}) {
+        const UniformSplit s(set, f, f, f);
+        CHECK(s.counts() == ctess::Counts{3, 1});
+    }
+    for (float f : {inf_f, 1e30f, 121.0f, 500.0f}) {
+        const UniformSplit s(set, f, f, f);
+        CHECK(s.factors()[0] == 121.0);
+        CHECK(s.counts().triangles == 121u * 121u); // regular grids of regular grids
+        CHECK(s.depth() <= 2);
+    }
+    const UniformSplit s(set, 50, 40, 30);
+    std::vector<DomainPoint> v(s.counts().vertices - 1, DomainPoint{7, 7});
+    std::vector<std::uint32_t> idx(s.counts().index_count(), 7u);
+    CHECK_FALSE(s.emit(v, idx));
+    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+}
+
+namespace {
+
+// The largest ratio of squared lengths |d|_f^2 / |d|_r^2 over all directions d (the largest generalized
+// eigenvalue of the two metrics' 2 x 2 matrices in (du, dv); docs/algorithm.md §3.1's formula gives
+// [[f0^2, h], [h, f2^2]], h = (f0^2 + f2^2 - f1^2) / 2). r must be a real triangle.
+double stretch_squared(const std::array<double, 3>& f, const std::array<double, 3>& r) {
+    auto gram = [](const std::array<double, 3>& x) {
+        return std::array<double, 3>{x[0] * x[0], (x[0] * x[0] + x[2] * x[2] - x[1] * x[1]) / 2, x[2] * x[2]};
+    };
+    const auto a = gram(f), b = gram(r);
+    const double det_a = a[0] * a[2] - a[1] * a[1], det_b = b[0] * b[2] - b[1] * b[1];
+    const double t = a[0] * b[2] + a[2] * b[0] - 2 * a[1] * b[1];
+    return (t + std::sqrt(std::max(0.0, t * t - 4 * det_a * det_b))) / (2 * det_b);
+}
+
+std::array<double, 3> rounded(const std::array<double, 3>& f, double n) {
+    std::array<double, 3> r{};
+    for (int i = 0; i < 3; ++i) r[i] = std::clamp(std::floor(f[i] + 0.5), 1.0, n);
+    return r;
+}
+
+} // namespace
+
+TEST_CASE("uniform split: final edge lengths against the table's own bound, default and strict tolerance",
+          "[uniform][split][tolerance]") {
+    // In the root's metric a leaf's edges are the table pattern's for its rounded factors r, measured with
+    // its real factors f (§3.5): each is at most sqrt(stretch(f, r)) times the pattern's own longest edge (at
+    // most 1.4328, §3.1) when r is a real triangle, and unbounded by the table when it is not. The strict
+    // tolerance dices no leaf edge above N (+ 0.5 rounding) except where depth 2 clamps; the default dices up
+    // to 1.433 N.
+    const auto cases = with_random({{40, 30, 25},
+                                    {48, 20, 33},
+                                    {70, 197, 186},
+                                    {176, 176, 176},
+                                    {100, 90, 60},
+                                    {17, 16, 16},
+                                    {64, 64, 20},
+                                    {56, 36, 23}},
+                                   77, 40, 12, 245);
+    const double one = ctess::rt::uniform_split_fixed_one;
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const double tolerance : tolerances) {
+            const double n = set->max_factor;
+            std::size_t leaves = 0, bounded = 0, above_n = 0, clamped = 0;
+            for (const auto& f : cases) {
+                const UniformSplit s(*set, f[0], f[1], f[2], {}, tolerance);
+                const auto root = s.factors();
+                if (!ctess::uniform::is_real_triangle(root)) continue;
+                INFO("N " << n << " tolerance " << tolerance << " factors " << f[0] << "," << f[1] << ","
+                          << f[2]);
+                s.for_each_leaf([&](const UniformSplit::Leaf& leaf) {
+                    ++leaves;
+                    const double largest = std::max({leaf.factors[0], leaf.factors[1], leaf.factors[2]});
+                    above_n += largest >= n + 0.5;
+                    clamped += largest >= n + 0.5 && leaf.depth == ctess::rt::uniform_split_max_depth;
+                    if (tolerance == ctess::rt::uniform_split_strict_tolerance && leaf.depth < 2)
+                        REQUIRE(largest < n + 0.5);
+                    const auto r = rounded(leaf.factors, n);
+                    if (!ctess::uniform::is_real_triangle(r)) return;
+                    ++bounded;
+                    const double stretch = std::sqrt(stretch_squared(leaf.factors, r));
+                    double pattern_longest = 0, root_longest = 0;
+                    for (std::uint32_t t = 0; t < leaf.patch.counts().triangles; ++t) {
+                        const auto tri = leaf.patch.triangle(t);
+                        for (int e = 0; e < 3; ++e) {
+                            const DomainPoint a = leaf.patch.vertex(tri[e]),
+                                              b = leaf.patch.vertex(tri[(e + 1) % 3]);
+                            const double du = (double(b.u) - a.u) / ctess::uniform::fixed_one,
+                                         dv = (double(b.v) - a.v) / ctess::uniform::fixed_one;
+                            pattern_longest =
+                                std::max(pattern_longest, ctess::uniform::intrinsic_length(r, du, dv));
+                            // The same edge on the root: corners combined exactly, measured with the root's
+                            // factors.
+                            double root_d[2];
+                            for (int k = 0; k < 2; ++k)
+                                root_d[k] = (du * double(leaf.corners[1][k] - leaf.corners[0][k]) +
+                                             dv * double(leaf.corners[2][k] - leaf.corners[0][k])) /
+                                            one;
+                            root_longest = std::max(
+                                root_longest, ctess::uniform::intrinsic_length(root, root_d[0], root_d[1]));
+                        }
+                    }
+                    CHECK(pattern_longest <= 1.4328);
+                    CHECK(root_longest <= stretch * pattern_longest * (1 + 1e-6));
+                });
+            }
+            INFO("N " << n << " tolerance " << tolerance);
+            CHECK(bounded * 10 > leaves * 9); // almost every leaf's rounded triple is a real triangle
+            if (tolerance == ctess::rt::uniform_split_strict_tolerance)
+                CHECK(above_n == clamped); // only the depth-2 clamp dices above N
+            else
+                CHECK(above_n > clamped); // the default dices interior edges above N at depth 1
+        }
+}
+
+TEST_CASE("uniform split: a diced patch beside a split patch welds bit for bit on their shared edge",
+          "[uniform][split][tolerance]") {
+    // Patch A (P0, P1, P2) stays within N after rounding and dices with UniformPatch; patch B splits because
+    // of another edge and shares A's e1 (P1 -> P2) as its e0, walked P2 -> P1 (B = (P2, P1, Q)) or P1 -> P2
+    // (B = (P1, P2, Q), the other orientation). The edge's points, as exact positions on common integer
+    // corners, must be the same set from both sides.
+    std::size_t checked = 0;
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
+        for (const double tolerance : tolerances) {
+            const float n = float(set->max_factor);
+            for (const float shared : {1.0f, 5.0f, n - 1, n, n + 0.4f})
+                for (const std::array<float, 2> other : {std::array<float, 2>{n + 1, 2 * n},
+                                                         {3 * n + 0.6f, n * n},
+                                                         {n * n, 1},
+                                                         {2.5f * n, n + 0.5f}})
+                    for (const bool reversed : {true, false}) {
+                        INFO("N " << n << " tolerance " << tolerance << " shared " << shared << " other "
+                                  << other[0] << "," << other[1] << (reversed ? " reversed" : " forward"));
+                        const UniformSplit a(*set, n / 2, shared, n - 2, {}, tolerance);
+                        const UniformSplit b(*set, shared, other[0], other[1], {}, tolerance);
+                        REQUIRE(a.depth() == 0);
+                        REQUIRE(a.subpatch_count() == 1);
+                        REQUIRE(b.depth() >= 1);
+                        const Emitted ea = emit_all(a), eb = emit_all(b);
+                        std::set<Pos> on_a, on_b;
+                        for (const DomainPoint& d : ea.vertices)
+                            if (std::uint64_t{d.u} + d.v == ctess::rt::uniform_split_fixed_one)
+                                on_a.insert(position(d, P0, P1, P2));
+                        for (const DomainPoint& d : eb.vertices)
+                            if (d.v == 0)
+                                on_b.insert(reversed ? position(d, P2, P1, Q) : position(d, P1, P2, Q));
+                        REQUIRE(on_a.size() == std::size_t(std::floor(shared + 0.5f)) + 1);
+                        REQUIRE(on_a == on_b);
+                        ++checked;
+                    }
+        }
+    REQUIRE(checked == 2 * 2 * 5 * 4 * 2);
+}
+
+TEST_CASE("uniform split bad input: the interior tolerance is clamped to [1, 1.433]",
+          "[uniform][split][tolerance][bad_input]") {
+    const auto& set = ctess::rt::uniform_tables_16;
+    constexpr double nan_d = std::numeric_limits<double>::quiet_NaN();
+    constexpr double inf_d = std::numeric_limits<double>::infinity();
+    for (const double t : {nan_d, -inf_d, -1.0, 0.0, 0.5, 1.0})
+        CHECK(UniformSplit(set, 40, 30, 25, {}, t).interior_tolerance() == 1.0);
+    for (const double t : {1.433, 2.0, 1e300, inf_d})
+        CHECK(UniformSplit(set, 40, 30, 25, {}, t).interior_tolerance() == 1.433);
+    CHECK(UniformSplit(set, 40, 30, 25, {}, 1.2).interior_tolerance() == 1.2);
+    CHECK(UniformSplit(set, 40, 30, 25).interior_tolerance() == 1.433);
+}
