@@ -1,11 +1,14 @@
-// UniformSplit (docs/algorithm.md §3.5) against the code it was optimised from: the reference copy of commit
-// 2407141f (tests/support/uniform_split_reference.hpp). Counts, depth, subpatches, every emitted vertex and
-// index, every leaf and the longest edge must be identical, for both tables, both layouts, both windings and
-// three interior tolerances, on fixed triples (clamped and bad input among them) and seeded random ones, at
-// every depth (0: within the table, 1 and 2: split).
+// UniformSplit (docs/algorithm.md §3.5) against golden digests of the code it was optimised from (the
+// reference implementation of commit 2407141f, whose outputs these digests were taken from before it was
+// removed from the tree). Counts, depth, subpatches, every emitted vertex and index, every leaf and the
+// longest edge enter one FNV-1a digest per table, layout, winding and interior tolerance, over fixed triples
+// (clamped and bad input among them) and seeded random ones at every depth (0: within the table, 1 and 2:
+// split). A changed digest means a changed output: the per-depth case counts and the first triple of each
+// configuration are checked too, so a failure says where to look.
 #include <ctess/runtime/uniform/split.hpp>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -14,38 +17,19 @@
 #include <catch2/catch.hpp>
 
 #include "support/emit_all.hpp"
-#include "support/uniform_split_reference.hpp"
 
 namespace {
 
-struct LeafRecord {
-    std::array<double, 3> factors;
-    std::array<std::array<std::int64_t, 2>, 3> corners;
-    std::uint32_t depth, pattern;
-    ctess::Counts counts;
-    bool operator==(const LeafRecord&) const = default;
+// FNV-1a over 64-bit words (Fowler, Noll and Vo).
+struct Digest {
+    std::uint64_t h = 14695981039346656037ull;
+    void word(std::uint64_t w) {
+        for (int b = 0; b < 8; ++b) h = (h ^ ((w >> (8 * b)) & 0xff)) * 1099511628211ull;
+    }
+    void real(double x) { word(std::bit_cast<std::uint64_t>(x)); }
 };
 
-template <class Split>
-std::vector<LeafRecord> leaves(const Split& s) {
-    std::vector<LeafRecord> out;
-    s.for_each_leaf([&](const auto& leaf) {
-        out.push_back(
-            {leaf.factors, leaf.corners, leaf.depth, leaf.patch.pattern_index(), leaf.patch.counts()});
-    });
-    return out;
-}
-
-bool same_points(const std::vector<ctess::DomainPoint>& a, const std::vector<ctess::DomainPoint>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i].u != b[i].u || a[i].v != b[i].v) return false;
-    return true;
-}
-
-} // namespace
-
-TEST_CASE("uniform split: output identical to the reference code", "[uniform][split]") {
+std::vector<std::array<float, 3>> split_cases() {
     constexpr float inf = std::numeric_limits<float>::infinity(),
                     nan = std::numeric_limits<float>::quiet_NaN();
     std::vector<std::array<float, 3>> cases = {
@@ -60,32 +44,74 @@ TEST_CASE("uniform split: output identical to the reference code", "[uniform][sp
         for (float& x : f) x = static_cast<float>((state = state * 1664525u + 1013904223u) % 30000u) / 100.0f;
         cases.push_back(f);
     }
-    std::array<int, 3> by_depth{}; // the cases compared at each depth: every depth must be reached
+    return cases;
+}
+
+// Everything UniformSplit reports about one triple.
+void add_split(Digest& d, const ctess::rt::UniformSplit& s) {
+    d.word(s.counts().vertices), d.word(s.counts().triangles);
+    d.word(s.subpatch_count()), d.word(s.depth());
+    for (double f : s.factors()) d.real(f);
+    const ctess::test::Emitted e = ctess::test::emit_all(s);
+    for (const auto& p : e.vertices) d.word(std::uint64_t{p.u} << 32 | p.v);
+    for (std::uint32_t i : e.indices) d.word(i);
+    s.for_each_leaf([&](const auto& leaf) {
+        for (double f : leaf.factors) d.real(f);
+        for (const auto& c : leaf.corners)
+            d.word(static_cast<std::uint64_t>(c[0])), d.word(static_cast<std::uint64_t>(c[1]));
+        d.word(leaf.depth), d.word(leaf.patch.pattern_index());
+        d.word(leaf.patch.counts().vertices), d.word(leaf.patch.counts().triangles);
+    });
+    d.real(s.longest_edge());
+}
+
+struct Golden {
+    std::uint32_t max_factor;
+    bool shared, cw;
+    double tolerance;
+    std::uint64_t digest;
+    std::array<int, 3> by_depth; // how many of the triples reach depth 0, 1, 2
+};
+
+// Taken from the reference implementation (commit 2407141f) over split_cases().
+constexpr Golden golden[] = {
+#include "uniform_split_golden.inc"
+};
+
+} // namespace
+
+TEST_CASE("uniform split: output identical to the reference code's golden digests", "[uniform][split]") {
+    const std::vector<std::array<float, 3>> cases = split_cases();
+    std::size_t g = 0;
+    std::array<int, 3> all_depths{};
     for (const auto* tables : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
         for (const ctess::Layout layout : {ctess::Layout::provoking, ctess::Layout::shared})
             for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw})
                 for (const double tolerance : {ctess::rt::uniform_split_interior_tolerance, 1.2,
-                                               ctess::rt::uniform_split_strict_tolerance})
+                                               ctess::rt::uniform_split_strict_tolerance}) {
+                    Digest d;
+                    std::array<int, 3> by_depth{};
                     for (const auto& f : cases) {
-                        CAPTURE(tables->max_factor, layout == ctess::Layout::shared,
-                                winding == ctess::Winding::cw, tolerance, f[0], f[1], f[2]);
-                        const ctess::PatchOptions options{layout, winding};
-                        const ctess::rt::UniformSplit now(*tables, f[0], f[1], f[2], options, tolerance);
-                        const ctess::rt::reference::UniformSplit then(*tables, f[0], f[1], f[2], options,
-                                                                      tolerance);
-                        REQUIRE(now.counts() == then.counts());
-                        REQUIRE(now.subpatch_count() == then.subpatch_count());
-                        REQUIRE(now.depth() == then.depth());
-                        ++by_depth[now.depth() < 3 ? now.depth() : 0];
-                        REQUIRE(now.factors() == then.factors());
-                        const ctess::test::Emitted a = ctess::test::emit_all(now),
-                                                   b = ctess::test::emit_all(then);
-                        REQUIRE(same_points(a.vertices, b.vertices));
-                        REQUIRE(a.indices == b.indices);
-                        REQUIRE(leaves(now) == leaves(then));
-                        REQUIRE(now.longest_edge() == then.longest_edge());
+                        const ctess::rt::UniformSplit s(*tables, f[0], f[1], f[2], {layout, winding},
+                                                        tolerance);
+                        REQUIRE(s.depth() < 3);
+                        ++by_depth[s.depth()];
+                        add_split(d, s);
                     }
-    CHECK(by_depth[0] > 0);
-    CHECK(by_depth[1] > 0);
-    CHECK(by_depth[2] > 0);
+                    REQUIRE(g < std::size(golden));
+                    const Golden& expect = golden[g++];
+                    CAPTURE(tables->max_factor, layout == ctess::Layout::shared,
+                            winding == ctess::Winding::cw, tolerance);
+                    REQUIRE(expect.max_factor == tables->max_factor);
+                    REQUIRE(expect.shared == (layout == ctess::Layout::shared));
+                    REQUIRE(expect.cw == (winding == ctess::Winding::cw));
+                    REQUIRE(expect.tolerance == tolerance);
+                    CHECK(by_depth == expect.by_depth);
+                    CHECK(d.h == expect.digest);
+                    for (int k = 0; k < 3; ++k) all_depths[k] += by_depth[k];
+                }
+    CHECK(g == std::size(golden));
+    CHECK(all_depths[0] > 0);
+    CHECK(all_depths[1] > 0);
+    CHECK(all_depths[2] > 0);
 }
