@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <set>
@@ -246,6 +248,42 @@ TEST_CASE("uniform runtime: two patches sharing an edge weld bit for bit", "[uni
                     REQUIRE(on_a.size() == shared + 1);
                     REQUIRE(on_a == on_b);
                 }
+}
+
+// The exact rule in double arithmetic, independent of uniform::round_factor's bit manipulation: every float
+// below 2^24 plus 0.5 is exact in double, so floor() rounds halves up exactly.
+static std::uint32_t reference_round(float f, std::uint32_t n) {
+    if (!(f >= 1.5f)) return 1;
+    const double r = std::floor(static_cast<double>(f) + 0.5);
+    return r >= n ? n : static_cast<std::uint32_t>(r);
+}
+
+TEST_CASE("uniform factor rounding: one rule, exact halves up, for every float in [0, 20) and around every "
+          "half in [0.5, 300]",
+          "[uniform][runtime][bad_input]") {
+    std::uint64_t wrong = 0;
+    for (std::uint32_t bits = 0; bits <= std::bit_cast<std::uint32_t>(20.0f); ++bits) {
+        const float f = std::bit_cast<float>(bits);
+        for (std::uint32_t n : {11u, 16u})
+            wrong += ctess::uniform::round_factor(f, n) != reference_round(f, n);
+    }
+    CHECK(wrong == 0);
+    for (std::uint32_t k = 0; k <= 300; ++k) {
+        const std::uint32_t half = std::bit_cast<std::uint32_t>(static_cast<float>(k) + 0.5f);
+        for (std::uint32_t bits = half - 64; bits <= half + 64; ++bits) {
+            const float f = std::bit_cast<float>(bits);
+            for (std::uint32_t n : {11u, 16u, 256u}) {
+                INFO("f = " << f << ", n = " << n);
+                REQUIRE(ctess::uniform::round_factor(f, n) == reference_round(f, n));
+                REQUIRE(ctess::uniform::within_table(f, n) == (reference_round(f, n + 1) <= n));
+            }
+        }
+    }
+    // The ties that float addition (f + 0.5f) rounds the wrong way: just below k + 0.5 where k + 1 is a power
+    // of two, f + 0.5f is exactly halfway between two floats and rounds to the even k + 1.
+    CHECK(ctess::uniform::round_factor(std::nextafter(3.5f, 0.0f), 16) == 3);
+    CHECK(ctess::uniform::round_factor(std::nextafter(7.5f, 0.0f), 16) == 7);
+    CHECK(ctess::uniform::round_factor(std::nextafter(127.5f, 0.0f), 256) == 127);
 }
 
 TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",

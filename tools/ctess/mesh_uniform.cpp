@@ -19,9 +19,9 @@ Mesh tessellate_uniform(const PatternRequest& r) {
                                r.ccw ? Winding::ccw : Winding::cw};
     Mesh mesh;
     mesh.uniform.table_max = rt::uniform_tables.max_factor;
-    const bool above = r.factors[0] >= float(rt::uniform_tables.max_factor) + 0.5f ||
-                       r.factors[1] >= float(rt::uniform_tables.max_factor) + 0.5f ||
-                       r.factors[2] >= float(rt::uniform_tables.max_factor) + 0.5f;
+    const std::uint32_t n = rt::uniform_tables.max_factor;
+    const bool above = !uniform::within_table(r.factors[0], n) || !uniform::within_table(r.factors[1], n) ||
+                       !uniform::within_table(r.factors[2], n);
     if (above) { // split with the table's own patterns (§3.5), welded in the shared layout
         const rt::UniformSplit split(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
         mesh.fixed_one = rt::uniform_split_fixed_one;

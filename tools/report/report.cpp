@@ -104,8 +104,9 @@ void osd_pattern(const Factors& f, Pattern& out) {
 // Uniform density (docs/algorithm.md §3): integer factors (each rounded, halves up). The configured table's
 // UniformPatch when every factor fits the table (at most N after rounding), UniformSplit (§3.5) above it.
 bool uniform_fits(const Factors& f) {
-    const float limit = static_cast<float>(ctess::rt::uniform_tables.max_factor) + 0.5f;
-    return f[0] < limit && f[1] < limit && f[2] < limit;
+    const std::uint32_t n = ctess::rt::uniform_tables.max_factor;
+    return ctess::uniform::within_table(f[0], n) && ctess::uniform::within_table(f[1], n) &&
+           ctess::uniform::within_table(f[2], n);
 }
 // Emits into v and i (grown as needed) and returns the counts and the unit of the coordinates.
 std::pair<ctess::Counts, double> uniform_emit_into(const Factors& f, std::vector<ctess::DomainPoint>& v,

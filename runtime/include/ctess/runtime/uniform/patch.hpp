@@ -31,6 +31,7 @@
 #include <ctess/core/domain_point.hpp>
 #include <ctess/core/patch_concept.hpp>
 #include <ctess/core/patch_options.hpp>
+#include <ctess/uniform/factor.hpp>
 #include <ctess/uniform/pattern.hpp>
 #include <ctess/uniform/quantise.hpp>
 
@@ -40,11 +41,9 @@ namespace ctess::rt {
 
 using UniformTriangle = std::array<std::uint32_t, 3>;
 
-// A factor rounded and clamped to [1, max_factor] as documented above.
+// A factor rounded and clamped to [1, max_factor]: uniform::round_factor, the one rule (uniform/factor.hpp).
 constexpr std::uint32_t uniform_factor(float f, std::uint32_t max_factor) noexcept {
-    if (!(f >= 1.5f)) return 1u; // NaN, -inf, negatives, zero, [0, 1.5)
-    if (!(f < static_cast<float>(max_factor) - 0.5f)) return max_factor;
-    return static_cast<std::uint32_t>(f + 0.5f);
+    return uniform::round_factor(f, max_factor);
 }
 
 class UniformPatch {
