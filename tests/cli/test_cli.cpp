@@ -88,7 +88,7 @@ TEST_CASE("pattern JSON carries the library's exact vertices", "[cli]") {
     REQUIRE(r.exit_code == 0);
     std::vector<DomainPoint> pts(d3d11::max_tri_counts.vertices);
     std::vector<std::uint32_t> idx(d3d11::max_tri_counts.index_count());
-    const auto counts = d3d11::tessellate_tri(pts.data(), idx.data(), {2.5f, 3.7f, 5.1f, 4.2f},
+    const auto counts = d3d11::tessellate_tri(pts, idx, {2.5f, 3.7f, 5.1f, 4.2f},
                                               {d3d11::Partitioning::fractional_even, Winding::cw});
     const auto v = json_vertices(r.out);
     REQUIRE(v.size() == 2 * counts.vertices);

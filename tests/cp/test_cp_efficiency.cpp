@@ -32,7 +32,7 @@ TEST_CASE("efficiency rows count CP's zero-area triangles as the pattern has the
         const auto n = ctess::cp::pattern_counts(r.factors[0], r.factors[1], r.factors[2], opt);
         std::vector<ctess::DomainPoint> v(n.vertices);
         std::vector<std::uint32_t> t(3 * std::size_t{n.triangles});
-        ctess::cp::tessellate(v.data(), t.data(), r.factors[0], r.factors[1], r.factors[2], opt);
+        ctess::cp::tessellate(v, t, r.factors[0], r.factors[1], r.factors[2], opt);
         std::uint32_t zero_area = 0;
         for (std::size_t k = 0; k < t.size(); k += 3) {
             const ctess::DomainPoint a = v[t[k]], b = v[t[k + 1]], c = v[t[k + 2]];

@@ -42,7 +42,7 @@ static_assert(max_counts_bound_the_largest_pattern());
 constexpr bool fills_triforce_4() {
     std::array<DomainPoint, 15> v{};
     std::array<std::uint32_t, 48> i{};
-    const Counts c = cp::tessellate(v.data(), i.data(), 4.0f, 4.0f, 4.0f, flat_options(64));
+    const Counts c = cp::tessellate(v, i, 4.0f, 4.0f, 4.0f, flat_options(64));
     bool has_v1 = false;
     for (DomainPoint p : v) has_v1 = has_v1 || (p.u == cp::fixed_one && p.v == 0);
     return c == Counts{15, 16} && has_v1;
@@ -52,7 +52,7 @@ constexpr bool fills_from_states() {
     std::array<DomainPoint, 3> v{};
     std::array<std::uint32_t, 3> i{};
     const Counts c =
-        cp::tessellate(v.data(), i.data(), state(0, 0), state(0, 0), state(0, 0), flat_options(64));
+        cp::tessellate(v, i, state(0, 0), state(0, 0), state(0, 0), flat_options(64));
     return c == Counts{3, 1} && v[i[0]] == DomainPoint{0, 0} && v[i[1]] == DomainPoint{cp::fixed_one, 0} &&
            v[i[2]] == DomainPoint{0, cp::fixed_one};
 }
@@ -65,7 +65,7 @@ std::string check_state_triple(CpRunner& run, cp::LineState s0, cp::LineState s1
     const MeshView m = run.run(s0, s1, s2);
     if (!run.within_capacity()) return "counts exceed max_pattern_counts";
     std::string out;
-    const Counts counted = cp::tessellate(nullptr, nullptr, s0, s1, s2, run.options());
+    const Counts counted = cp::tessellate({}, {}, s0, s1, s2, run.options());
     if (!(counted == run.counts())) out += "count-only call differs; ";
     const ValidityReport r = check_valid_tessellation(m, cp::fixed_one, p0, p1, p2);
     out += r.failures;
@@ -237,7 +237,7 @@ TEST_CASE("cp pattern: max_pattern_counts bounds every pattern under every optio
                     for (unsigned c = first; c < tokens; ++c)
                         for (std::uint32_t t : {cp::lerp_one}) {
                             const Counts n =
-                                cp::tessellate(nullptr, nullptr, state(a, t), state(b, t), state(c, t), o);
+                                cp::tessellate({}, {}, state(a, t), state(b, t), state(c, t), o);
                             worst.vertices = std::max(worst.vertices, n.vertices);
                             worst.triangles = std::max(worst.triangles, n.triangles);
                             if (n.vertices > cap.vertices || n.triangles > cap.triangles)

@@ -22,10 +22,10 @@ struct QuadMesh {
 };
 
 QuadMesh library_quad(const std::array<float, 4>& f, const cp::PatternOptions& opt) {
-    const Counts n = cp::tessellate_quad(nullptr, nullptr, f, opt);
+    const Counts n = cp::tessellate_quad({}, {}, f, opt);
     QuadMesh m{std::vector<DomainPoint>(n.vertices + 1, DomainPoint{7, 7}),
                std::vector<std::uint32_t>(n.index_count() + 1, 0xdeadbeef)};
-    REQUIRE(cp::tessellate_quad(m.vertices.data(), m.indices.data(), f, opt) == n);
+    REQUIRE(cp::tessellate_quad(m.vertices, m.indices, f, opt) == n);
     REQUIRE(m.vertices.back() == DomainPoint{7, 7}); // nothing written past the counts
     REQUIRE(m.indices.back() == 0xdeadbeef);
     m.vertices.pop_back();
@@ -43,7 +43,7 @@ QuadMesh reference_quad(const std::array<float, 4>& f, const cp::PatternOptions&
         const Counts n = cp::pattern_counts(hf[0], hf[1], hf[2], opt);
         std::vector<DomainPoint> v(n.vertices);
         std::vector<std::uint32_t> t(n.index_count());
-        cp::tessellate(v.data(), t.data(), hf[0], hf[1], hf[2], opt);
+        cp::tessellate(v, t, hf[0], hf[1], hf[2], opt);
         const auto base = static_cast<std::uint32_t>(m.vertices.size());
         for (const DomainPoint& p : v) m.vertices.push_back(cp::quad_point(half, p));
         for (const std::uint32_t i : t) m.indices.push_back(base + i);
@@ -137,7 +137,7 @@ TEST_CASE("a shared-layout CP quad covers the unit square once and keeps one dia
 }
 
 // Equal factors 4: two triforce halves of 15 vertices and 16 triangles sharing a diagonal of 5 points.
-static_assert(cp::tessellate_quad(nullptr, nullptr, {4, 4, 4, 4}, {.layout = Layout::shared}) ==
+static_assert(cp::tessellate_quad({}, {}, {4, 4, 4, 4}, {{Layout::shared}}) ==
               Counts{25, 32});
-static_assert(cp::tessellate_quad(nullptr, nullptr, {4, 4, 4, 4}) ==
+static_assert(cp::tessellate_quad({}, {}, {4, 4, 4, 4}) ==
               Counts{2 * cp::pattern_counts(4, 4, 4).vertices, 32});

@@ -13,6 +13,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <span>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -35,10 +36,10 @@ struct Mesh {
 
 Mesh build(LineState s0, LineState s1, LineState s2, const PatternOptions& opt) {
     Mesh m;
-    m.counts = tessellate(nullptr, nullptr, s0, s1, s2, opt);
+    m.counts = tessellate({}, {}, s0, s1, s2, opt);
     m.vertices.resize(m.counts.vertices);
     m.indices.resize(3 * std::size_t{m.counts.triangles});
-    const Counts filled = tessellate(m.vertices.data(), m.indices.data(), s0, s1, s2, opt);
+    const Counts filled = tessellate(m.vertices, m.indices, s0, s1, s2, opt);
     REQUIRE(filled == m.counts);
     return m;
 }
@@ -150,9 +151,9 @@ TEST_CASE("equal tokens: rule (b) emits N^2 - d_T, rule (a) N^2 (cp_resolution 7
             const std::uint32_t n = token_info(tok).segments;
             const LineState s{tok, 12345};
             CAPTURE(max_factor, tok);
-            CHECK(tessellate(nullptr, nullptr, s, s, s, options(max_factor, ColumnRule::minimal)).triangles ==
+            CHECK(tessellate({}, {}, s, s, s, options(max_factor, ColumnRule::minimal)).triangles ==
                   n * n - d[tok]);
-            CHECK(tessellate(nullptr, nullptr, s, s, s, options(max_factor, ColumnRule::staircase)) ==
+            CHECK(tessellate({}, {}, s, s, s, options(max_factor, ColumnRule::staircase)) ==
                   Counts{(n + 1) * (n + 2) / 2, n * n});
         }
     }
@@ -215,12 +216,12 @@ TEST_CASE("Type 2 counts follow the closed form of cp_resolution 4.7 without the
                 for (unsigned i = 0; i < n0; ++i) vertices += r[i];
                 for (unsigned i = 0; i + 1 < n0; ++i) triangles += r[i] + r[i + 1] - 2u;
                 CAPTURE(s0.token, s1.token, s2.token);
-                CHECK(tessellate(nullptr, nullptr, s0, s1, s2, options(max_factor, rule, false)) ==
+                CHECK(tessellate({}, {}, s0, s1, s2, options(max_factor, rule, false)) ==
                       Counts{vertices, triangles});
                 // Provoking layout: one copy of each non-top point of columns 1..n0-2 (interior doubled up).
                 std::uint32_t copies = 0;
                 for (unsigned i = 1; i + 2 <= n0; ++i) copies += r[i] - 1u;
-                CHECK(tessellate(nullptr, nullptr, s0, s1, s2, options(max_factor, rule, false, true)) ==
+                CHECK(tessellate({}, {}, s0, s1, s2, options(max_factor, rule, false, true)) ==
                       Counts{vertices + copies, triangles});
             }
         }
@@ -242,8 +243,8 @@ TEST_CASE("max_pattern_counts bounds every token triple and every option", "[cp]
                         const PatternOptions opt =
                             options(max_factor, (o & 1) ? ColumnRule::staircase : ColumnRule::minimal,
                                     (o & 2) != 0, (o & 4) != 0);
-                        const Counts k = tessellate(nullptr, nullptr, LineState{a, 7}, LineState{b, 7},
-                                                    LineState{c, 7}, opt);
+                        const Counts k =
+                            tessellate({}, {}, LineState{a, 7}, LineState{b, 7}, LineState{c, 7}, opt);
                         seen.vertices = std::max(seen.vertices, k.vertices);
                         seen.triangles = std::max(seen.triangles, k.triangles);
                     }
@@ -605,9 +606,8 @@ TEST_CASE("bad input is clamped to [1, max_factor]", "[cp][input]") {
     CHECK(clamp_line_state({99, 5}, 256) == LineState{24, lerp_one});
     CHECK(clamp_line_state({5, 70000}, 64) == LineState{5, lerp_one});
     CHECK(clamp_line_state({0, 777}, 64) == LineState{0, 0});
-    CHECK(tessellate(nullptr, nullptr, LineState{99, 5}, LineState{0, 777}, LineState{3, 1u << 31},
-                     options(64)) == tessellate(nullptr, nullptr, LineState{16, lerp_one}, LineState{0, 0},
-                                                LineState{3, lerp_one}, options(64)));
+    CHECK(tessellate({}, {}, LineState{99, 5}, LineState{0, 777}, LineState{3, 1u << 31}, options(64)) ==
+          tessellate({}, {}, LineState{16, lerp_one}, LineState{0, 0}, LineState{3, lerp_one}, options(64)));
     // max_factor: clamped to [8, 256], rounded down to a power of two.
     CHECK(pattern_max_factor(0) == 8);
     CHECK(pattern_max_factor(64) == 64);
@@ -713,7 +713,7 @@ constexpr Counts constexpr_mesh_area_ok() {
     PatternOptions opt;
     opt.max_factor = 64;
     opt.layout = Layout::shared;
-    const Counts c = tessellate(v.data(), idx.data(), 16.0f, 8.0f, 4.0f, opt);
+    const Counts c = tessellate(v, idx, 16.0f, 8.0f, 4.0f, opt);
     std::int64_t area2 = 0;
     for (std::uint32_t t = 0; t < c.triangles; ++t) {
         const DomainPoint a = v[idx[3 * t]], b = v[idx[3 * t + 1]], d = v[idx[3 * t + 2]];
@@ -725,8 +725,8 @@ constexpr Counts constexpr_mesh_area_ok() {
 constexpr bool constexpr_provoking_unique() {
     std::array<DomainPoint, 66> v{};
     std::array<std::uint32_t, 3 * 64> idx{};
-    const Counts c = tessellate(v.data(), idx.data(), 8.0f, 8.0f, 8.0f,
-                                PatternOptions{64, ColumnRule::minimal, true, Layout::provoking});
+    const Counts c = tessellate(v, idx, 8.0f, 8.0f, 8.0f,
+                                PatternOptions{{Layout::provoking}, 64, ColumnRule::minimal, true});
     if (!(c == Counts{66, 64})) return false; // 45 unique + one copy per non-top point of columns 1..6
     for (std::uint32_t a = 0; a < c.triangles; ++a) {
         for (std::uint32_t b = a + 1; b < c.triangles; ++b) {
@@ -766,14 +766,15 @@ constexpr std::array<unsigned, 2> constexpr_rows() {
 
 TEST_CASE("constant evaluation of every public function", "[cp][constexpr]") {
     STATIC_REQUIRE(constexpr_mesh_area_ok() == Counts{49, 68});
+    STATIC_REQUIRE(tessellate({}, {}, LineState{4, lerp_one}, LineState{4, lerp_one}, LineState{4, lerp_one},
+                              PatternOptions{{Layout::shared}, 64, ColumnRule::minimal, true}) ==
+                   Counts{45, 64});
     STATIC_REQUIRE(
-        tessellate(nullptr, nullptr, LineState{4, lerp_one}, LineState{4, lerp_one}, LineState{4, lerp_one},
-                   PatternOptions{64, ColumnRule::minimal, true, Layout::shared}) == Counts{45, 64});
-    STATIC_REQUIRE(
-        pattern_counts(1.5f, 20.0f, 1.2f, PatternOptions{64, ColumnRule::minimal, true, Layout::shared}) ==
+        pattern_counts(1.5f, 20.0f, 1.2f, PatternOptions{{Layout::shared}, 64, ColumnRule::minimal, true}) ==
         Counts{27, 26});
-    STATIC_REQUIRE(pattern_counts(5, 5, 5, PatternOptions{64, ColumnRule::staircase, true, Layout::shared}) ==
-                   Counts{28, 36});
+    STATIC_REQUIRE(
+        pattern_counts(5, 5, 5, PatternOptions{{Layout::shared}, 64, ColumnRule::staircase, true}) ==
+        Counts{28, 36});
     STATIC_REQUIRE(pattern_counts(1, 1, 1) == Counts{3, 1});
     STATIC_REQUIRE(max_pattern_counts(64) == Counts{4098, 4096});
     STATIC_REQUIRE(pattern_type(LineState{0, 0}, LineState{9, 0}, LineState{1, 5}) == PatternType::fan);
@@ -797,4 +798,35 @@ TEST_CASE("constant evaluation of every public function", "[cp][constexpr]") {
     STATIC_REQUIRE(base_vertex(Rotation{2}, 2) == 1);
     STATIC_REQUIRE(rotate_factors(Rotation{1}, {1, 2, 3}) == std::array<float, 3>{2, 3, 1});
     STATIC_REQUIRE(to_base_point(Rotation{1}, {0, 0}) == DomainPoint{fixed_one, 0});
+}
+
+// docs/api.md, "Sized outputs": a fill into a span one entry too short writes nothing and still returns the
+// counts; spans of exactly the counts are filled.
+TEST_CASE("cp::tessellate and tessellate_quad: a short span gets nothing written, exact spans the pattern",
+          "[cp][bad_input]") {
+    constexpr DomainPoint sentinel{0xDEADBEEFu, 0xFEEDFACEu};
+    auto check = [&](auto&& fill, Counts n) {
+        for (int short_side = 0; short_side < 2; ++short_side) {
+            std::vector<DomainPoint> v(n.vertices - (short_side == 0 ? 1 : 0), sentinel);
+            std::vector<std::uint32_t> i(n.index_count() - (short_side == 1 ? 1 : 0), 0xABCDEF01u);
+            CHECK(fill(v, i) == n);
+            CHECK(std::all_of(v.begin(), v.end(), [&](DomainPoint p) { return p == sentinel; }));
+            CHECK(std::all_of(i.begin(), i.end(), [](std::uint32_t x) { return x == 0xABCDEF01u; }));
+        }
+        std::vector<DomainPoint> v(n.vertices, sentinel);
+        std::vector<std::uint32_t> i(n.index_count(), 0xABCDEF01u);
+        CHECK(fill(v, i) == n);
+        CHECK(std::none_of(i.begin(), i.end(), [](std::uint32_t x) { return x == 0xABCDEF01u; }));
+    };
+    for (const Layout layout : {Layout::provoking, Layout::shared}) {
+        PatternOptions opt;
+        opt.layout = layout;
+        check([&](std::span<DomainPoint> v,
+                  std::span<std::uint32_t> i) { return tessellate(v, i, 10.3f, 6, 3, opt); },
+              pattern_counts(10.3f, 6, 3, opt));
+        const std::array<float, 4> quad{12, 5, 12, 30};
+        check([&](std::span<DomainPoint> v,
+                  std::span<std::uint32_t> i) { return tessellate_quad(v, i, quad, opt); },
+              tessellate_quad({}, {}, quad, opt));
+    }
 }

@@ -66,7 +66,7 @@ struct Comparer {
 
     void check(LineState s0, LineState s1, LineState s2) {
         ++triples;
-        const auto ref = ctess::cp::tessellate(ref_v.data(), ref_i.data(), s0, s1, s2, options);
+        const auto ref = ctess::cp::tessellate(ref_v, ref_i, s0, s1, s2, options);
         if (patch_options.winding == Winding::cw)
             for (std::uint32_t t = 0; t < ref.triangles; ++t) std::swap(ref_i[3 * t + 1], ref_i[3 * t + 2]);
         const CpPatch patch(tables, s0, s1, s2, patch_options);

@@ -8,8 +8,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
+#include <ctess/cp/pattern.hpp>
 #include <ctess/d3d11/tessellator.hpp>
 
 namespace {
@@ -27,23 +29,22 @@ constexpr Partitioning all_modes[] = {Partitioning::integer, Partitioning::pow2,
 
 // ---- constant evaluation ----
 constexpr TessOptions odd_cw{Partitioning::fractional_odd, Winding::cw};
-static_assert(tessellate_tri(nullptr, nullptr, {2.5f, 3.7f, 5.1f, 4.2f}, odd_cw) == Counts{27, 37});
-static_assert(tessellate_tri(nullptr, nullptr, {64, 64, 64, 64},
-                             {Partitioning::fractional_even, Winding::cw}) == Counts{3169, 6144});
-static_assert(tessellate_quad(nullptr, nullptr, {3, 3, 3, 3, 3, 3}, {Partitioning::integer, Winding::cw}) ==
+static_assert(tessellate_tri({}, {}, {2.5f, 3.7f, 5.1f, 4.2f}, odd_cw) == Counts{27, 37});
+static_assert(tessellate_tri({}, {}, {64, 64, 64, 64}, {Partitioning::fractional_even, Winding::cw}) ==
+              Counts{3169, 6144});
+static_assert(tessellate_quad({}, {}, {3, 3, 3, 3, 3, 3}, {Partitioning::integer, Winding::cw}) ==
               Counts{16, 18});
-static_assert(tessellate_isoline(nullptr, nullptr, {4.5f, 2.5f},
-                                 {Partitioning::fractional_even, Winding::cw}) ==
+static_assert(tessellate_isoline({}, {}, {4.5f, 2.5f}, {Partitioning::fractional_even, Winding::cw}) ==
               IsolineCounts{5 * 5, 5 * 4});
 // The default options are integer partitioning, clockwise (the reference's defaults).
-static_assert(tessellate_tri(nullptr, nullptr, {3, 3, 3, 3}) ==
-              tessellate_tri(nullptr, nullptr, {3, 3, 3, 3}, {Partitioning::integer, Winding::cw}));
+static_assert(tessellate_tri({}, {}, {3, 3, 3, 3}) ==
+              tessellate_tri({}, {}, {3, 3, 3, 3}, {Partitioning::integer, Winding::cw}));
 
 // Filled in a constant expression: the minimum triangle, a 2x2 quad, and a small isoline.
 constexpr bool tri_minimum_ok = [] {
     std::array<DomainPoint, 3> p{};
     std::array<std::uint32_t, 3> i{};
-    const Counts c = tessellate_tri(p.data(), i.data(), {1, 1, 1, 1}, {Partitioning::integer, Winding::ccw});
+    const Counts c = tessellate_tri(p, i, {1, 1, 1, 1}, {Partitioning::integer, Winding::ccw});
     return c == Counts{3, 1} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 0} &&
            p[2] == DomainPoint{65536, 0} && i == std::array<std::uint32_t, 3>{0, 2, 1};
 }();
@@ -51,8 +52,7 @@ static_assert(tri_minimum_ok);
 constexpr bool quad_2x2_ok = [] {
     std::array<DomainPoint, 9> p{};
     std::array<std::uint32_t, 24> i{};
-    const Counts c =
-        tessellate_quad(p.data(), i.data(), {2, 2, 2, 2, 2, 2}, {Partitioning::integer, Winding::cw});
+    const Counts c = tessellate_quad(p, i, {2, 2, 2, 2, 2, 2}, {Partitioning::integer, Winding::cw});
     // Outer ring clockwise from (0, 1), then the centre.
     return c == Counts{9, 8} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 32768} &&
            p[2] == DomainPoint{0, 0} && p[4] == DomainPoint{65536, 0} && p[8] == DomainPoint{32768, 32768};
@@ -61,8 +61,7 @@ static_assert(quad_2x2_ok);
 constexpr bool isoline_ok = [] {
     std::array<DomainPoint, 6> p{};
     std::array<std::uint32_t, 8> i{};
-    const IsolineCounts c =
-        tessellate_isoline(p.data(), i.data(), {2, 2}, {Partitioning::integer, Winding::cw});
+    const IsolineCounts c = tessellate_isoline(p, i, {2, 2}, {Partitioning::integer, Winding::cw});
     return c == IsolineCounts{6, 4} && p[4] == DomainPoint{32768, 32768} &&
            i == std::array<std::uint32_t, 8>{0, 1, 1, 2, 3, 4, 4, 5};
 }();
@@ -82,11 +81,11 @@ using IsoMesh = MeshOf<IsolineCounts>;
 template <std::size_t N, class Tessellate>
 auto run(Tessellate tessellate, Partitioning mode, Winding winding, const std::array<float, N>& f) {
     const TessOptions options{mode, winding};
-    MeshOf<decltype(tessellate(nullptr, nullptr, f, options))> m;
-    m.counts = tessellate(nullptr, nullptr, f, options);
+    MeshOf<decltype(tessellate({}, {}, f, options))> m;
+    m.counts = tessellate({}, {}, f, options);
     m.points.assign(m.counts.vertices + 1, DomainPoint{0xdeadbeef, 0xdeadbeef});
     m.indices.assign(m.counts.index_count() + 1, 0xdeadbeef);
-    const auto filled = tessellate(m.points.data(), m.indices.data(), f, options);
+    const auto filled = tessellate(m.points, m.indices, f, options);
     REQUIRE(filled == m.counts);
     REQUIRE(m.points.back() == DomainPoint{0xdeadbeef, 0xdeadbeef}); // nothing written past the count
     REQUIRE(m.indices.back() == 0xdeadbeef);
@@ -332,7 +331,7 @@ TEST_CASE("d3d11 domains: spec 4.6 uniform triangle table", "[d3d11][domains]") 
         for (int k = 0; k < 10; ++k) {
             const float f = factors[k];
             INFO("mode " << static_cast<int>(row.mode) << " f " << f);
-            const Counts c = tessellate_tri(nullptr, nullptr, {f, f, f, f}, {row.mode, Winding::cw});
+            const Counts c = tessellate_tri({}, {}, {f, f, f, f}, {row.mode, Winding::cw});
             REQUIRE(c.vertices == row.expect[k].vertices);
             REQUIRE(c.triangles == row.expect[k].triangles);
             // Uniform closed forms: tris = floor(3S^2/2); points 3S^2/4 + 3S/2 + 1 (even S), 3S + 3(S-1)^2/4
@@ -352,7 +351,7 @@ TEST_CASE("d3d11 domains: spec 4.6 non-uniform triangle table", "[d3d11][domains
     const std::array<float, 4> a = {2.5f, 3.7f, 5.1f, 4.2f};
     const std::array<float, 4> b = {7.3f, 1.0f, 20.0f, 9.9f};
     const auto counts = [](Partitioning m, const std::array<float, 4>& f) {
-        return tessellate_tri(nullptr, nullptr, f, {m, Winding::cw});
+        return tessellate_tri({}, {}, f, {m, Winding::cw});
     };
     REQUIRE(counts(Partitioning::fractional_even, a) == Counts{33, 50});
     REQUIRE(counts(Partitioning::fractional_even, b) == Counts{91, 150});
@@ -369,7 +368,7 @@ TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[
     for (const Partitioning m : all_modes) {
         for (int n = 0; n < 3000; ++n) {
             const std::array<float, 4> t = {src.factor(), src.factor(), src.factor(), src.factor()};
-            const Counts ct = tessellate_tri(nullptr, nullptr, t, {m, Winding::cw});
+            const Counts ct = tessellate_tri({}, {}, t, {m, Winding::cw});
             const Counts ft = tri_formula(m, t);
             INFO("tri mode " << static_cast<int>(m) << " " << t[0] << " " << t[1] << " " << t[2] << " "
                              << t[3]);
@@ -380,7 +379,7 @@ TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[
 
             const std::array<float, 6> q = {src.factor(), src.factor(), src.factor(),
                                             src.factor(), src.factor(), src.factor()};
-            const Counts cq = tessellate_quad(nullptr, nullptr, q, {m, Winding::cw});
+            const Counts cq = tessellate_quad({}, {}, q, {m, Winding::cw});
             const Counts fq = quad_formula(m, q);
             INFO("quad " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << " " << q[4] << " " << q[5]);
             REQUIRE(cq.vertices == fq.vertices);
@@ -389,7 +388,7 @@ TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[
             REQUIRE(cq.triangles <= max_quad_counts.triangles);
 
             const std::array<float, 2> l = {src.factor(), src.factor()};
-            const IsolineCounts cl = tessellate_isoline(nullptr, nullptr, l, {m, Winding::cw});
+            const IsolineCounts cl = tessellate_isoline({}, {}, l, {m, Winding::cw});
             const IsolineCounts fl = isoline_formula(m, l);
             INFO("isoline " << l[0] << " " << l[1]);
             REQUIRE(cl.vertices == fl.vertices);
@@ -402,10 +401,9 @@ TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[
 
 TEST_CASE("d3d11 domains: buffer maxima are reached at factor 64", "[d3d11][domains]") {
     for (const Partitioning m : {Partitioning::integer, Partitioning::fractional_even}) {
-        REQUIRE(tessellate_tri(nullptr, nullptr, {64, 64, 64, 64}, {m, Winding::cw}) == max_tri_counts);
-        REQUIRE(tessellate_quad(nullptr, nullptr, {64, 64, 64, 64, 64, 64}, {m, Winding::cw}) ==
-                max_quad_counts);
-        REQUIRE(tessellate_isoline(nullptr, nullptr, {64, 64}, {m, Winding::cw}) == max_isoline_counts);
+        REQUIRE(tessellate_tri({}, {}, {64, 64, 64, 64}, {m, Winding::cw}) == max_tri_counts);
+        REQUIRE(tessellate_quad({}, {}, {64, 64, 64, 64, 64, 64}, {m, Winding::cw}) == max_quad_counts);
+        REQUIRE(tessellate_isoline({}, {}, {64, 64}, {m, Winding::cw}) == max_isoline_counts);
     }
     REQUIRE(max_tri_counts == Counts{3169, 6144});
     REQUIRE(max_tri_counts.index_count() == 18432);
@@ -596,4 +594,28 @@ TEST_CASE("d3d11 domains: bad factors that clamp", "[d3d11][domains][bad-input]"
     // Isoline: huge density -> 64 lines; tiny density -> 1 line.
     REQUIRE(iso(Partitioning::integer, {1e30f, 1}).counts == IsolineCounts{128, 64});
     REQUIRE(iso(Partitioning::integer, {denorm_f, 1}).counts == IsolineCounts{2, 1});
+}
+
+// docs/api.md, "Sized outputs": a fill into a span one entry too short writes nothing and still returns the
+// counts; every family's default winding is counter-clockwise.
+TEST_CASE("d3d11 tessellators: a short span gets nothing written; the default winding is ccw",
+          "[d3d11][bad_input]") {
+    constexpr DomainPoint sentinel{0xDEADBEEFu, 0xFEEDFACEu};
+    auto check = [&](auto&& fill) {
+        const auto n = fill(std::span<DomainPoint>{}, std::span<std::uint32_t>{});
+        REQUIRE(n.vertices > 0);
+        for (int short_side = 0; short_side < 2; ++short_side) {
+            std::vector<DomainPoint> v(n.vertices - (short_side == 0 ? 1 : 0), sentinel);
+            std::vector<std::uint32_t> i(n.index_count() - (short_side == 1 ? 1 : 0), 0xABCDEF01u);
+            CHECK(fill(std::span<DomainPoint>(v), std::span<std::uint32_t>(i)) == n);
+            CHECK(std::all_of(v.begin(), v.end(), [&](DomainPoint p) { return p == sentinel; }));
+            CHECK(std::all_of(i.begin(), i.end(), [](std::uint32_t x) { return x == 0xABCDEF01u; }));
+        }
+    };
+    const TessOptions odd{Partitioning::fractional_odd};
+    check([&](auto v, auto i) { return tessellate_tri(v, i, {2.5f, 3.7f, 5.1f, 4.2f}, odd); });
+    check([&](auto v, auto i) { return tessellate_quad(v, i, {3, 4, 5, 6, 4, 5}, odd); });
+    check([&](auto v, auto i) { return tessellate_isoline(v, i, {4.5f, 2.5f}, odd); });
+    STATIC_REQUIRE(TessOptions{}.winding == ctess::Winding::ccw);
+    STATIC_REQUIRE(ctess::cp::PatternOptions{}.winding == TessOptions{}.winding);
 }

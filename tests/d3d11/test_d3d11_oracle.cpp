@@ -41,12 +41,12 @@ Mesh run(Tessellate tessellate, const TessOptions& options, const std::vector<fl
     std::array<float, N> f{};
     for (std::size_t k = 0; k < N; ++k) f[k] = factors[k];
     Mesh m;
-    const auto counts = tessellate(nullptr, nullptr, f, options);
+    const auto counts = tessellate({}, {}, f, options);
     m.vertex_count = counts.vertices;
     m.index_count = counts.index_count();
     m.points.resize(m.vertex_count);
     m.indices.resize(m.index_count);
-    const auto filled = tessellate(m.points.data(), m.indices.data(), f, options);
+    const auto filled = tessellate(m.points, m.indices, f, options);
     REQUIRE(filled == counts);
     return m;
 }

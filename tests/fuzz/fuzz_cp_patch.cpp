@@ -36,15 +36,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const rt::CpPatch patch = raw_states ? rt::CpPatch(tables, s[0], s[1], s[2], patch_options)
                                          : rt::CpPatch(tables, f[0], f[1], f[2], patch_options);
 
-    cp::PatternOptions options{max};
+    cp::PatternOptions options{{}, max};
     options.layout = patch_options.layout;
     options.winding = patch_options.winding;
-    const Counts ref = cp::tessellate(nullptr, nullptr, s[0], s[1], s[2], options);
+    const Counts ref = cp::tessellate({}, {}, s[0], s[1], s[2], options);
     CTESS_FUZZ_CHECK(patch.vertex_count() == ref.vertices && patch.triangle_count() == ref.triangles);
     CTESS_FUZZ_CHECK(rt::cp_counts(tables, s[0], s[1], s[2], patch_options) == ref);
     std::vector<DomainPoint> ref_v(ref.vertices);
     std::vector<std::uint32_t> ref_i(3 * std::size_t{ref.triangles});
-    cp::tessellate(ref_v.data(), ref_i.data(), s[0], s[1], s[2], options);
+    cp::tessellate(ref_v, ref_i, s[0], s[1], s[2], options);
 
     // Random access, in range and out of range.
     for (unsigned q = 0; q < 8 && !in.empty(); ++q) {

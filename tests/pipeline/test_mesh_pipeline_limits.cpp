@@ -22,7 +22,7 @@ namespace {
 // The procedural generator's counts of the (max, max, max) pattern, in the pipeline's provoking layout.
 Counts full_pattern(unsigned max) {
     const float f = static_cast<float>(max);
-    return cp::pattern_counts(f, f, f, cp::PatternOptions{max});
+    return cp::pattern_counts(f, f, f, cp::PatternOptions{{}, max});
 }
 
 } // namespace

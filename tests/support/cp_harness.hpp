@@ -102,11 +102,11 @@ class CpRunner {
     Counts capacity() const { return capacity_; }
 
     MeshView run(cp::LineState s0, cp::LineState s1, cp::LineState s2) {
-        counts_ = cp::tessellate(vertices_.data(), indices_.data(), s0, s1, s2, options_);
+        counts_ = cp::tessellate(vertices_, indices_, s0, s1, s2, options_);
         return view();
     }
     MeshView run(float f0, float f1, float f2) {
-        counts_ = cp::tessellate(vertices_.data(), indices_.data(), f0, f1, f2, options_);
+        counts_ = cp::tessellate(vertices_, indices_, f0, f1, f2, options_);
         return view();
     }
     Counts counts() const { return counts_; }

@@ -17,7 +17,7 @@ namespace {
 
 std::uint32_t d3d_even_triangles(const std::array<float, 3>& f, float inside) {
     const d3d11::TessOptions opt{d3d11::Partitioning::fractional_even, Winding::cw};
-    return d3d11::tessellate_tri(nullptr, nullptr, {f[0], f[1], f[2], inside}, opt).triangles;
+    return d3d11::tessellate_tri({}, {}, {f[0], f[1], f[2], inside}, opt).triangles;
 }
 
 } // namespace

@@ -40,11 +40,11 @@ float max_of(const std::vector<float>& v, std::size_t n) {
 }
 
 template <class Tessellate>
-void fill(Mesh& mesh, Tessellate&& tessellate) {      // counts, then fill
-    const auto counts = tessellate(nullptr, nullptr); // Counts, or IsolineCounts for iso
+void fill(Mesh& mesh, Tessellate&& tessellate) {                                          // counts, then fill
+    const auto counts = tessellate(std::span<DomainPoint>{}, std::span<std::uint32_t>{}); // or IsolineCounts
     mesh.vertices.resize(counts.vertices);
     mesh.indices.resize(counts.index_count());
-    tessellate(mesh.vertices.data(), mesh.indices.data());
+    tessellate(std::span<DomainPoint>(mesh.vertices), std::span<std::uint32_t>(mesh.indices));
 }
 
 Mesh tessellate_d3d11(const PatternRequest& r) {
@@ -53,7 +53,8 @@ Mesh tessellate_d3d11(const PatternRequest& r) {
     mesh.fixed_one = d3d11::fixed_one;
     const auto& f = r.factors;
     auto run = [&](auto fn, const auto& factors) {
-        fill(mesh, [&](DomainPoint* v, std::uint32_t* i) { return fn(v, i, factors, opt); });
+        fill(mesh,
+             [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) { return fn(v, i, factors, opt); });
     };
     if (r.domain == "tri") {
         if (f.size() != 3 && f.size() != 4)
@@ -101,10 +102,11 @@ Mesh tessellate_cp(const PatternRequest& r) {
     mesh.fixed_one = cp::fixed_one;
     const auto& f = r.factors;
     if (!quad)
-        fill(mesh,
-             [&](DomainPoint* v, std::uint32_t* i) { return cp::tessellate(v, i, f[0], f[1], f[2], opt); });
+        fill(mesh, [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
+            return cp::tessellate(v, i, f[0], f[1], f[2], opt);
+        });
     else // the shared layout welds the diagonal (cp::tessellate_quad)
-        fill(mesh, [&](DomainPoint* v, std::uint32_t* i) {
+        fill(mesh, [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
             return cp::tessellate_quad(v, i, {f[0], f[1], f[2], f[3]}, opt);
         });
     return mesh;

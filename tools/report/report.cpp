@@ -53,7 +53,7 @@ void cp_pattern(const Factors& f, Pattern& out) {
     static std::vector<std::uint32_t> i(3 * ctess::cp::max_pattern_counts(256).triangles);
     ctess::cp::PatternOptions opt;
     opt.max_factor = 64;
-    const ctess::Counts n = ctess::cp::tessellate(v.data(), i.data(), f[0], f[1], f[2], opt);
+    const ctess::Counts n = ctess::cp::tessellate(v, i, f[0], f[1], f[2], opt);
     out.w.resize(n.vertices);
     const double one = ctess::cp::fixed_one;
     for (std::uint32_t k = 0; k < n.vertices; ++k)
@@ -69,7 +69,7 @@ void d3d11_pattern(const Factors& f, Pattern& out) {
     static std::vector<std::uint32_t> i(ctess::d3d11::max_tri_counts.index_count());
     const ctess::d3d11::TessOptions opt{P, ctess::Winding::ccw};
     const float inside = (f[0] + f[1] + f[2]) / 3.0f;
-    const ctess::Counts n = ctess::d3d11::tessellate_tri(v.data(), i.data(), {f[0], f[1], f[2], inside}, opt);
+    const ctess::Counts n = ctess::d3d11::tessellate_tri(v, i, {f[0], f[1], f[2], inside}, opt);
     out.w.resize(n.vertices);
     const double one = 65536.0;
     for (std::uint32_t k = 0; k < n.vertices; ++k)
@@ -154,7 +154,7 @@ std::uint32_t d3d11_emit(const Factors& f) {
     static std::vector<ctess::DomainPoint> v(ctess::d3d11::max_tri_counts.vertices);
     static std::vector<std::uint32_t> i(ctess::d3d11::max_tri_counts.index_count());
     const ctess::d3d11::TessOptions opt{P, ctess::Winding::ccw};
-    return ctess::d3d11::tessellate_tri(v.data(), i.data(), {f[0], f[1], f[2], (f[0] + f[1] + f[2]) / 3.0f},
+    return ctess::d3d11::tessellate_tri(v, i, {f[0], f[1], f[2], (f[0] + f[1] + f[2]) / 3.0f},
                                         opt)
         .triangles;
 }

@@ -3,6 +3,7 @@
 // its buffers before the fill (count, then fill, as OpenSubdiv's Bfr::Tessellation). Indices are
 // 3 * triangles.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 namespace ctess {
@@ -13,5 +14,11 @@ struct Counts {
     constexpr std::uint32_t index_count() const { return 3 * triangles; }
     friend constexpr bool operator==(const Counts&, const Counts&) = default;
 };
+
+// Whether buffers of these sizes hold a pattern of counts n: what every fill that takes spans checks before
+// it writes anything (docs/api.md, "Sized outputs").
+constexpr bool fits(Counts n, std::size_t vertices, std::size_t indices) {
+    return n.vertices <= vertices && n.index_count() <= indices;
+}
 
 } // namespace ctess

@@ -15,9 +15,12 @@ namespace ctess {
 enum class Winding : std::uint8_t { cw, ccw };
 enum class Layout : std::uint8_t { provoking, shared };
 
+// The one winding default of every family (D3D11 included): counter-clockwise in (u, v).
+inline constexpr Winding default_winding = Winding::ccw;
+
 struct PatchOptions {
     Layout layout = Layout::provoking;
-    Winding winding = Winding::ccw;
+    Winding winding = default_winding;
     friend constexpr bool operator==(const PatchOptions&, const PatchOptions&) = default;
 };
 

@@ -17,6 +17,8 @@
 #include "line.hpp"
 #include "type1.hpp"
 #include <ctess/core/config.hpp>
+#include <span>
+
 #include <ctess/core/counts.hpp>
 #include <ctess/core/domain_point.hpp>
 #include <ctess/core/patch_options.hpp>
@@ -29,12 +31,12 @@ enum class PatternType : std::uint8_t {
     parallelogram // Type 2: the clamped parallelogram
 };
 
-struct PatternOptions {
+// The shared PatchOptions (layout: provoking appends copies so every triangle's first index is unique;
+// winding in (u, v), cw swaps each triangle's last two indices) and CP's own.
+struct PatternOptions : PatchOptions {
     unsigned max_factor = ctess::max_tess_factor; // 64 or 256; factors are clamped to [1, max_factor]
     ColumnRule column_rule = ColumnRule::minimal;
     bool collapse_t0 = true; // merge the coincident vertices of T0 edges, drop the triangles that repeat one
-    Layout layout = Layout::provoking; // provoking: every triangle's first index is unique (copies appended)
-    Winding winding = Winding::ccw;    // in (u, v); cw swaps each triangle's last two indices
 };
 
 // The type follows from the tokens alone (the lerps never change it).
@@ -235,12 +237,14 @@ constexpr Counts parallelogram_pattern(const EdgeLine& e0, const EdgeLine& e1, c
 
 // Writes the pattern of three line states. Outputs first, then inputs, then options (patch_options.hpp).
 // vertices: Counts::vertices entries, indices: 3 per triangle, counter-clockwise in (u, v) (opt.winding),
-// provoking vertex first. Null pointers = count only (call first to size).
+// provoking vertex first.
 // Vertex order: Type 0: v0, v1, v2. Type 1: v0, A0, B0, e1 points from v1 to v2, B2, A2, P. Type 2: column 0
 // (e2 points from v0), column 1, ..., column n0-1 (each from its e0 point up), then e1 points from v1 to v2.
 // The T0 collapse removes merged vertices from that order; the provoking layout appends copies after it.
-constexpr Counts tessellate(DomainPoint* vertices, std::uint32_t* indices, LineState s0, LineState s1,
-                            LineState s2, const PatternOptions& opt = {}) {
+namespace detail {
+// The fill behind tessellate(): unchecked pointers, null = count only.
+constexpr Counts tessellate_into(DomainPoint* vertices, std::uint32_t* indices, LineState s0, LineState s1,
+                                 LineState s2, const PatternOptions& opt) {
     const unsigned max_factor = pattern_max_factor(opt.max_factor);
     s0 = clamp_line_state(s0, max_factor);
     s1 = clamp_line_state(s1, max_factor);
@@ -259,16 +263,33 @@ constexpr Counts tessellate(DomainPoint* vertices, std::uint32_t* indices, LineS
     return detail::parallelogram_pattern(e0, e1, e2, opt.column_rule, opt.collapse_t0, sink);
 }
 
+constexpr Counts tessellate_into(DomainPoint* vertices, std::uint32_t* indices, float f0, float f1, float f2,
+                                 const PatternOptions& opt) {
+    const unsigned max_factor = pattern_max_factor(opt.max_factor);
+    return tessellate_into(vertices, indices, line_state(f0, max_factor), line_state(f1, max_factor),
+                           line_state(f2, max_factor), opt);
+}
+} // namespace detail
+
+// Count, then fill (docs/api.md, "Sized outputs"): returns the pattern's counts and writes it only when both
+// spans are large enough; with a shorter span (empty spans: count only) nothing is written.
+constexpr Counts tessellate(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices, LineState s0,
+                            LineState s1, LineState s2, const PatternOptions& opt = {}) {
+    const Counts n = detail::tessellate_into(nullptr, nullptr, s0, s1, s2, opt);
+    if (!fits(n, vertices.size(), indices.size())) return n;
+    return detail::tessellate_into(vertices.data(), indices.data(), s0, s1, s2, opt);
+}
+
 // line_state() of each factor (clamped to [1, max_factor]), then the pattern above.
-constexpr Counts tessellate(DomainPoint* vertices, std::uint32_t* indices, float f0, float f1, float f2,
-                            const PatternOptions& opt = {}) {
+constexpr Counts tessellate(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices, float f0,
+                            float f1, float f2, const PatternOptions& opt = {}) {
     const unsigned max_factor = pattern_max_factor(opt.max_factor);
     return tessellate(vertices, indices, line_state(f0, max_factor), line_state(f1, max_factor),
                       line_state(f2, max_factor), opt);
 }
 
 constexpr Counts pattern_counts(float f0, float f1, float f2, const PatternOptions& opt = {}) {
-    return tessellate(nullptr, nullptr, f0, f1, f2, opt);
+    return detail::tessellate_into(nullptr, nullptr, f0, f1, f2, opt);
 }
 
 // Upper bound of the counts over every input and every option, for sizing buffers: the top token on all

@@ -2,6 +2,7 @@
 // (docs/algorithm.md §2.12). Quad corners q0, q1, q2, q3 are counter-clockwise; edge k runs q_k -> q_{k+1}.
 #pragma once
 #include <array>
+#include <span>
 #include <cstdint>
 
 #include "line.hpp"
@@ -61,7 +62,7 @@ constexpr std::uint32_t e1_block_start(const DomainPoint* v, std::uint32_t n) {
 } // namespace detail
 
 // A whole CP quad (docs/algorithm.md §2.12): the two halves of split_quad, their points mapped into the
-// quad's unit square by quad_point, counts first (null outputs), then fill, outputs first. Triangle A's
+// quad's unit square by quad_point, counts first (empty spans), then fill, outputs first; nothing is written when a span is short. Triangle A's
 // vertices and triangles come first, then B's.
 // * Layout::shared welds the diagonal: B's diagonal points are A's (same positions bit for bit, as both
 // halves
@@ -70,8 +71,9 @@ constexpr std::uint32_t e1_block_start(const DomainPoint* v, std::uint32_t n) {
 // * Layout::provoking keeps each half's own diagonal points, so every triangle keeps a first vertex of its
 // own. The fill needs no scratch memory: B is tessellated into the tail of the vertex buffer, its vertices
 // before the diagonal are moved up over the diagonal, and A is written in front.
-constexpr Counts tessellate_quad(DomainPoint* vertices, std::uint32_t* indices,
-                                 const std::array<float, 4>& edge_factors, const PatternOptions& opt = {}) {
+namespace detail {
+constexpr Counts tessellate_quad_into(DomainPoint* vertices, std::uint32_t* indices,
+                                      const std::array<float, 4>& edge_factors, const PatternOptions& opt) {
     const QuadSplit split = split_quad(edge_factors);
     const auto& fa = split.triangles[0].factors;
     const auto& fb = split.triangles[1].factors;
@@ -87,10 +89,10 @@ constexpr Counts tessellate_quad(DomainPoint* vertices, std::uint32_t* indices,
     // B into the tail, then its vertices before the diagonal block moved up over the block (high to low).
     DomainPoint* vb = vertices + (a.vertices - nd);
     std::uint32_t* ib = indices + 3 * std::size_t{a.triangles};
-    tessellate(vb, ib, fb[0], fb[1], fb[2], opt);
+    tessellate_into(vb, ib, fb[0], fb[1], fb[2], opt);
     const std::uint32_t b0 = weld ? detail::e1_block_start(vb, b.vertices) : 0u;
     for (std::uint32_t i = b0; i-- > 0;) vertices[a.vertices + i] = vb[i];
-    tessellate(vertices, indices, fa[0], fa[1], fa[2], opt);
+    tessellate_into(vertices, indices, fa[0], fa[1], fa[2], opt);
     const std::uint32_t a0 = weld ? detail::e1_block_start(vertices, a.vertices) : 0u;
     for (std::uint32_t i = a.vertices; i < total.vertices; ++i) vertices[i] = quad_point(1, vertices[i]);
     // B's index i: before the block a.vertices + i; in it A's mirrored diagonal point (B walks the diagonal
@@ -100,6 +102,14 @@ constexpr Counts tessellate_quad(DomainPoint* vertices, std::uint32_t* indices,
         ib[k] = i < b0 ? a.vertices + i : i < b0 + nd ? a0 + (nd - 1 - (i - b0)) : a.vertices + i - nd;
     }
     return total;
+}
+} // namespace detail
+
+constexpr Counts tessellate_quad(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices,
+                                 const std::array<float, 4>& edge_factors, const PatternOptions& opt = {}) {
+    const Counts n = detail::tessellate_quad_into(nullptr, nullptr, edge_factors, opt);
+    if (!fits(n, vertices.size(), indices.size())) return n;
+    return detail::tessellate_quad_into(vertices.data(), indices.data(), edge_factors, opt);
 }
 
 } // namespace ctess::cp

@@ -14,6 +14,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include "edge.hpp"
 #include "factors.hpp"
@@ -25,7 +26,7 @@ namespace ctess::d3d11 {
 
 struct TessOptions {
     Partitioning partitioning = Partitioning::integer;
-    Winding winding = Winding::cw;
+    Winding winding = default_winding;
 };
 
 // The isoline domain's counts: points and line segments (2 indices each).
@@ -76,8 +77,9 @@ constexpr std::uint32_t edge_param_index(bool reversed, std::uint32_t first, std
 // ---- triangle domain ----
 
 // factors: {Ueq0, Veq0, Weq0, inside}.
-constexpr Counts tessellate_tri(DomainPoint* points, std::uint32_t* indices,
-                                const std::array<float, 4>& factors, const TessOptions& options = {}) {
+namespace detail {
+constexpr Counts tessellate_tri_into(DomainPoint* points, std::uint32_t* indices, const std::array<float, 4>& factors,
+    const TessOptions& options) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 3; ++e)
         if (culls(factors[e])) return {};
@@ -194,11 +196,14 @@ constexpr Counts tessellate_tri(DomainPoint* points, std::uint32_t* indices,
     return {point_total, tri_total};
 }
 
+} // namespace detail
+
 // ---- quad domain ----
 
 // factors: {Ueq0, Veq0, Ueq1, Veq1, insideU, insideV}.
-constexpr Counts tessellate_quad(DomainPoint* points, std::uint32_t* indices,
-                                 const std::array<float, 6>& factors, const TessOptions& options = {}) {
+namespace detail {
+constexpr Counts tessellate_quad_into(DomainPoint* points, std::uint32_t* indices, const std::array<float, 6>& factors,
+    const TessOptions& options) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 4; ++e)
         if (culls(factors[e])) return {};
@@ -363,13 +368,15 @@ constexpr Counts tessellate_quad(DomainPoint* points, std::uint32_t* indices,
     return {point_total, tri_total};
 }
 
+} // namespace detail
+
 // ---- isoline domain ----
 
 // factors: {density, detail}. Density is always integer (rounded up, [1, 64]); lines sit at v = 0 .. < 1
 // (none at v = 1); detail follows the partitioning. Segments connect consecutive points of each line.
-constexpr IsolineCounts tessellate_isoline(DomainPoint* points, std::uint32_t* indices,
-                                           const std::array<float, 2>& factors,
-                                           const TessOptions& options = {}) {
+namespace detail {
+constexpr IsolineCounts tessellate_isoline_into(DomainPoint* points, std::uint32_t* indices, const std::array<float, 2>& factors,
+    const TessOptions& options) {
     if (culls(factors[0]) || culls(factors[1])) return {};
     const FixedFactor density = process_edge_factor(Partitioning::integer, factors[0]);
     const FixedFactor detail_f = process_edge_factor(options.partitioning, factors[1]);
@@ -395,6 +402,32 @@ constexpr IsolineCounts tessellate_isoline(DomainPoint* points, std::uint32_t* i
         }
     }
     return counts;
+}
+
+} // namespace detail
+
+// Count, then fill (docs/api.md, "Sized outputs"): each returns the pattern's counts and writes it only when
+// both spans are large enough; with a shorter span (empty spans: count only) nothing is written.
+// Triangle factors: {Ueq0, Veq0, Weq0, inside}.
+constexpr Counts tessellate_tri(std::span<DomainPoint> points, std::span<std::uint32_t> indices,
+                                const std::array<float, 4>& factors, const TessOptions& options = {}) {
+    const Counts n = detail::tessellate_tri_into(nullptr, nullptr, factors, options);
+    if (!fits(n, points.size(), indices.size())) return n;
+    return detail::tessellate_tri_into(points.data(), indices.data(), factors, options);
+}
+// Quad factors: {Ueq0, Veq0, Ueq1, Veq1, insideU, insideV}.
+constexpr Counts tessellate_quad(std::span<DomainPoint> points, std::span<std::uint32_t> indices,
+                                 const std::array<float, 6>& factors, const TessOptions& options = {}) {
+    const Counts n = detail::tessellate_quad_into(nullptr, nullptr, factors, options);
+    if (!fits(n, points.size(), indices.size())) return n;
+    return detail::tessellate_quad_into(points.data(), indices.data(), factors, options);
+}
+// Isoline factors: {density, detail}; 2 indices per segment.
+constexpr IsolineCounts tessellate_isoline(std::span<DomainPoint> points, std::span<std::uint32_t> indices,
+                                           const std::array<float, 2>& factors, const TessOptions& options = {}) {
+    const IsolineCounts n = detail::tessellate_isoline_into(nullptr, nullptr, factors, options);
+    if (n.vertices > points.size() || n.index_count() > indices.size()) return n;
+    return detail::tessellate_isoline_into(points.data(), indices.data(), factors, options);
 }
 
 } // namespace ctess::d3d11
