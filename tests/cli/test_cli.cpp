@@ -261,7 +261,7 @@ std::vector<double> json_array(const std::string& json, const std::string& key) 
 
 } // namespace
 
-TEST_CASE("strip prints the library's single strip, starting with seed 002's sequence", "[cli][surfaces]") {
+TEST_CASE("strip prints the library's single strip, starting with Cayzac 2007's", "[cli][surfaces]") {
     const Run r = ctess_cli("strip --segments 3,4 --format json");
     REQUIRE(r.exit_code == 0);
     CHECK(json_number(r.out, "u_segments") == 3);
