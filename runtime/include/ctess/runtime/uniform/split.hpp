@@ -34,9 +34,8 @@
 // Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()
 // traverses again and returns false (writing nothing) when a span is too small. Every walk keeps its split
 // pattern's points on the stack per split level (two levels at most); the shared layout's emit() also keeps
-// one pattern-sized set of arrays per level and one for the leaf: with g++ 12 -O2 about 1.5 KB per level of
-// a walk (4.6 KB in all) and about 13.3 KB for the shared layout's emit() (5.6 KB per split level, 2.1 KB
-// for the leaf).
+// one pattern-sized set of arrays per level and one for the leaf. Stack use is therefore a constant bounded
+// by the largest stored pattern, whatever the factors (sizes measured in docs/algorithm.md §3.5).
 #pragma once
 #include <algorithm>
 #include <array>
