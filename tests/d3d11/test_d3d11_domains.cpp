@@ -465,7 +465,7 @@ TEST_CASE("d3d11 domains: triangles tile the domain and shared edges are waterti
 }
 
 TEST_CASE("d3d11 domains: isoline lines and segments", "[d3d11][domains]") {
-    // Density 3.2 -> 4 lines at v = 0, 1/4, 1/2, 3/4 (none at 1); detail even 2.5 -> the algorithm.md §5.2 vector.
+    // Density 3.2 -> 4 lines at v = 0, 1/4, 1/2, 3/4 (none at 1); detail even 2.5 -> the §5.2 vector.
     const IsoMesh m = iso(Partitioning::fractional_even, {3.2f, 2.5f});
     REQUIRE(m.counts == IsolineCounts{20, 16});
     const std::uint32_t detail[5] = {0, 28672, 32768, 36864, 65536};
