@@ -10,7 +10,7 @@
 
 namespace ctess::bench {
 
-// Bulk emission: the factors of issue 4 (one equal-factor set per octave, one mixed set), plus an equal and a
+// Bulk emission: one equal-factor set per octave and one mixed set, plus an equal and a
 // mixed set at the uniform-density table's N = 16 (bench_uniform.cpp).
 inline constexpr std::int64_t bulk_factors[][3] = {{8, 8, 8},    {32, 32, 32}, {64, 64, 64},
                                                    {32, 12, 20}, {16, 16, 16}, {16, 9, 11}};

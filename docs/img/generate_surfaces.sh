@@ -11,5 +11,5 @@ for name in sphere torus ripple; do
   "$ctess" surface --name "$name" --max-level 12 --format svg --view param --out "surface_${name}_param.svg"
   "$ctess" surface --name "$name" --max-level 12 --format svg --view shaded --out "surface_${name}_shaded.svg"
 done
-# Seed 004's sinusoid case: the distance test alone sees a flat plane.
+# Męciński 2011's sinusoid case: the distance test alone sees a flat plane.
 "$ctess" surface --name ripple --max-level 12 --angle 180 --format svg --view shaded --out surface_ripple_distance_only_shaded.svg

@@ -30,7 +30,7 @@
 
 namespace {
 
-constexpr int quant_one = int(ctess::uniform::fixed_one); // seed 001: 1.0 = 65534 so 0.5 is exact
+constexpr int quant_one = int(ctess::uniform::fixed_one); // Karis 2026: 1.0 = 65534 so 0.5 is exact
 constexpr double pi = 3.14159265358979323846;
 
 struct V2 {

@@ -122,7 +122,7 @@ TEST_CASE("svg and obj outputs are written", "[cli]") {
     const Run obj = ctess_cli("pattern --mode d3d11-integer --factors 3,3,3,3 --format obj");
     REQUIRE(obj.exit_code == 0);
     const auto faces = std::count(obj.out.begin(), obj.out.end(), 'f');
-    CHECK(faces >= 13); // 13 triangles at integer 3 (spec 4.6), plus the 'f' letters of comments
+    CHECK(faces >= 13); // 13 triangles at integer 3 (algorithm.md §5.5), plus the 'f' letters of comments
 }
 
 TEST_CASE("line, sweep and animate run", "[cli]") {
@@ -135,7 +135,7 @@ TEST_CASE("line, sweep and animate run", "[cli]") {
     REQUIRE(even.exit_code == 0);
     CHECK(even.out.find(
               "[0, 6390, 12780, 19170, 19989, 26379, 32768, 39157, 45547, 46366, 52756, 59146, 65536]") !=
-          std::string::npos); // spec 4.3
+          std::string::npos); // docs/algorithm.md §5.2
 
     const std::string svg = temp_path("sweep.svg");
     REQUIRE(ctess_cli("sweep --mode d3d11-even --from 4 --to 8 --steps 50 --svg " + svg).exit_code == 0);
@@ -261,7 +261,7 @@ std::vector<double> json_array(const std::string& json, const std::string& key) 
 
 } // namespace
 
-TEST_CASE("strip prints the library's single strip, starting with seed 002's sequence", "[cli][surfaces]") {
+TEST_CASE("strip prints the library's single strip, starting with Cayzac 2007's", "[cli][surfaces]") {
     const Run r = ctess_cli("strip --segments 3,4 --format json");
     REQUIRE(r.exit_code == 0);
     CHECK(json_number(r.out, "u_segments") == 3);
@@ -474,7 +474,7 @@ TEST_CASE("cli: efficiency --family uniform totals the stored patterns", "[cli][
     CHECK(j.out.find("\"longest_edge_mean_of_maxima\"") != std::string::npos);
 }
 
-// --- uniform: factors, bad input, limits and options (docs/cli.md "Modes", "Errors and bad input") ---
+// --- uniform: factors, bad input, limits and options (docs/cli.md "Modes", "Errors and bad input") ---------
 
 namespace {
 
@@ -491,8 +491,8 @@ std::vector<long> json_uniform_factors(const std::string& json) {
     return out;
 }
 
-// Spec §3.2, written out independently: on an edge with f segments the smaller coordinate of point i is i / f
-// rounded half up in units of 65534, the larger is 65534 minus the other one.
+// docs/algorithm.md §3.2, written out independently: on an edge with f segments the smaller coordinate of
+// point i is i / f rounded half up in units of 65534, the larger is 65534 minus the other one.
 std::uint32_t spec_edge_parameter(std::uint32_t i, std::uint32_t f) {
     const std::uint32_t small = std::min(i, f - i);
     const std::uint32_t q = (2 * small * 65534 + f) / (2 * f);

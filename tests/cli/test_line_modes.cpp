@@ -1,4 +1,4 @@
-// The comparison line modes of seed 000's viewer: mirror exactness, monotonicity, and which of them pop.
+// The comparison line modes of Hable 2026's viewer: mirror exactness, monotonicity, and which of them pop.
 #include <catch2/catch.hpp>
 
 #include "line_compare.hpp"
@@ -54,7 +54,7 @@ TEST_CASE("powers of two are uniform in every comparison mode", "[line_modes]") 
     }
 }
 
-TEST_CASE("seed 000: 10.3 puts the pivot 15 % into its half-segment when inserting one at a time",
+TEST_CASE("Hable 2026: 10.3 puts the pivot 15 % into its half-segment when inserting one at a time",
           "[line_modes]") {
     // Mirrored per half: (10.3 - 8) / 2 = 1.15 new points per half, so one is in and the pivot is at t =
     // 0.15.

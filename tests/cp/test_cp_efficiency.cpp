@@ -67,7 +67,7 @@ TEST_CASE("equal powers of two: CP is exactly 2/3 of D3D11 fractional_even", "[c
         const auto n = static_cast<std::uint32_t>(f);
         CHECK(r.cp_triangles == n * n); // triforce
         CHECK(r.cp_nondegenerate == n * n);
-        CHECK(r.d3d_max == 3 * n * n / 2); // spec 4.6: floor(3 S^2 / 2) for uniform even S
+        CHECK(r.d3d_max == 3 * n * n / 2); // docs/algorithm.md §5.5: floor(3 S^2 / 2) for uniform even S
         CHECK(3 * r.cp_triangles == 2 * r.d3d_max);
         ++checked;
     }

@@ -1,4 +1,5 @@
-// CP line tessellation: tokens, boundaries, spec §1.2 positions, mirror exactness, popless continuity.
+// CP line tessellation: tokens, boundaries, docs/algorithm.md §1.2 positions, mirror exactness, popless
+// continuity.
 #include <catch2/catch.hpp>
 
 #include <ctess/cp/line.hpp>
@@ -12,7 +13,7 @@ using namespace ctess;
 
 namespace {
 
-// Spec values are fractions of the edge; 2^24 units make them exact.
+// The examples' values are fractions of the edge; 2^24 units make them exact.
 constexpr std::uint32_t at(double fraction) {
     return static_cast<std::uint32_t>(fraction * cp::fixed_one);
 }
@@ -123,14 +124,14 @@ TEST_CASE("token tables: sorted tracks, mirror pairs, the 4 KB bound", "[cp_line
             CHECK(tr[i].final + tr[n - 1 - i].final == 256);
             if (i > 0) CHECK(tr[i - 1].final <= tr[i].final);
         }
-        // Only the current block moves ("points sliding" column of the spec 1.2 token table).
+        // Only the current block moves ("points sliding" column of the token table, docs/algorithm.md §1.1).
         static constexpr unsigned sliding[25] = {0, 2, 2, 2, 2,  2,  2,  2,  2,  4,  4,  4, 4,
                                                  8, 8, 8, 8, 16, 16, 16, 16, 32, 32, 32, 32};
         unsigned moving = 0;
         for (unsigned i = 0; i < n; ++i) moving += tr[i].start != tr[i].final;
         CHECK(moving == sliding[t]);
     }
-    CHECK(interior == 1609);     // spec 1.2: 1,609 interior points for max 256
+    CHECK(interior == 1609);     // docs/algorithm.md §1.2: 1,609 interior points for max 256
     CHECK(2 * interior == 3218); // one byte each for start and final: under the post's 4 KB
 }
 

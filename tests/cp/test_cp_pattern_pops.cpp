@@ -1,4 +1,4 @@
-// CP triangle pattern poplessness (cp_resolution §6.2, §7.1; spec §5 item 11): at every token boundary of an
+// CP triangle pattern poplessness (docs/algorithm.md §2.10): at every token boundary of an
 // edge the non-degenerate triangles, as exact position triples, are the same multiset on both sides; inside a
 // token triple the index buffer is fixed and positions move continuously.
 #include <catch2/catch.hpp>
@@ -118,8 +118,8 @@ TEST_CASE("cp pops: e2 crosses every token boundary, all other token pairs, max 
 
 TEST_CASE("cp pops: rule (a) and no T0 collapse, every boundary, all token pairs, max 64",
           "[cp_pattern][pops]") {
-    // cp_resolution §7.2 also ran the staircase rule with and without the collapse: the options rotate with
-    // the token pair, the other edges get seeded random lerps.
+    // The independent prototype also ran the staircase rule with and without the collapse: the options rotate
+    // with the token pair, the other edges get seeded random lerps.
     const std::array<cp::PatternOptions, 3> variants = [] {
         std::array<cp::PatternOptions, 3> v{default_options(64), default_options(64), default_options(64)};
         v[0].column_rule = v[1].column_rule = cp::ColumnRule::staircase;

@@ -1,4 +1,4 @@
-// CP triangle pattern with equal factors (cp_resolution §6.3, §7.3; spec §5 items 12, 14): exact uniform
+// CP triangle pattern with equal factors (docs/algorithm.md §2.10, §2.14): exact uniform
 // triforce at every power of two, and the table of counts for both column rules.
 #include <catch2/catch.hpp>
 
@@ -39,7 +39,8 @@ constexpr std::uint32_t triforce_vertices(std::uint32_t n) {
     return (n + 1) * (n + 2) / 2;
 }
 
-// d_T of cp_resolution §7.3: rule (b) emits N^2 - d_T triangles for equal tokens T >= T2.
+// d_T, the deficit of the independent prototype's equal-factor table: rule (b) emits N^2 - d_T triangles for
+// equal tokens T >= T2.
 constexpr std::array<std::uint32_t, 25> rule_b_deficit{0,  0,  0,  6, 0,  6,  10,  18, 0,  10,  18,  34, 0,
                                                        18, 34, 66, 0, 34, 66, 130, 0,  66, 130, 258, 0};
 

@@ -1,5 +1,5 @@
 // CP triangle pattern: type selection, exact tiling, no inversion, no fins, watertight boundaries, provoking
-// layout, bad input (cp_resolution §2, §4, §5, §6.1, §7.1; spec §5 items 9, 10, 14, 15).
+// layout, bad input (docs/algorithm.md §2.2 to §2.10).
 #include <catch2/catch.hpp>
 
 #include <ctess/cp/pattern.hpp>
@@ -298,7 +298,8 @@ TEST_CASE("cp pattern: every token triple at t in {0, 1/2, 1} tiles exactly, max
 
 TEST_CASE("cp pattern: Type 1 over a dense lerp grid of e0 and e2, every e1 token", "[cp_pattern]") {
     // The sliding point P must stay strictly inside the hexagon for every (t0, t2) and every e1 state
-    // (cp_resolution §3.2): 37 lerps per edge plus T0, e1 in every token at t in {0, 1/2, 1}, both layouts.
+    // (docs/algorithm.md §2.8): 37 lerps per edge plus T0, e1 in every token at t in {0, 1/2, 1}, both
+    // layouts.
     std::vector<cp::LineState> small{{0, 0}};
     for (std::uint32_t k = 0; k <= 36; ++k) small.push_back({1, (k * cp::lerp_one + 18) / 36});
     const std::vector<cp::LineState> e1_states = token_states(64, zero_half_one);
@@ -340,7 +341,8 @@ TEST_CASE("cp pattern: random factors and token states tile exactly, max 256", "
 
 TEST_CASE("cp pattern: non-default options tile exactly and keep the surface", "[cp_pattern]") {
     // Staircase rule (a), no T0 collapse, flat layout: each is valid, and the rule and the collapse only add
-    // or remove zero-area triangles (cp_resolution §4.3, §5), so the non-degenerate surface is unchanged.
+    // or remove zero-area triangles (docs/algorithm.md §2.4, §2.9), so the non-degenerate surface is
+    // unchanged.
     for (unsigned max_factor : {64u, 256u}) {
         Rng rng(max_factor * 7919u);
         const unsigned tokens = cp::token_count(max_factor);

@@ -1,6 +1,6 @@
 // Unit tests of the CP triangle pattern's pieces: column counts, gap merge, Type-1 point P, counts against
-// cp_resolution §7.3/§7.4, provoking layout, quads, orientation, bad input, constant evaluation.
-// (The exhaustive coverage/pop/triforce suite is tests/test_cp_pattern_*.cpp.)
+// the independent prototype's count tables, provoking layout, quads, orientation, bad input, constant
+// evaluation. (The exhaustive coverage/pop/triforce suite is tests/cp/test_cp_pattern_*.cpp.)
 #include <ctess/cp/orientation.hpp>
 #include <ctess/cp/pattern.hpp>
 #include <ctess/cp/quad.hpp>
@@ -96,7 +96,7 @@ Tracks tracks_of(unsigned token) {
 
 } // namespace
 
-// --- counts: cp_resolution §7.3 (equal factors) and §7.4 (unequal) -----------------------------------------
+// --- counts: the independent prototype's tables, equal and unequal factors (docs/algorithm.md §2.14) -------
 
 TEST_CASE("equal factors: counts of cp_resolution 7.3, both rules, max 64 and 256", "[cp][counts]") {
     struct Row {
@@ -193,7 +193,7 @@ TEST_CASE("unequal factors: counts of cp_resolution 7.4", "[cp][counts]") {
             CHECK(pattern_counts(r.f0, r.f1, r.f2, opt) == r.counts);
         }
     }
-    // cp_resolution §5: without the collapse, (64, 1, 1) emits 130 triangles and (1, 1, 64) 194.
+    // docs/algorithm.md §2.9: without the collapse, (64, 1, 1) emits 130 triangles and (1, 1, 64) 194.
     CHECK(pattern_counts(64, 1, 1, options(64, ColumnRule::minimal, false)).triangles == 130);
     CHECK(pattern_counts(1, 1, 64, options(64, ColumnRule::minimal, false)).triangles == 194);
 }
@@ -256,7 +256,7 @@ TEST_CASE("max_pattern_counts bounds every token triple and every option", "[cp]
     }
 }
 
-// --- column counts: cp_resolution §4.3 ---------------------------------------------------------------------
+// --- column counts: docs/algorithm.md §2.4 -----------------------------------------------------------------
 
 TEST_CASE("column counts: closed forms of 4.3 against the definition", "[cp][columns]") {
     for (unsigned max_factor : {64u, 256u}) {
@@ -366,7 +366,7 @@ TEST_CASE("column counts reach the clamp line at every lerp and rule (b) is the 
     }
 }
 
-// --- gap zipper: cp_resolution §4.5 ------------------------------------------------------------------------
+// --- gap zipper: docs/algorithm.md §2.6 --------------------------------------------------------------------
 
 TEST_CASE("gap merge: equal tokens give M(a) = a (triforce), T1 conventions of 4.6", "[cp][gap]") {
     std::array<std::uint16_t, max_segments + 1> lambda{}, sigma{}, merge{};
@@ -406,7 +406,7 @@ TEST_CASE("gap merge: equal tokens give M(a) = a (triforce), T1 conventions of 4
     CHECK(count == nl + n1 - 1);
 }
 
-// --- Type 1: the point P, cp_resolution §3.2 ---------------------------------------------------------------
+// --- Type 1: the point P, docs/algorithm.md §2.8 -----------------------------------------------------------
 
 TEST_CASE("Type 1 point P: exact values at the joins", "[cp][type1]") {
     CHECK(type1_center(0, 0) == DomainPoint{0, 0}); // v0: the Type 0 limit

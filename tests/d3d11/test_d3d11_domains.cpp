@@ -1,6 +1,6 @@
-// D3D11 triangle, quad and isoline domains: the spec's count tables and closed forms (§4.6), geometric
-// validity (the triangles tile the domain, edges are watertight), winding, pow2 == integer, and bad factors
-// (§4.2).
+// D3D11 triangle, quad and isoline domains: the count tables and closed forms of docs/algorithm.md §5.5,
+// geometric validity (the triangles tile the domain, edges are watertight), winding, pow2 == integer, and bad
+// factors (§5.1).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -112,8 +112,8 @@ bool is_integer_mode(Partitioning m) {
     return m == Partitioning::integer || m == Partitioning::pow2;
 }
 
-// Independent of the implementation (spec §4.2 and §4.6): clamp, round up for integer modes, 16.16 with ties
-// to even, then the next segment count of the mode's parity (integer: ceil).
+// Independent of the implementation (docs/algorithm.md §5.1, §5.5): clamp, round up for integer modes, 16.16
+// with ties to even, then the next segment count of the mode's parity (integer: ceil).
 float clamp_to(float f, float lo, float hi) {
     return std::isnan(f) ? lo : std::min(hi, std::max(lo, f));
 }
@@ -145,7 +145,7 @@ bool odd_frame(Partitioning m, std::initializer_list<float> seen) {
     return false;
 }
 
-// Closed forms of spec §4.6. Returns {points, triangles}.
+// Closed forms of docs/algorithm.md §5.5. Returns {points, triangles}.
 Counts tri_formula(Partitioning m, const std::array<float, 4>& f) {
     std::uint32_t se[3];
     float clamped[3];
@@ -262,7 +262,7 @@ std::vector<std::uint32_t> sorted_edge_points(Partitioning mode, float f) {
 
 } // namespace
 
-// ---- spec §4.6 tables ----
+// ---- count tables (docs/algorithm.md §5.5) ----
 
 TEST_CASE("d3d11 domains: the two done-when numbers", "[d3d11][domains]") {
     const Mesh even64 = tri(Partitioning::fractional_even, {64, 64, 64, 64});
@@ -463,7 +463,7 @@ TEST_CASE("d3d11 domains: triangles tile the domain and shared edges are waterti
 }
 
 TEST_CASE("d3d11 domains: isoline lines and segments", "[d3d11][domains]") {
-    // Density 3.2 -> 4 lines at v = 0, 1/4, 1/2, 3/4 (none at 1); detail even 2.5 -> the §4.3 vector.
+    // Density 3.2 -> 4 lines at v = 0, 1/4, 1/2, 3/4 (none at 1); detail even 2.5 -> the §5.2 vector.
     const IsoMesh m = iso(Partitioning::fractional_even, {3.2f, 2.5f});
     REQUIRE(m.counts == IsolineCounts{20, 16});
     const std::uint32_t detail[5] = {0, 28672, 32768, 36864, 65536};
@@ -513,7 +513,7 @@ TEST_CASE("d3d11 domains: CCW is CW with the last two indices swapped; pow2 is i
     }
 }
 
-// ---- bad input (spec §4.2) ----
+// ---- bad input (docs/algorithm.md §5.1) ----
 
 TEST_CASE("d3d11 domains: bad edge factors cull the patch", "[d3d11][domains][bad-input]") {
     const float culling[] = {nan_f, 0.0f, -0.0f, -1.0f, -1e30f, -inf_f, -denorm_f};
@@ -571,7 +571,7 @@ TEST_CASE("d3d11 domains: bad factors that clamp", "[d3d11][domains][bad-input]"
             REQUIRE(same(tri(m, {1, 1, 1, bad}), tri(m, {1, 1, 1, lo})));
         }
     }
-    // Exact results, counted by hand from §4.2/§4.6.
+    // Exact results, counted by hand from algorithm.md §5.1 and §5.5.
     // Integer, edges 64, inside NaN -> inside 1 (even): 3 x 64 outer points + the centre; 3 x 64 triangles.
     REQUIRE(tri(Partitioning::integer, {64, 64, 64, nan_f}).counts == Counts{193, 192});
     // Odd, all edges 1, inside NaN -> inside 1: the single minimum triangle.

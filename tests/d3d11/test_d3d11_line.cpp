@@ -1,5 +1,5 @@
-// D3D11 edge point placement (spec §4.3): the verified 1-D vectors, the reference's constant tables, exact
-// mirror symmetry, continuity of the fractional modes, and bad factors.
+// D3D11 edge point placement (docs/algorithm.md §5.2): the verified 1-D vectors, the reference's constant
+// tables, exact mirror symmetry, continuity of the fractional modes, and bad factors.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -30,7 +30,7 @@ std::vector<std::uint32_t> points_of(Partitioning mode, float f) {
     return out;
 }
 
-// Constant evaluation: a §4.3 vector and a count.
+// Constant evaluation: an algorithm.md §5.2 vector and a count.
 constexpr std::array<std::uint32_t, 6> odd_3_5 = [] {
     std::array<std::uint32_t, 6> p{};
     edge_points(Partitioning::fractional_odd, 3.5f, p.data());
@@ -42,7 +42,8 @@ static_assert(edge_points(Partitioning::integer, -1.0f, nullptr) == 0);
 static_assert(fixed_reciprocal(3) == 0x5555 && remove_msb(6) == 2);
 static_assert(ruler_final_position(4) == 17);
 
-// Independent of the implementation: segments from the 16.16 factor by exact rational rounding (spec §4.6).
+// Independent of the implementation: segments from the 16.16 factor by exact rational rounding
+// (docs/algorithm.md §5.5).
 std::uint32_t expected_segments(Partitioning mode, float f) {
     const auto range = factor_range(mode);
     float c = std::isnan(f) ? range.lo : std::min(range.hi, std::max(range.lo, f));
@@ -128,7 +129,7 @@ TEST_CASE("d3d11 line: reference constant tables", "[d3d11][line]") {
         INFO("n = " << n);
         REQUIRE(fixed_reciprocal(n) == reciprocal[n]);
     }
-    // The ruler-function final positions (spec §4.5, from R1).
+    // The ruler-function final positions (docs/algorithm.md §5.4, from the reference tessellator).
     constexpr std::uint32_t ruler[33] = {0, 32, 16, 8,  17, 4,  18, 9,  19, 2,  20, 10, 21, 5,  22, 11, 23,
                                          1, 24, 12, 25, 6,  26, 13, 27, 3,  28, 14, 29, 7,  30, 15, 31};
     for (std::uint32_t i = 0; i < 33; ++i) REQUIRE(ruler_final_position(i) == ruler[i]);

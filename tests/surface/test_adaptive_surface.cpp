@@ -1,5 +1,5 @@
-// Adaptive parametric tessellation (seed 004): conformity of the bintree (exact areas, shared edges), the
-// two split tests checked on the output against double-precision reference normals, the ripple case, the
+// Adaptive parametric tessellation (Męciński 2011): conformity of the bintree (exact areas, shared edges),
+// the two split tests checked on the output against double-precision reference normals, the ripple case, the
 // size bounds, and bad input.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// Grid triangle strips (seed 002): the seed's sequence, exhaustive cell coverage and winding for every grid
+// Grid triangle strips (Cayzac 2007): the post's strip, exhaustive cell coverage and winding for every grid
 // up to 64 x 64, the triangle-list conversion, grid evaluation, and bad sizes.
 #include <catch2/catch.hpp>
 
@@ -28,10 +28,10 @@ std::int64_t area2(GridPoint a, GridPoint b, GridPoint c) {
 
 } // namespace
 
-TEST_CASE("the 3 x 4 strip starts with seed 002's sequence", "[grid]") {
+TEST_CASE("the 3 x 4 strip starts with Cayzac 2007's sequence", "[grid]") {
     constexpr std::array<std::uint32_t, 24> seed = {0, 4, 1, 5, 2, 6,  3, 7,  11, 7,  10, 6,
                                                     9, 5, 8, 4, 8, 12, 9, 13, 10, 14, 11, 15};
-    STATIC_REQUIRE(strip_index_count(3, 4) == 32); // the seed: "an index buffer with 32 indices"
+    STATIC_REQUIRE(strip_index_count(3, 4) == 32); // the post's 3 x 4 strip has 32 indices
     constexpr auto strip = [] {
         std::array<std::uint32_t, 32> s{};
         fill_strip_indices(s, 3, 4);

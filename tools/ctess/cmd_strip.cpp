@@ -1,4 +1,4 @@
-// ctess strip: the single triangle strip of a U x V grid (seed 002) as JSON.
+// ctess strip: the single triangle strip of a U x V grid (Cayzac 2007) as JSON.
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "file_output.hpp"

@@ -1,4 +1,4 @@
-// ctess surface: adaptive tessellation of a built-in parametric surface (seed 004) as JSON, OBJ, SVG, or the
+// ctess surface: adaptive tessellation of a built-in surface (Męciński 2011) as JSON, OBJ, SVG, or the
 // comparison with a uniform grid of the same chord error.
 #include "cli_args.hpp"
 #include "commands.hpp"

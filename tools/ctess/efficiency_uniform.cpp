@@ -41,7 +41,7 @@ Totals totals(const std::vector<UniformEfficiencyRow>& rows, unsigned up_to) {
     return t;
 }
 
-// Binary (longest-edge) splitting, the comparison of seed 001: halve the longest edge (factor T / 2 on each
+// Binary (longest-edge) splitting, the comparison of Karis 2026: halve the longest edge (factor T / 2 on each
 // half, the median's intrinsic length on the new edge) until every factor is at most n, with the same
 // tolerance as UniformSplit for edges inside the root (inside[i]); returns the leaves.
 std::uint64_t binary_split_leaves(std::array<double, 3> f, std::array<bool, 3> inside, double n,
@@ -125,7 +125,7 @@ std::string uniform_split_markdown(const std::vector<UniformSplitSummary>& summa
                     "a real triangle (a < b + c), {} are degenerate\n\n",
                     first.triples, n, n * n, first.real_triangles, first.triples - first.real_triangles);
     out += fmt::format(
-        "| interior dice tolerance | subpatches / binary longest-edge (same dice limit; seed 001: "
+        "| interior dice tolerance | subpatches / binary longest-edge (same dice limit; Karis 2026: "
         "0.68) | triangles / D3D11 integer (inside = max; {} triples <= 64) | longest edge: max | "
         "mean of per-patch maxima | patches above 1.433 |\n|---|---|---|---|---|---|\n",
         first.with_d3d);

@@ -1,4 +1,4 @@
-// The comparison line modes of seed 000's line viewer, mirrored so that shared edges never crack. They exist
+// The comparison line modes of Hable 2026's viewer, mirrored so that shared edges never crack. They exist
 // to show, next to the CP line, why the CP line was chosen (docs/algorithm.md §1.4):
 //   pow2_subdivision: uniform 2^ceil(log2 f) segments; pops at every power of two.
 //   one_at_a_time:    subdivision points inserted one per half at a time, ascending from the edge ends, the

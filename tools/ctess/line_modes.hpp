@@ -1,5 +1,5 @@
 // Every line tessellation mode behind one enum: the CP line, the four D3D11 partitionings (one tri-domain
-// edge), and the comparison modes of seed 000's viewer. Used by `ctess line` and `ctess sweep`.
+// edge), and the comparison modes of Hable 2026's viewer. Used by `ctess line` and `ctess sweep`.
 #pragma once
 #include <cstdint>
 #include <string_view>

@@ -1,5 +1,5 @@
 // Type 2 interior: the clamp line K and the column counts R_i (docs/algorithm.md §2.3-2.4,
-// cp_resolution §4.1-4.3).
+// docs/algorithm.md §2.3, §2.4).
 //
 // Column 0 is e2's points 0..n2-1; column i >= 1 stands on e0's point i and holds R_i points
 // (u_i, min(v_j, c_i)), c_i = max(0, K - u_i). R depends on the two tokens only, never on the lerps, so the
@@ -67,7 +67,7 @@ constexpr unsigned staircase_rows(const PointTrack* tracks0, const PointTrack* t
 }
 
 // R_0..R_{n0-1} of a token pair (T0 uses T1's points). Pairs with a T0/T1 token use rule (b) under either
-// rule: it is their closed form (cp_resolution §4.3). Returns n0, the column count.
+// rule: it is their closed form (docs/algorithm.md §2.4). Returns n0, the column count.
 constexpr unsigned column_counts(unsigned token0, unsigned token2, ColumnRule rule, std::uint16_t* out) {
     const unsigned shape0 = token0 == 0 ? 1u : token0;
     const unsigned shape2 = token2 == 0 ? 1u : token2;

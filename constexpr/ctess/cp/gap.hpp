@@ -1,5 +1,5 @@
-// Type 2 gap zipper: merges the column tops (lhs) with e1's points (rhs) (docs/algorithm.md §2.6,
-// cp_resolution §4.5). The topology depends on (tok0, tok1) only.
+// Type 2 gap zipper: merges the column tops (lhs) with e1's points (rhs) (docs/algorithm.md §2.6).
+// The topology depends on (tok0, tok1) only.
 #pragma once
 #include <array>
 #include <cstdint>

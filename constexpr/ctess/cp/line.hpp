@@ -1,5 +1,5 @@
 // Clamped-parallelogram (CP) line tessellation: tokens, per-token point start/final positions, and the edge
-// points of a float factor as exact fixed-point parameters (docs/algorithm.md §1, spec §1.2).
+// points of a float factor as exact fixed-point parameters (docs/algorithm.md §1.1, §1.2).
 //
 // A factor f in [1, max] maps to a token T and a 16-bit lerp t16. Every point of a token has an integer start
 // S and final F on the 1/256 grid; its parameter is S*65536 + (F-S)*t16 in units of 2^-24. Points never move

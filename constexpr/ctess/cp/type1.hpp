@@ -1,5 +1,5 @@
 // Type 1 (f0 <= 2 and f2 <= 2, not all f <= 1): a hexagon fan around one sliding interior point P plus three
-// corner triangles (docs/algorithm.md §2.8, cp_resolution §3).
+// corner triangles (docs/algorithm.md §2.8).
 #pragma once
 #include <cstdint>
 

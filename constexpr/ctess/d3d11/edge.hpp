@@ -1,4 +1,5 @@
-// D3D11 point placement along one edge (spec §4.3): the per-factor context and the 16.16 position of point p.
+// D3D11 point placement along one edge (docs/algorithm.md §5.2): the per-factor context and the 16.16
+// position of point p.
 //
 // A fractional factor lies between two uniform partitions, floor and ceil of the half factor. Each point is
 // the fixed-point lerp of its positions on both; one point (the "split", chosen by the ruler function) is

@@ -1,6 +1,6 @@
-// D3D11 tessellation factor processing (spec §4.2): culling, clamping to the partitioning's range, integer
-// rounding, parity and the conversion to unsigned 16.16 fixed point. Everything after this step is integer
-// math.
+// D3D11 tessellation factor processing (docs/algorithm.md §5.1): culling, clamping to the partitioning's
+// range, integer rounding, parity and the conversion to unsigned 16.16 fixed point. Everything after this
+// step is integer math.
 //
 // Bad input, as the hardware reference defines it:
 //   * an edge factor that is NaN, zero, negative or -inf culls the patch (the inside factor never culls);

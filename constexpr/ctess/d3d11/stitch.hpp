@@ -1,6 +1,6 @@
-// D3D11 connectivity between two rows of points (spec §4.5): the transition stitch between an outer edge and
-// the first inner ring, which follows the ruler-function split order, and the regular stitch between two
-// rings.
+// D3D11 connectivity between two rows of points (docs/algorithm.md §5.4): the transition stitch between an
+// outer edge and the first inner ring, which follows the ruler-function split order, and the regular stitch
+// between two rings.
 //
 // A stitch walks an inner and an outer row by local positions 0, 1, 2, ...; an IndexRow maps a position to
 // the global point index. This covers the rows that wrap around to the ring's first point and the rows the
@@ -59,7 +59,7 @@ constexpr IndexRow closing_row(std::uint32_t base, std::uint32_t points, std::ui
 }
 
 // Final position on a 32-point half edge of the point introduced at step i, in ruler-function order:
-// {0, 32, 16, 8, 17, 4, 18, 9, 19, 2, ...} (the reference's table; closed form of spec §4.5).
+// {0, 32, 16, 8, 17, 4, 18, 9, 19, 2, ...} (the reference's table; closed form in docs/algorithm.md §5.4).
 constexpr std::uint32_t ruler_final_position(std::uint32_t i) {
     if (i == 0) return 0;
     if (i == 1) return 32;

@@ -1,5 +1,5 @@
-// The D3D11 fixed-function tessellator (spec §4), bit-exact with Microsoft's reference CHWTessellator, for
-// the triangle, quad and isoline domains.
+// The D3D11 fixed-function tessellator (docs/algorithm.md §5), bit-exact with Microsoft's reference
+// CHWTessellator, for the triangle, quad and isoline domains.
 //
 // Points are (u, v) in 16.16 (for triangles w = 1 - u - v) in the reference's output order; indices are in
 // the reference's order, 3 per triangle (TRIANGLE_CW or TRIANGLE_CCW) or 2 per isoline segment. Arguments:

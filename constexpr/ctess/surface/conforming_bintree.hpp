@@ -1,4 +1,4 @@
-// The index logic of adaptive parametric tessellation (seed 004, docs/surfaces.md §2): a conforming
+// The index logic of adaptive parametric tessellation (Męciński 2011, docs/surfaces.md §2): a conforming
 // longest-edge bisection of the parameter square, usable in constant expressions.
 //
 // The square [0, 1]^2 starts as two right isosceles triangles split along its diagonal. A triangle is split

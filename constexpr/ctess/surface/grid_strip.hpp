@@ -1,4 +1,4 @@
-// Grid triangle strips (seed 002, docs/surfaces.md §1): a U x V grid of segments on [0, 1]^2 drawn as one
+// Grid triangle strips (Cayzac 2007, docs/surfaces.md §1): a U x V grid of segments on [0, 1]^2 drawn as one
 // triangle strip with no restart. Row r runs left to right when r is even and right to left when r is odd,
 // so each row ends where the next begins; two zero-area "turn-around" triangles join consecutive rows.
 //
@@ -44,7 +44,7 @@ constexpr std::uint32_t strip_triangle_count(std::uint32_t u_segments, std::uint
     return n >= 2 ? n - 2 : 0;
 }
 
-// The strip's index at position i < strip_index_count (seed 002's closed form): within a row, even
+// The strip's index at position i < strip_index_count (Cayzac 2007's strip, closed form): within a row, even
 // positions are on the row's lower line and odd ones on its upper line; odd rows run backwards; at a row
 // change the parity flips, which repeats the row's last column once more (the turn-around).
 constexpr std::uint32_t strip_index(std::uint32_t i, std::uint32_t u_segments) {
@@ -91,7 +91,7 @@ constexpr bool fill_triangle_list(std::span<std::uint32_t> indices, std::uint32_
     return true;
 }
 
-// seed 002's 3 x 4 example, the first 24 of its 32 indices.
+// Cayzac 2007's 3 x 4 example, the first 24 of its 32 indices.
 static_assert([] {
     constexpr std::uint32_t seed[] = {0, 4, 1, 5, 2, 6,  3, 7,  11, 7,  10, 6,
                                       9, 5, 8, 4, 8, 12, 9, 13, 10, 14, 11, 15};

@@ -1,4 +1,4 @@
-// Seed 001's symmetric 16-bit quantisation of uniform-density barycentrics (docs/algorithm.md §3.2):
+// Karis 2026's symmetric 16-bit quantisation of uniform-density barycentrics (docs/algorithm.md §3.2):
 // 1.0 = 65534, so 0.5 = 32767 is exact; on an edge the smaller (median) coordinate is rounded and the larger
 // re-derived, so point i of f and point f - i of f are mirror images bit for bit.
 #pragma once

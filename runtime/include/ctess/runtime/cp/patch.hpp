@@ -7,7 +7,8 @@
 // provoking vertex first: (a, b, c) becomes (a, c, b).
 //
 // Three entry points, each paying only for what it needs:
-// * cp_counts(): counts only (what a GPU's first pass and an allocator need; about 26 ns);
+// * cp_counts(): counts only (what a GPU's first pass and an allocator need): CpPatchSetup's counting
+//   setup alone;
 // * CpPatchSetup: counts and emit(), which writes the whole patch in one pass per part (columns, strips,
 //   zipper) without any lookup structure, with 16-byte vectors (and on x86-64 an AVX2 build, chosen at run
 //   time);

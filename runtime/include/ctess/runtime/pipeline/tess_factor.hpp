@@ -1,4 +1,4 @@
-// Edge tessellation factors from projected edge length (seed 001, Karis): an edge's world-space undisplaced
+// Edge tessellation factors from projected edge length (Karis 2026): an edge's world-space undisplaced
 // length, projected to pixels as if the edge were perpendicular to the view vector, divided by a DiceRate in
 // pixels, clamped to [1, max_factor].
 //

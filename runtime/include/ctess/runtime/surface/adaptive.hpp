@@ -1,11 +1,11 @@
-// Adaptive tessellation of a parametric surface (seed 004, docs/surfaces.md §2): the conforming bintree of
+// Adaptive tessellation of a parametric surface (Męciński 2011, surfaces.md §2): the conforming bintree of
 // <ctess/surface/conforming_bintree.hpp> driven by two tests on each triangle's base (its longest parameter
 // edge):
 //
 // * chord distance: the distance of the surface point at the base midpoint from the chord between the base's
 //   end points, relative to the chord's length, above max_distance;
 // * normal angle: the angle between the normal at the midpoint and the normal at either end, above
-//   max_angle_deg (default 5 degrees, the seed's). Normals are the surface's normal(u, v) when it has one,
+//   max_angle_deg (default 5 degrees, the post's). Normals are the surface's normal(u, v) when it has one,
 //   otherwise the cross product of central finite differences (one-sided at the domain border).
 //
 // A triangle below min_level is split without testing; one at max_level is never split. Both tests depend on

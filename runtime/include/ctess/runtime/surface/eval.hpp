@@ -1,6 +1,7 @@
 // Per-vertex surface evaluation of a tessellated base triangle: flat interpolation, PN triangles (Vlachos et
-// al., seed 003: cubic control points b_ijk, quadratic normals n_ijk) or Phong tessellation (Boubekeur and
-// Alexa, seed 003: projection onto the corner tangent planes), each blended with flat by alpha.
+// al. 2001: cubic control points b_ijk, quadratic normals n_ijk) or Phong tessellation (Boubekeur and
+// Alexa 2008: projection onto the corner tangent planes), each blended with flat by alpha
+// (docs/references.md).
 //
 // Crack-free by construction: a vertex with a zero weight lies on a base edge, and it is evaluated from that
 // edge's two endpoints only, ordered by mesh vertex index (lower first) with the parameter measured from the
@@ -20,7 +21,7 @@ enum class Surface : std::uint32_t { flat = 0, pn_triangles = 1, phong = 2 };
 
 struct SurfaceOptions {
     Surface surface = Surface::flat;
-    float alpha = 0.75f; // 0 = flat, 1 = the full PN / Phong surface (seed 003's uTessAlpha)
+    float alpha = 0.75f; // 0 = flat, 1 = the full PN / Phong surface (Dupuy 2011's alpha)
 };
 
 struct SurfaceCorner {

@@ -6,7 +6,7 @@
 // * Ripple: the square [-1, 1]^2 with ripples z = A sin(16 pi u) e(v) in the band v < 1/2 (e(v) = sin^2(2 pi
 // v)
 //   there, 0 above). Every dyadic u of step 1/16 or coarser is a zero of the sine, so all coarse samples lie
-//   on the plane z = 0 and the chord-distance test sees a flat surface: seed 004's sinusoid case. Normals
+//   on the plane z = 0 and the chord-distance test sees a flat surface: Męciński 2011's sinusoid. Normals
 //   come from finite differences (no normal() member), so that path is exercised too.
 #pragma once
 #include <cmath>
