@@ -15,7 +15,7 @@
 
 namespace {
 
-using ctess::DomainPoint;
+using ctess::d3d11::Point;
 namespace bench = ctess::bench;
 namespace d3d11 = ctess::d3d11;
 
@@ -23,7 +23,7 @@ struct D3D11Patch {
     d3d11::TessOptions options;
     std::array<float, 4> factors{};
     ctess::Counts counts;
-    std::vector<DomainPoint> points;
+    std::vector<d3d11::Point> points;
     std::vector<std::uint32_t> indices;
 
     D3D11Patch(const benchmark::State& state, d3d11::Partitioning partitioning) {

@@ -17,7 +17,7 @@ namespace {
 // UniformPatch emitted through random access, one call per element.
 struct ByElement : ctess::rt::UniformPatch {
     using UniformPatch::UniformPatch;
-    bool emit(std::span<ctess::DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+    bool emit(std::span<ctess::uniform::Point> vertices, std::span<std::uint32_t> indices) const noexcept {
         const ctess::Counts n = counts();
         if (vertices.size() < n.vertices || indices.size() < n.index_count()) return false;
         for (std::uint32_t i = 0; i < n.vertices; ++i) vertices[i] = vertex(i);

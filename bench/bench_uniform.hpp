@@ -26,7 +26,7 @@ void uniform_emit(benchmark::State& state) {
     const PatchOptions options{layout, Winding::ccw};
     const Patch probe(uniform_tables(), factor(state, 0), factor(state, 1), factor(state, 2), options);
     const Counts n = probe.counts();
-    std::vector<DomainPoint> vertices(n.vertices);
+    std::vector<typename Patch::point_type> vertices(n.vertices);
     std::vector<std::uint32_t> indices(n.index_count());
     for (auto _ : state) {
         float f0 = factor(state, 0), f1 = factor(state, 1), f2 = factor(state, 2);

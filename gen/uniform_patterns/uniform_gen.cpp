@@ -818,7 +818,7 @@ int check_data(int check_max) {
                     order_for_cache(p, boundary_count(t));
                     same = p.tris.size() == stored.triangle_count();
                     for (unsigned k = 0; same && k < stored.interior_count(); ++k) {
-                        const ctess::DomainPoint q = stored.vertex(stored.boundary_count() + k);
+                        const ctess::uniform::Point q = stored.vertex(stored.boundary_count() + k);
                         same = int(q.u) == p.interior[k][0] && int(q.v) == p.interior[k][1];
                     }
                     for (unsigned k = 0; same && k < stored.triangle_count(); ++k) {

@@ -86,7 +86,7 @@ TEST_CASE("pattern JSON carries the library's exact vertices", "[cli]") {
     using namespace ctess;
     const Run r = ctess_cli("pattern --mode d3d11-even --factors 2.5,3.7,5.1,4.2 --format json");
     REQUIRE(r.exit_code == 0);
-    std::vector<DomainPoint> pts(d3d11::max_tri_counts.vertices);
+    std::vector<d3d11::Point> pts(d3d11::max_tri_counts.vertices);
     std::vector<std::uint32_t> idx(d3d11::max_tri_counts.index_count());
     const auto counts = d3d11::tessellate_tri(pts, idx, {2.5f, 3.7f, 5.1f, 4.2f},
                                               {d3d11::Partitioning::fractional_even, Winding::cw});

@@ -160,8 +160,8 @@ void validate_random(const cp::PatternOptions& options, std::size_t count, std::
 } // namespace
 
 TEST_CASE("cp pattern: mesh checks detect defects", "[cp_pattern][mesh_checks]") {
-    STATIC_REQUIRE(signed_area2({0, 0}, {4, 0}, {0, 2}) == 8);
-    STATIC_REQUIRE(signed_area2({0, 0}, {0, 2}, {4, 0}) == -8);
+    STATIC_REQUIRE(signed_area2(DomainPoint{0, 0}, DomainPoint{4, 0}, DomainPoint{0, 2}) == 8);
+    STATIC_REQUIRE(signed_area2(DomainPoint{0, 0}, DomainPoint{0, 2}, DomainPoint{4, 0}) == -8);
     STATIC_REQUIRE(canonical_rotation({DomainPoint{5, 0}, {0, 9}, {0, 1}})[0] == DomainPoint{0, 1});
     STATIC_REQUIRE(canonical_rotation({DomainPoint{5, 0}, {0, 9}, {0, 1}})[1] == DomainPoint{5, 0});
     // The reference triforce passes; each defect is caught by the check meant for it.

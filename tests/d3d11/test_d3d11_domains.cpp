@@ -18,7 +18,6 @@ namespace {
 
 using namespace ctess::d3d11;
 using ctess::Counts;
-using ctess::DomainPoint;
 
 constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
 constexpr float inf_f = std::numeric_limits<float>::infinity();
@@ -42,27 +41,27 @@ static_assert(tessellate_tri({}, {}, {3, 3, 3, 3}) ==
 
 // Filled in a constant expression: the minimum triangle, a 2x2 quad, and a small isoline.
 constexpr bool tri_minimum_ok = [] {
-    std::array<DomainPoint, 3> p{};
+    std::array<Point, 3> p{};
     std::array<std::uint32_t, 3> i{};
     const Counts c = tessellate_tri(p, i, {1, 1, 1, 1}, {Partitioning::integer, Winding::ccw});
-    return c == Counts{3, 1} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 0} &&
-           p[2] == DomainPoint{65536, 0} && i == std::array<std::uint32_t, 3>{0, 2, 1};
+    return c == Counts{3, 1} && p[0] == Point{0, 65536} && p[1] == Point{0, 0} &&
+           p[2] == Point{65536, 0} && i == std::array<std::uint32_t, 3>{0, 2, 1};
 }();
 static_assert(tri_minimum_ok);
 constexpr bool quad_2x2_ok = [] {
-    std::array<DomainPoint, 9> p{};
+    std::array<Point, 9> p{};
     std::array<std::uint32_t, 24> i{};
     const Counts c = tessellate_quad(p, i, {2, 2, 2, 2, 2, 2}, {Partitioning::integer, Winding::cw});
     // Outer ring clockwise from (0, 1), then the centre.
-    return c == Counts{9, 8} && p[0] == DomainPoint{0, 65536} && p[1] == DomainPoint{0, 32768} &&
-           p[2] == DomainPoint{0, 0} && p[4] == DomainPoint{65536, 0} && p[8] == DomainPoint{32768, 32768};
+    return c == Counts{9, 8} && p[0] == Point{0, 65536} && p[1] == Point{0, 32768} &&
+           p[2] == Point{0, 0} && p[4] == Point{65536, 0} && p[8] == Point{32768, 32768};
 }();
 static_assert(quad_2x2_ok);
 constexpr bool isoline_ok = [] {
-    std::array<DomainPoint, 6> p{};
+    std::array<Point, 6> p{};
     std::array<std::uint32_t, 8> i{};
     const IsolineCounts c = tessellate_isoline(p, i, {2, 2}, {Partitioning::integer, Winding::cw});
-    return c == IsolineCounts{6, 4} && p[4] == DomainPoint{32768, 32768} &&
+    return c == IsolineCounts{6, 4} && p[4] == Point{32768, 32768} &&
            i == std::array<std::uint32_t, 8>{0, 1, 1, 2, 3, 4, 4, 5};
 }();
 static_assert(isoline_ok);
@@ -72,7 +71,7 @@ static_assert(isoline_ok);
 template <class CountsT>
 struct MeshOf {
     CountsT counts;
-    std::vector<DomainPoint> points;
+    std::vector<Point> points;
     std::vector<std::uint32_t> indices;
 };
 using Mesh = MeshOf<Counts>;
@@ -83,11 +82,11 @@ auto run(Tessellate tessellate, Partitioning mode, Winding winding, const std::a
     const TessOptions options{mode, winding};
     MeshOf<decltype(tessellate({}, {}, f, options))> m;
     m.counts = tessellate({}, {}, f, options);
-    m.points.assign(m.counts.vertices + 1, DomainPoint{0xdeadbeef, 0xdeadbeef});
+    m.points.assign(m.counts.vertices + 1, Point{0xdeadbeef, 0xdeadbeef});
     m.indices.assign(m.counts.index_count() + 1, 0xdeadbeef);
     const auto filled = tessellate(m.points, m.indices, f, options);
     REQUIRE(filled == m.counts);
-    REQUIRE(m.points.back() == DomainPoint{0xdeadbeef, 0xdeadbeef}); // nothing written past the count
+    REQUIRE(m.points.back() == Point{0xdeadbeef, 0xdeadbeef}); // nothing written past the count
     REQUIRE(m.indices.back() == 0xdeadbeef);
     m.points.pop_back();
     m.indices.pop_back();
@@ -218,9 +217,9 @@ struct FactorSource {
 };
 
 // Twice the signed area of a triangle, in (1/65536)^2.
-std::int64_t doubled_area(const DomainPoint& a, const DomainPoint& b, const DomainPoint& c) {
-    const auto x = [](const DomainPoint& p) { return static_cast<std::int64_t>(p.u); };
-    const auto y = [](const DomainPoint& p) { return static_cast<std::int64_t>(p.v); };
+std::int64_t doubled_area(const Point& a, const Point& b, const Point& c) {
+    const auto x = [](const Point& p) { return static_cast<std::int64_t>(p.u); };
+    const auto y = [](const Point& p) { return static_cast<std::int64_t>(p.v); };
     return (x(b) - x(a)) * (y(c) - y(a)) - (x(c) - x(a)) * (y(b) - y(a));
 }
 
@@ -245,8 +244,8 @@ void require_tiles(const Mesh& m, std::int64_t domain_doubled_area) {
 
 // The outer ring's points (the first `outer` points) on one edge, by parameter. Inner points may coincide
 // with the boundary (an inside factor near 1 puts a ring on it) and are not part of the shared edge.
-std::vector<std::uint32_t> sorted_edge(const Mesh& m, std::size_t outer, bool (*on_edge)(const DomainPoint&),
-                                       std::uint32_t (*param)(const DomainPoint&)) {
+std::vector<std::uint32_t> sorted_edge(const Mesh& m, std::size_t outer, bool (*on_edge)(const Point&),
+                                       std::uint32_t (*param)(const Point&)) {
     std::vector<std::uint32_t> out;
     for (std::size_t k = 0; k < outer; ++k)
         if (on_edge(m.points[k])) out.push_back(param(m.points[k]));
@@ -430,14 +429,14 @@ TEST_CASE("d3d11 domains: triangles tile the domain and shared edges are waterti
             if (mt.counts.vertices == 3) outer = 3; // the minimum triangle
             // Each edge holds exactly the 1-D points of its factor: what a neighbour sharing it places.
             REQUIRE(sorted_edge(
-                        mt, outer, [](const DomainPoint& p) { return p.u == 0; },
-                        [](const DomainPoint& p) { return p.v; }) == sorted_edge_points(m, t[0]));
+                        mt, outer, [](const Point& p) { return p.u == 0; },
+                        [](const Point& p) { return p.v; }) == sorted_edge_points(m, t[0]));
             REQUIRE(sorted_edge(
-                        mt, outer, [](const DomainPoint& p) { return p.v == 0; },
-                        [](const DomainPoint& p) { return p.u; }) == sorted_edge_points(m, t[1]));
+                        mt, outer, [](const Point& p) { return p.v == 0; },
+                        [](const Point& p) { return p.u; }) == sorted_edge_points(m, t[1]));
             REQUIRE(sorted_edge(
-                        mt, outer, [](const DomainPoint& p) { return p.u + p.v == 65536; },
-                        [](const DomainPoint& p) { return p.u; }) == sorted_edge_points(m, t[2]));
+                        mt, outer, [](const Point& p) { return p.u + p.v == 65536; },
+                        [](const Point& p) { return p.u; }) == sorted_edge_points(m, t[2]));
 
             const std::array<float, 6> q = {src.factor(), src.factor(), src.factor(),
                                             src.factor(), src.factor(), src.factor()};
@@ -447,17 +446,17 @@ TEST_CASE("d3d11 domains: triangles tile the domain and shared edges are waterti
             outer = 0;
             for (int e = 0; e < 4; ++e) outer += edge_points(m, q[e], nullptr) - 1;
             REQUIRE(sorted_edge(
-                        mq, outer, [](const DomainPoint& p) { return p.u == 0; },
-                        [](const DomainPoint& p) { return p.v; }) == sorted_edge_points(m, q[0]));
+                        mq, outer, [](const Point& p) { return p.u == 0; },
+                        [](const Point& p) { return p.v; }) == sorted_edge_points(m, q[0]));
             REQUIRE(sorted_edge(
-                        mq, outer, [](const DomainPoint& p) { return p.v == 0; },
-                        [](const DomainPoint& p) { return p.u; }) == sorted_edge_points(m, q[1]));
+                        mq, outer, [](const Point& p) { return p.v == 0; },
+                        [](const Point& p) { return p.u; }) == sorted_edge_points(m, q[1]));
             REQUIRE(sorted_edge(
-                        mq, outer, [](const DomainPoint& p) { return p.u == 65536; },
-                        [](const DomainPoint& p) { return p.v; }) == sorted_edge_points(m, q[2]));
+                        mq, outer, [](const Point& p) { return p.u == 65536; },
+                        [](const Point& p) { return p.v; }) == sorted_edge_points(m, q[2]));
             REQUIRE(sorted_edge(
-                        mq, outer, [](const DomainPoint& p) { return p.v == 65536; },
-                        [](const DomainPoint& p) { return p.u; }) == sorted_edge_points(m, q[3]));
+                        mq, outer, [](const Point& p) { return p.v == 65536; },
+                        [](const Point& p) { return p.u; }) == sorted_edge_points(m, q[3]));
         }
     }
 }
@@ -583,7 +582,7 @@ TEST_CASE("d3d11 domains: bad factors that clamp", "[d3d11][domains][bad-input]"
     REQUIRE(tri(Partitioning::fractional_odd, {2, 1, 1, nan_f}).counts == Counts{8, 9});
     // The minimum quad: corners from (0, 0) counter-clockwise in (u, v), two triangles.
     const Mesh qmin = quad(Partitioning::integer, {1, 1, 1, 1, nan_f, -inf_f});
-    REQUIRE(qmin.points == std::vector<DomainPoint>{{0, 0}, {65536, 0}, {65536, 65536}, {0, 65536}});
+    REQUIRE(qmin.points == std::vector<Point>{{0, 0}, {65536, 0}, {65536, 65536}, {0, 65536}});
     REQUIRE(qmin.indices == std::vector<std::uint32_t>{0, 1, 3, 1, 2, 3});
     // Odd quad: a raw inside factor above 1 also forces the frame (the triangle has no such rule).
     REQUIRE(quad(Partitioning::fractional_odd, {1, 1, 1, 1, 1, 1}).counts == Counts{4, 2});
@@ -600,15 +599,15 @@ TEST_CASE("d3d11 domains: bad factors that clamp", "[d3d11][domains][bad-input]"
 // counts; every family's default winding is counter-clockwise.
 TEST_CASE("d3d11 tessellators: a short span gets nothing written; the default winding is ccw",
           "[d3d11][bad_input]") {
-    constexpr DomainPoint sentinel{0xDEADBEEFu, 0xFEEDFACEu};
+    constexpr Point sentinel{0xDEADBEEFu, 0xFEEDFACEu};
     auto check = [&](auto&& fill) {
-        const auto n = fill(std::span<DomainPoint>{}, std::span<std::uint32_t>{});
+        const auto n = fill(std::span<Point>{}, std::span<std::uint32_t>{});
         REQUIRE(n.vertices > 0);
         for (int short_side = 0; short_side < 2; ++short_side) {
-            std::vector<DomainPoint> v(n.vertices - (short_side == 0 ? 1 : 0), sentinel);
+            std::vector<Point> v(n.vertices - (short_side == 0 ? 1 : 0), sentinel);
             std::vector<std::uint32_t> i(n.index_count() - (short_side == 1 ? 1 : 0), 0xABCDEF01u);
-            CHECK(fill(std::span<DomainPoint>(v), std::span<std::uint32_t>(i)) == n);
-            CHECK(std::all_of(v.begin(), v.end(), [&](DomainPoint p) { return p == sentinel; }));
+            CHECK(fill(std::span<Point>(v), std::span<std::uint32_t>(i)) == n);
+            CHECK(std::all_of(v.begin(), v.end(), [&](Point p) { return p == sentinel; }));
             CHECK(std::all_of(i.begin(), i.end(), [](std::uint32_t x) { return x == 0xABCDEF01u; }));
         }
     };

@@ -16,13 +16,12 @@
 namespace {
 
 using namespace ctess::d3d11;
-using ctess::DomainPoint;
 using ctess::test::OracleCase;
 
 struct Mesh {
     std::uint32_t vertex_count = 0; // Counts::vertices or IsolineCounts::vertices
     std::uint32_t index_count = 0;  // their index_count(): 3 per triangle, 2 per segment
-    std::vector<DomainPoint> points;
+    std::vector<Point> points;
     std::vector<std::uint32_t> indices;
 };
 

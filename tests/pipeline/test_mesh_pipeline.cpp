@@ -302,7 +302,7 @@ TEST_CASE("mesh pipeline, uniform: records and outputs equal UniformPatch's patt
         const std::array<std::uint32_t, 3> s = patch.sorted_factors();
         CHECK(rec.setup[rt::uniform_setup_word::pattern] == uniform::pattern_index(s[0], s[1], s[2]));
         for (std::uint32_t i = 0; i < rec.vertex_count; ++i) {
-            const DomainPoint q = patch.vertex(i);
+            const uniform::Point q = patch.vertex(i);
             const std::uint32_t* v = &out.vertices[(std::size_t{rec.first_vertex} + i) * vertex_words];
             REQUIRE(v[0] == exact_fixed(q.u));
             REQUIRE(v[1] == exact_fixed(q.v));

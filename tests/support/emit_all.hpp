@@ -9,14 +9,16 @@
 
 namespace ctess::test {
 
-struct Emitted {
-    std::vector<DomainPoint> vertices;
+template <class Point>
+struct BasicEmitted {
+    std::vector<Point> vertices;
     std::vector<std::uint32_t> indices;
 };
+using Emitted = BasicEmitted<DomainPoint>;
 
 template <class Patch>
-Emitted emit_all(const Patch& p) {
-    Emitted e;
+BasicEmitted<typename Patch::point_type> emit_all(const Patch& p) {
+    BasicEmitted<typename Patch::point_type> e;
     e.vertices.resize(p.counts().vertices);
     e.indices.resize(p.counts().index_count());
     REQUIRE(p.emit(e.vertices, e.indices));

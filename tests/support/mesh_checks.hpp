@@ -42,14 +42,16 @@ std::string cat(const Parts&... parts) {
 }
 
 // Twice the signed area, positive for counter-clockwise (u, v).
-constexpr std::int64_t signed_area2(DomainPoint a, DomainPoint b, DomainPoint c) {
+template <class Unit>
+constexpr std::int64_t signed_area2(FixedPoint<Unit> a, FixedPoint<Unit> b, FixedPoint<Unit> c) {
     const std::int64_t bu = std::int64_t{b.u} - a.u, bv = std::int64_t{b.v} - a.v;
     const std::int64_t cu = std::int64_t{c.u} - a.u, cv = std::int64_t{c.v} - a.v;
     return bu * cv - bv * cu;
 }
 
 // One position as a sortable key (u high, v low).
-constexpr std::uint64_t position_key(DomainPoint p) {
+template <class Unit>
+constexpr std::uint64_t position_key(FixedPoint<Unit> p) {
     return (std::uint64_t{p.u} << 32) | p.v;
 }
 
@@ -68,6 +70,23 @@ constexpr bool position_triangle_less(const PositionTriangle& a, const PositionT
     for (std::size_t i = 0; i < 3; ++i)
         if (position_key(a[i]) != position_key(b[i])) return position_key(a[i]) < position_key(b[i]);
     return false;
+}
+
+// The checks work in any unit (`one` is their argument) on (u, v) pairs carried as DomainPoint; points of
+// another FixedPoint type enter through check_points, which copies their coordinates unchanged.
+template <class Unit>
+std::vector<DomainPoint> check_points(std::span<const FixedPoint<Unit>> points) {
+    std::vector<DomainPoint> out(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) out[i] = {points[i].u, points[i].v};
+    return out;
+}
+template <class Unit>
+std::vector<DomainPoint> check_points(const std::vector<FixedPoint<Unit>>& points) {
+    return check_points(std::span<const FixedPoint<Unit>>(points));
+}
+template <class Unit>
+DomainPoint check_point(FixedPoint<Unit> p) {
+    return {p.u, p.v};
 }
 
 struct MeshView {

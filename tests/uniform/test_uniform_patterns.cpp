@@ -16,19 +16,21 @@
 #include "support/mesh_checks.hpp"
 
 namespace uf = ctess::uniform;
-using ctess::DomainPoint;
+using ctess::uniform::Point;
 
 namespace {
 
 struct Mesh {
-    std::vector<DomainPoint> vertices;
+    std::vector<Point> vertices;
+    std::vector<ctess::DomainPoint> checked; // the checks' carrier of the same (u, v), units of uf::fixed_one
     std::vector<std::uint32_t> indices;
-    ctess::test::MeshView view() const { return {vertices, indices}; }
+    ctess::test::MeshView view() const { return {checked, indices}; }
 };
 
 Mesh mesh_of(const uf::Pattern& p) {
     Mesh m;
     for (unsigned k = 0; k < p.vertex_count(); ++k) m.vertices.push_back(p.vertex(k));
+    m.checked = ctess::test::check_points(m.vertices);
     for (unsigned t = 0; t < p.triangle_count(); ++t)
         for (unsigned i : p.triangle(t)) m.indices.push_back(i);
     return m;
@@ -36,7 +38,7 @@ Mesh mesh_of(const uf::Pattern& p) {
 
 // The intrinsic length (factors as edge lengths) of the segment a-b: |(du, dv, dw)|^2 =
 // -f2^2 dv dw - f0^2 dw du - f1^2 du dv, clamped at 0 for non-Euclidean triples.
-double intrinsic_length(const uf::Pattern& p, DomainPoint a, DomainPoint b) {
+double intrinsic_length(const uf::Pattern& p, Point a, Point b) {
     const double one = uf::fixed_one;
     const double du = (double(b.u) - a.u) / one, dv = (double(b.v) - a.v) / one, dw = -du - dv;
     const double s =
@@ -178,7 +180,7 @@ TEST_CASE("uniform: the storage tables hold the pattern data (interior words, 8-
         REQUIRE(unsigned(next.triangle - first.triangle) == p.triangle_count());
         for (unsigned k = 0; k < p.interior_count(); ++k) {
             const std::uint32_t w = t16.interior[first.interior + k];
-            REQUIRE(DomainPoint{w & 0xFFFFu, w >> 16} == p.vertex(p.boundary_count() + k));
+            REQUIRE(Point{w & 0xFFFFu, w >> 16} == p.vertex(p.boundary_count() + k));
         }
         // each triangle is stored as a rotation of the pattern's (winding kept, §3.4)
         for (unsigned t = 0; t < p.triangle_count(); ++t) {

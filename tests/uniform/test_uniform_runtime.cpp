@@ -20,7 +20,7 @@
 #include "support/mesh_checks.hpp"
 
 namespace uf = ctess::uniform;
-using ctess::DomainPoint;
+using ctess::uniform::Point;
 using ctess::rt::UniformPatch;
 using ctess::rt::UniformTableSet;
 
@@ -39,7 +39,7 @@ int edge_of(int a, int b) {
     return lo == 0 ? (hi == 1 ? 0 : 2) : 1;
 }
 
-DomainPoint map_point(DomainPoint c, const std::array<int, 3>& perm) {
+Point map_point(Point c, const std::array<int, 3>& perm) {
     const std::uint32_t weight[3] = {uf::fixed_one - c.u - c.v, c.u, c.v};
     std::uint32_t out[3] = {};
     for (int k = 0; k < 3; ++k) out[perm[k]] = weight[k];
@@ -47,10 +47,12 @@ DomainPoint map_point(DomainPoint c, const std::array<int, 3>& perm) {
 }
 
 // The triangles of a mesh as rotated position keys, sorted (winding kept).
-std::vector<Keyed> keyed(const std::vector<DomainPoint>& v, const std::vector<std::uint32_t>& idx) {
+std::vector<Keyed> keyed(const std::vector<Point>& v, const std::vector<std::uint32_t>& idx) {
     std::vector<Keyed> out;
     for (std::size_t t = 0; t < idx.size(); t += 3) {
-        const auto r = ctess::test::canonical_rotation({v[idx[t]], v[idx[t + 1]], v[idx[t + 2]]});
+        const auto r = ctess::test::canonical_rotation({ctess::test::check_point(v[idx[t]]),
+                                                        ctess::test::check_point(v[idx[t + 1]]),
+                                                        ctess::test::check_point(v[idx[t + 2]])});
         out.push_back({ctess::test::position_key(r[0]), ctess::test::position_key(r[1]),
                        ctess::test::position_key(r[2])});
     }
@@ -59,7 +61,7 @@ std::vector<Keyed> keyed(const std::vector<DomainPoint>& v, const std::vector<st
 }
 
 using ctess::test::emit_all;
-using ctess::test::Emitted;
+using Emitted = ctess::test::BasicEmitted<Point>;
 
 // The stored pattern mapped by every corner permutation that carries canonical edge factors onto the output
 // edges; the patch must equal one of them.
@@ -73,7 +75,7 @@ bool matches_some_mapping(const Emitted& e, const Factors& f, bool cw) {
         if (f[edge_of(perm[0], perm[1])] != s[0] || f[edge_of(perm[1], perm[2])] != s[1] ||
             f[edge_of(perm[0], perm[2])] != s[2])
             continue;
-        std::vector<DomainPoint> v;
+        std::vector<Point> v;
         for (unsigned k = 0; k < p.vertex_count(); ++k) v.push_back(map_point(p.vertex(k), perm));
         std::vector<std::uint32_t> idx;
         for (unsigned t = 0; t < p.triangle_count(); ++t) {
@@ -132,7 +134,8 @@ TEST_CASE("uniform runtime: every triple in every order is the stored pattern wi
                 if (!cw) { // edge i carries exactly f_i segments
                     const auto loop = ctess::test::boundary_loop_edges(parameters(f[0]), parameters(f[1]),
                                                                        parameters(f[2]), uf::fixed_one);
-                    const auto topo = ctess::test::surface_topology({e.vertices, e.indices}, loop);
+                    const std::vector<ctess::DomainPoint> carried = ctess::test::check_points(e.vertices);
+                    const auto topo = ctess::test::surface_topology({carried, e.indices}, loop);
                     REQUIRE(topo.boundary_matches);
                     REQUIRE(topo.edges_unique);
                 }
@@ -172,7 +175,7 @@ TEST_CASE("uniform runtime: the provoking layout is the shared one with a unique
                             // positions [0, V) are the shared layout's
                             REQUIRE(std::equal(s.vertices.begin(), s.vertices.end(), e.vertices.begin()));
                             std::set<std::uint64_t> distinct;
-                            for (const DomainPoint d : s.vertices)
+                            for (const Point d : s.vertices)
                                 distinct.insert(ctess::test::position_key(d));
                             std::vector<int> provokes(v + fewest, 0);
                             for (std::uint32_t p = 0; p < t; ++p) {
@@ -197,16 +200,16 @@ TEST_CASE("uniform runtime: the provoking layout is the shared one with a unique
                                 REQUIRE(provoking.vertex(i) == e.vertices[i]);
                             }
                             // short spans: false, nothing written
-                            std::vector<DomainPoint> sv(v + fewest - 1, DomainPoint{7, 7});
+                            std::vector<Point> sv(v + fewest - 1, Point{7, 7});
                             std::vector<std::uint32_t> si(3 * t, 7u);
                             REQUIRE_FALSE(provoking.emit(sv, si));
                             REQUIRE(
                                 std::all_of(si.begin(), si.end(), [](std::uint32_t x) { return x == 7u; }));
-                            sv.assign(v + fewest, DomainPoint{7, 7});
+                            sv.assign(v + fewest, Point{7, 7});
                             si.resize(3 * t - 1);
                             REQUIRE_FALSE(provoking.emit(sv, si));
-                            REQUIRE(std::all_of(sv.begin(), sv.end(), [](DomainPoint d) {
-                                return d == DomainPoint{7, 7};
+                            REQUIRE(std::all_of(sv.begin(), sv.end(), [](Point d) {
+                                return d == Point{7, 7};
                             }));
                             ++checked;
                         }
@@ -224,7 +227,7 @@ TEST_CASE("uniform runtime: two patches sharing an edge weld bit for bit", "[uni
     // Positions are exact integer interpolations of integer corners.
     using Pos = std::array<std::int64_t, 2>;
     const Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
-    auto position = [](DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
+    auto position = [](Point d, const Pos& c0, const Pos& c1, const Pos& c2) {
         const std::int64_t w = uf::fixed_one - d.u - d.v;
         return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
     };
@@ -237,11 +240,11 @@ TEST_CASE("uniform runtime: two patches sharing an edge weld bit for bit", "[uni
                     const UniformPatch b(set, float(shared), float(b1), float(a2 == 1 ? 16 : a2 - 1));
                     std::set<Pos> on_a, on_b;
                     for (std::uint32_t i = 0; i < a.counts().vertices; ++i) {
-                        const DomainPoint d = a.vertex(i);
+                        const Point d = a.vertex(i);
                         if (d.u + d.v == uf::fixed_one) on_a.insert(position(d, P0, P1, P2));
                     }
                     for (std::uint32_t i = 0; i < b.counts().vertices; ++i) {
-                        const DomainPoint d = b.vertex(i);
+                        const Point d = b.vertex(i);
                         if (d.v == 0) on_b.insert(position(d, P2, P1, Q));
                     }
                     INFO("shared " << shared << " a " << a0 << "," << a2 << " b " << b1);
@@ -312,13 +315,13 @@ TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",
 
     const UniformPatch p(set, 11.0f, 9.0f, 6.0f);
     const ctess::Counts n = p.counts();
-    CHECK(p.vertex(n.vertices) == DomainPoint{0, 0});
-    CHECK(p.vertex(0xFFFFFFFFu) == DomainPoint{0, 0});
+    CHECK(p.vertex(n.vertices) == Point{0, 0});
+    CHECK(p.vertex(0xFFFFFFFFu) == Point{0, 0});
     CHECK(p.triangle(n.triangles) == ctess::rt::UniformTriangle{0, 0, 0});
-    std::vector<DomainPoint> v(n.vertices - 1, DomainPoint{7, 7});
+    std::vector<Point> v(n.vertices - 1, Point{7, 7});
     std::vector<std::uint32_t> idx(n.index_count(), 7u);
     CHECK_FALSE(p.emit(v, idx));
-    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+    CHECK(std::all_of(v.begin(), v.end(), [](Point d) { return d == Point{7, 7}; }));
     CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
     v.resize(n.vertices);
     idx.resize(n.index_count() - 1);
@@ -327,10 +330,10 @@ TEST_CASE("uniform runtime bad input: documented rounding and clamps, never UB",
     // an index_base whose largest index would reach 2^32 - 1 (the restart value) or wrap: false, nothing
     // written; the largest base that fits puts the last vertex at 2^32 - 2
     idx.resize(n.index_count(), 7u);
-    std::fill(v.begin(), v.end(), DomainPoint{7, 7});
+    std::fill(v.begin(), v.end(), Point{7, 7});
     const std::uint32_t largest = 0xFFFFFFFFu - n.vertices;
     CHECK_FALSE(p.emit(v, idx, largest + 1));
-    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+    CHECK(std::all_of(v.begin(), v.end(), [](Point d) { return d == Point{7, 7}; }));
     CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
     REQUIRE(p.emit(v, idx, largest));
     CHECK(*std::max_element(idx.begin(), idx.end()) == 0xFFFFFFFEu);
@@ -352,7 +355,7 @@ TEST_CASE("uniform runtime: emit() is vertex(i) and triangle(p) bit for bit, plu
                                 << (winding == ctess::Winding::cw));
                     const UniformPatch patch(*set, f, {layout, winding});
                     const ctess::Counts counts = patch.counts();
-                    std::vector<DomainPoint> v(counts.vertices + spare, DomainPoint{7, 7});
+                    std::vector<Point> v(counts.vertices + spare, Point{7, 7});
                     std::vector<std::uint32_t> idx(counts.index_count() + spare, 7u);
                     for (const std::uint32_t b0 : {0u, base}) {
                         REQUIRE(patch.emit(v, idx, b0));
@@ -363,7 +366,7 @@ TEST_CASE("uniform runtime: emit() is vertex(i) and triangle(p) bit for bit, plu
                                      idx[3 * p + 2] == b0 + t[2]));
                         }
                         for (std::uint32_t k = 0; k < spare; ++k) {
-                            REQUIRE(v[counts.vertices + k] == DomainPoint{7, 7});
+                            REQUIRE(v[counts.vertices + k] == Point{7, 7});
                             REQUIRE(idx[counts.index_count() + k] == 7u);
                         }
                     }

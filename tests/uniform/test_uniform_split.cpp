@@ -17,7 +17,7 @@
 
 #include "support/emit_all.hpp"
 
-using ctess::DomainPoint;
+using ctess::uniform::SplitPoint;
 using ctess::rt::UniformSplit;
 
 namespace {
@@ -25,9 +25,8 @@ namespace {
 __extension__ using int128 = __int128;
 
 using ctess::test::emit_all;
-using ctess::test::Emitted;
 
-int128 area2(DomainPoint a, DomainPoint b, DomainPoint c) {
+int128 area2(SplitPoint a, SplitPoint b, SplitPoint c) {
     const int128 bu = int128{b.u} - a.u, bv = int128{b.v} - a.v, cu = int128{c.u} - a.u,
                  cv = int128{c.v} - a.v;
     return bu * cv - bv * cu;
@@ -43,7 +42,7 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance);
 // uniform_split_fixed_one) as an exact position, so points on a shared edge compare bit for bit.
 using Pos = std::array<int128, 2>;
 constexpr Pos P0{0, 0}, P1{1000003, 17}, P2{-31, 999983}, Q{1200000, 1100000};
-Pos position(DomainPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
+Pos position(SplitPoint d, const Pos& c0, const Pos& c1, const Pos& c2) {
     const int128 one = ctess::rt::uniform_split_fixed_one;
     const int128 w = one - d.u - d.v;
     return Pos{w * c0[0] + d.u * c1[0] + d.v * c2[0], w * c0[1] + d.u * c1[1] + d.v * c2[1]};
@@ -83,7 +82,7 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
         INFO("N " << n << " tolerance " << tolerance << " factors " << f[0] << "," << f[1] << "," << f[2]);
         const UniformSplit s(set, f[0], f[1], f[2], {}, tolerance);
         REQUIRE(s.depth() <= ctess::rt::uniform_split_max_depth);
-        const Emitted e = emit_all(s);
+        const auto e = emit_all(s);
         int128 sum = 0;
         for (std::size_t t = 0; t < e.indices.size(); t += 3) {
             const int128 a =
@@ -96,7 +95,7 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
         // A split edge with factor T gets S = ceil(T / N) sub-edges of factor T * span (at most N each, so
         // they never split again); each rounds on its own, so the edge carries T segments within S / 2.
         std::set<std::uint32_t> on_e0, on_e1, on_e2;
-        for (const DomainPoint& p : e.vertices) {
+        for (const SplitPoint& p : e.vertices) {
             if (p.v == 0) on_e0.insert(p.u);
             if (std::uint64_t{p.u} + p.v == ctess::rt::uniform_split_fixed_one) on_e1.insert(p.v);
             if (p.u == 0) on_e2.insert(p.v);
@@ -121,7 +120,7 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
     const auto cases =
         with_random({{193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}}, 2026, 60, 1, 256);
     const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
-    auto on_root_edge = [one](DomainPoint a, DomainPoint b) {
+    auto on_root_edge = [one](SplitPoint a, SplitPoint b) {
         return (a.v == 0 && b.v == 0) || (a.u == 0 && b.u == 0) ||
                (std::uint64_t{a.u} + a.v == one && std::uint64_t{b.u} + b.v == one);
     };
@@ -130,10 +129,10 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
             for (const auto& f : cases) {
                 INFO("N " << set->max_factor << " tolerance " << tolerance << " factors " << f[0] << ","
                           << f[1] << "," << f[2]);
-                const Emitted e = emit_all(UniformSplit(*set, f[0], f[1], f[2], {}, tolerance));
+                const auto e = emit_all(UniformSplit(*set, f[0], f[1], f[2], {}, tolerance));
                 std::map<std::pair<std::uint64_t, std::uint64_t>, int>
                     net; // (lower, higher) position: up minus down
-                auto key = [](DomainPoint p) { return (std::uint64_t{p.u} << 32) | p.v; };
+                auto key = [](SplitPoint p) { return (std::uint64_t{p.u} << 32) | p.v; };
                 for (std::size_t t = 0; t < e.indices.size(); t += 3)
                     for (unsigned j = 0; j < 3; ++j) {
                         const std::uint64_t a = key(e.vertices[e.indices[t + j]]),
@@ -142,8 +141,8 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
                     }
                 std::size_t inside_open = 0;
                 for (const auto& [edge, n] : net) {
-                    const DomainPoint a{std::uint32_t(edge.first >> 32), std::uint32_t(edge.first)};
-                    const DomainPoint b{std::uint32_t(edge.second >> 32), std::uint32_t(edge.second)};
+                    const SplitPoint a{std::uint32_t(edge.first >> 32), std::uint32_t(edge.first)};
+                    const SplitPoint b{std::uint32_t(edge.second >> 32), std::uint32_t(edge.second)};
                     inside_open += n != 0 && !on_root_edge(a, b);
                 }
                 CHECK(inside_open == 0);
@@ -158,12 +157,12 @@ TEST_CASE("uniform split: neighbours sharing an edge weld bit for bit at any dep
         for (float other : {1.0f, 12.0f, 40.0f, 150.0f, 256.0f}) {
             const UniformSplit a(set, other, shared, 256.0f - other / 2);
             const UniformSplit b(set, shared, other / 3 + 1, 200.0f);
-            const Emitted ea = emit_all(a), eb = emit_all(b);
+            const auto ea = emit_all(a), eb = emit_all(b);
             std::set<Pos> on_a, on_b;
-            for (const DomainPoint& d : ea.vertices)
+            for (const SplitPoint& d : ea.vertices)
                 if (std::uint64_t{d.u} + d.v == ctess::rt::uniform_split_fixed_one)
                     on_a.insert(position(d, P0, P1, P2));
-            for (const DomainPoint& d : eb.vertices)
+            for (const SplitPoint& d : eb.vertices)
                 if (d.v == 0) on_b.insert(position(d, P2, P1, Q));
             INFO("shared " << shared << " other " << other);
             REQUIRE(on_a.size() >= 2);
@@ -187,7 +186,7 @@ TEST_CASE("uniform split: the provoking layout gives every triangle its own firs
             REQUIRE(provoking.counts().triangles == shared.counts().triangles);
             REQUIRE(provoking.counts().vertices >= shared.counts().vertices);
             REQUIRE(provoking.counts().vertices >= provoking.counts().triangles);
-            const Emitted s = emit_all(shared), e = emit_all(provoking);
+            const auto s = emit_all(shared), e = emit_all(provoking);
             std::vector<int> provokes(e.vertices.size(), 0);
             for (std::size_t t = 0; t < e.indices.size(); ++t) {
                 REQUIRE(e.vertices[e.indices[t]] == s.vertices[s.indices[t]]);
@@ -203,11 +202,9 @@ TEST_CASE("uniform split: below the table it is the plain patch, scaled", "[unif
     REQUIRE(s.subpatch_count() == 1);
     REQUIRE(s.depth() == 0);
     REQUIRE(s.counts() == p.counts());
-    const Emitted e = emit_all(s);
+    const auto e = emit_all(s);
     for (std::uint32_t i = 0; i < p.counts().vertices; ++i) {
-        const DomainPoint q = p.vertex(i);
-        REQUIRE(e.vertices[i] ==
-                DomainPoint{q.u * ctess::uniform::fixed_one, q.v * ctess::uniform::fixed_one});
+        REQUIRE(e.vertices[i] == ctess::exact_convert<ctess::units::split>(p.vertex(i)));
     }
 }
 
@@ -227,10 +224,10 @@ TEST_CASE("uniform split bad input: clamps, bounded output, emit refuses small s
         CHECK(s.depth() <= 2);
     }
     const UniformSplit s(set, 50, 40, 30);
-    std::vector<DomainPoint> v(s.counts().vertices - 1, DomainPoint{7, 7});
+    std::vector<SplitPoint> v(s.counts().vertices - 1, SplitPoint{7, 7});
     std::vector<std::uint32_t> idx(s.counts().index_count(), 7u);
     CHECK_FALSE(s.emit(v, idx));
-    CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+    CHECK(std::all_of(v.begin(), v.end(), [](SplitPoint d) { return d == SplitPoint{7, 7}; }));
 }
 
 namespace {
@@ -298,7 +295,7 @@ TEST_CASE("uniform split: final edge lengths against the table's own bound, defa
                     for (std::uint32_t t = 0; t < leaf.patch.counts().triangles; ++t) {
                         const auto tri = leaf.patch.triangle(t);
                         for (int e = 0; e < 3; ++e) {
-                            const DomainPoint a = leaf.patch.vertex(tri[e]),
+                            const ctess::uniform::Point a = leaf.patch.vertex(tri[e]),
                                               b = leaf.patch.vertex(tri[(e + 1) % 3]);
                             const double du = (double(b.u) - a.u) / ctess::uniform::fixed_one,
                                          dv = (double(b.v) - a.v) / ctess::uniform::fixed_one;
@@ -351,12 +348,12 @@ TEST_CASE("uniform split: a diced patch beside a split patch welds bit for bit o
                         REQUIRE(a.depth() == 0);
                         REQUIRE(a.subpatch_count() == 1);
                         REQUIRE(b.depth() >= 1);
-                        const Emitted ea = emit_all(a), eb = emit_all(b);
+                        const auto ea = emit_all(a), eb = emit_all(b);
                         std::set<Pos> on_a, on_b;
-                        for (const DomainPoint& d : ea.vertices)
+                        for (const SplitPoint& d : ea.vertices)
                             if (std::uint64_t{d.u} + d.v == ctess::rt::uniform_split_fixed_one)
                                 on_a.insert(position(d, P0, P1, P2));
-                        for (const DomainPoint& d : eb.vertices)
+                        for (const SplitPoint& d : eb.vertices)
                             if (d.v == 0)
                                 on_b.insert(reversed ? position(d, P2, P1, Q) : position(d, P1, P2, Q));
                         REQUIRE(on_a.size() == std::size_t(std::floor(shared + 0.5f)) + 1);

@@ -52,7 +52,7 @@ void add_split(Digest& d, const ctess::rt::UniformSplit& s) {
     d.word(s.counts().vertices), d.word(s.counts().triangles);
     d.word(s.subpatch_count()), d.word(s.depth());
     for (double f : s.factors()) d.real(f);
-    const ctess::test::Emitted e = ctess::test::emit_all(s);
+    const auto e = ctess::test::emit_all(s);
     for (const auto& p : e.vertices) d.word(std::uint64_t{p.u} << 32 | p.v);
     for (std::uint32_t i : e.indices) d.word(i);
     s.for_each_leaf([&](const auto& leaf) {

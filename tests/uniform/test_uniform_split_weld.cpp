@@ -16,20 +16,19 @@
 
 #include "support/emit_all.hpp"
 
-using ctess::DomainPoint;
+using ctess::uniform::SplitPoint;
 using ctess::Layout;
 using ctess::PatchOptions;
 using ctess::Winding;
 using ctess::rt::UniformSplit;
 using ctess::test::emit_all;
-using ctess::test::Emitted;
 
 namespace {
 
 using Position = std::pair<std::uint32_t, std::uint32_t>;
 using Triple = std::array<Position, 3>;
 
-Position position(DomainPoint p) {
+Position position(SplitPoint p) {
     return {p.u, p.v};
 }
 
@@ -40,7 +39,7 @@ Triple canonical(Position a, Position b, Position c) {
     return t;
 }
 
-std::multiset<Triple> triangles_of(const Emitted& e) {
+std::multiset<Triple> triangles_of(const ctess::test::BasicEmitted<SplitPoint>& e) {
     std::multiset<Triple> out;
     for (std::size_t t = 0; t < e.indices.size(); t += 3)
         out.insert(canonical(position(e.vertices[e.indices[t]]), position(e.vertices[e.indices[t + 1]]),
@@ -85,7 +84,7 @@ TEST_CASE("uniform split shared: equals an independent weld of the provoking out
                     const UniformSplit provoking(*set, f[0], f[1], f[2],
                                                  PatchOptions{Layout::provoking, winding}, tolerance);
                     depth_two += shared.depth() == 2;
-                    const Emitted s = emit_all(shared), p = emit_all(provoking);
+                    const auto s = emit_all(shared), p = emit_all(provoking);
 
                     // The independent weld: one number per exact position the provoking triangles use.
                     std::map<Position, std::uint32_t> weld;
@@ -95,7 +94,7 @@ TEST_CASE("uniform split shared: equals an independent weld of the provoking out
 
                     // No position twice, and the same positions.
                     std::set<Position> out;
-                    for (const DomainPoint& d : s.vertices) out.insert(position(d));
+                    for (const SplitPoint& d : s.vertices) out.insert(position(d));
                     REQUIRE(out.size() == s.vertices.size());
                     REQUIRE(std::equal(out.begin(), out.end(), weld.begin(), weld.end(),
                                        [](const Position& a, const auto& b) { return a == b.first; }));
@@ -130,10 +129,10 @@ TEST_CASE("uniform split shared: below the table it is UniformPatch's shared lay
     const UniformSplit s(set, 11, 9, 6, options);
     const ctess::rt::UniformPatch p(set, 11, 9, 6, options);
     REQUIRE(s.counts() == p.counts());
-    const Emitted e = emit_all(s), q = emit_all(p);
+    const auto e = emit_all(s);
+    const auto q = emit_all(p);
     for (std::uint32_t i = 0; i < p.counts().vertices; ++i)
-        REQUIRE(e.vertices[i] == DomainPoint{q.vertices[i].u * ctess::uniform::fixed_one,
-                                             q.vertices[i].v * ctess::uniform::fixed_one});
+        REQUIRE(e.vertices[i] == ctess::exact_convert<ctess::units::split>(q.vertices[i]));
     REQUIRE(e.indices == q.indices);
 }
 
@@ -143,17 +142,17 @@ TEST_CASE("uniform split shared: emit refuses small spans and writes nothing",
         const UniformSplit s(*set, 176, 40, 100, {Layout::shared, Winding::ccw});
         const ctess::Counts n = s.counts();
         for (const bool short_vertices : {true, false}) {
-            std::vector<DomainPoint> v(n.vertices - (short_vertices ? 1 : 0), DomainPoint{7, 7});
+            std::vector<SplitPoint> v(n.vertices - (short_vertices ? 1 : 0), SplitPoint{7, 7});
             std::vector<std::uint32_t> idx(n.index_count() - (short_vertices ? 0 : 1), 7u);
             CHECK_FALSE(s.emit(v, idx));
-            CHECK(std::all_of(v.begin(), v.end(), [](DomainPoint d) { return d == DomainPoint{7, 7}; }));
+            CHECK(std::all_of(v.begin(), v.end(), [](SplitPoint d) { return d == SplitPoint{7, 7}; }));
             CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 7u; }));
         }
         // Spans larger than needed: only the first counts() entries are written.
-        std::vector<DomainPoint> v(n.vertices + 1, DomainPoint{7, 7});
+        std::vector<SplitPoint> v(n.vertices + 1, SplitPoint{7, 7});
         std::vector<std::uint32_t> idx(n.index_count() + 1, 7u);
         REQUIRE(s.emit(v, idx));
-        CHECK(v.back() == DomainPoint{7, 7});
+        CHECK(v.back() == SplitPoint{7, 7});
         CHECK(idx.back() == 7u);
     }
 }

@@ -39,22 +39,22 @@ float max_of(const std::vector<float>& v, std::size_t n) {
     return m;
 }
 
-template <class Tessellate>
-void fill(Mesh& mesh, Tessellate&& tessellate) {                                          // counts, then fill
-    const auto counts = tessellate(std::span<DomainPoint>{}, std::span<std::uint32_t>{}); // or IsolineCounts
-    mesh.vertices.resize(counts.vertices);
+template <class Point, class Tessellate>
+void fill(Mesh& mesh, Tessellate&& tessellate) { // counts, then fill
+    const auto counts = tessellate(std::span<Point>{}, std::span<std::uint32_t>{}); // or IsolineCounts
+    std::vector<Point> points(counts.vertices);
     mesh.indices.resize(counts.index_count());
-    tessellate(std::span<DomainPoint>(mesh.vertices), std::span<std::uint32_t>(mesh.indices));
+    tessellate(std::span<Point>(points), std::span<std::uint32_t>(mesh.indices));
+    set_points(mesh, std::span<const Point>(points));
 }
 
 Mesh tessellate_d3d11(const PatternRequest& r) {
     const d3d11::TessOptions opt{partitioning_of(r.mode), r.ccw ? d3d11::Winding::ccw : d3d11::Winding::cw};
     Mesh mesh;
-    mesh.fixed_one = d3d11::fixed_one;
     const auto& f = r.factors;
     auto run = [&](auto fn, const auto& factors) {
-        fill(mesh,
-             [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) { return fn(v, i, factors, opt); });
+        fill<d3d11::Point>(
+            mesh, [&](std::span<d3d11::Point> v, std::span<std::uint32_t> i) { return fn(v, i, factors, opt); });
     };
     if (r.domain == "tri") {
         if (f.size() != 3 && f.size() != 4)
@@ -99,14 +99,13 @@ Mesh tessellate_cp(const PatternRequest& r) {
     opt.winding = r.ccw ? Winding::ccw : Winding::cw; // the provoking vertex stays first either way
     opt.column_rule = r.staircase_columns ? cp::ColumnRule::staircase : cp::ColumnRule::minimal;
     Mesh mesh;
-    mesh.fixed_one = cp::fixed_one;
     const auto& f = r.factors;
     if (!quad)
-        fill(mesh, [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
+        fill<DomainPoint>(mesh, [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
             return cp::tessellate(v, i, f[0], f[1], f[2], opt);
         });
     else // the shared layout welds the diagonal (cp::tessellate_quad)
-        fill(mesh, [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
+        fill<DomainPoint>(mesh, [&](std::span<DomainPoint> v, std::span<std::uint32_t> i) {
             return cp::tessellate_quad(v, i, {f[0], f[1], f[2], f[3]}, opt);
         });
     return mesh;
@@ -122,9 +121,9 @@ Mesh tessellate(const PatternRequest& request) {
 }
 
 std::int64_t doubled_area(const Mesh& mesh, std::size_t t) {
-    const DomainPoint& a = mesh.vertices[mesh.indices[3 * t]];
-    const DomainPoint& b = mesh.vertices[mesh.indices[3 * t + 1]];
-    const DomainPoint& c = mesh.vertices[mesh.indices[3 * t + 2]];
+    const MeshPoint& a = mesh.vertices[mesh.indices[3 * t]];
+    const MeshPoint& b = mesh.vertices[mesh.indices[3 * t + 1]];
+    const MeshPoint& c = mesh.vertices[mesh.indices[3 * t + 2]];
     const std::int64_t bx = std::int64_t{b.u} - a.u, by = std::int64_t{b.v} - a.v;
     const std::int64_t cx = std::int64_t{c.u} - a.u, cy = std::int64_t{c.v} - a.v;
     // 128-bit products: split uniform patches use fixed_one = 65534^2, whose squares exceed 64 bits; the

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <span>
 #include <vector>
 
 namespace ctess::cli {
@@ -28,14 +29,38 @@ struct UniformUse {
     std::uint32_t subpatches = 1, depth = 0;
 };
 
+// A point of Mesh::vertices in units of Mesh::fixed_one: the CLI keeps the patterns of every family in one
+// type with their unit beside them (the library types its points by unit, core/fixed_point.hpp).
+struct MeshPoint {
+    std::uint32_t u = 0, v = 0;
+    friend bool operator==(const MeshPoint&, const MeshPoint&) = default;
+};
+
 struct Mesh {
-    std::vector<DomainPoint> vertices;
+    std::vector<MeshPoint> vertices;
     std::vector<std::uint32_t> indices;
     std::uint32_t fixed_one = 0;
     unsigned vertices_per_primitive = 3; // 2 for isolines
     UniformUse uniform;                  // the uniform mode only
     std::size_t primitive_count() const { return indices.size() / vertices_per_primitive; }
 };
+
+// The mesh's vertices from points of one unit, and that unit.
+template <class Unit>
+void set_points(Mesh& mesh, std::span<const FixedPoint<Unit>> points) {
+    mesh.fixed_one = Unit::one;
+    mesh.vertices.resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) mesh.vertices[i] = {points[i].u, points[i].v};
+}
+
+// Counts, then fill, of any runtime patch (counts() and emit(points, indices), core/patch_concept.hpp).
+template <class Patch>
+void emit_patch(Mesh& mesh, const Patch& patch) {
+    std::vector<typename Patch::point_type> points(patch.counts().vertices);
+    mesh.indices.resize(patch.counts().index_count());
+    patch.emit(points, mesh.indices);
+    set_points(mesh, std::span<const typename Patch::point_type>(points));
+}
 
 const std::vector<std::string>& pattern_modes();
 bool is_d3d11_mode(const std::string& mode);

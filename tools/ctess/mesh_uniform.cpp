@@ -24,22 +24,16 @@ Mesh tessellate_uniform(const PatternRequest& r) {
                        !uniform::within_table(r.factors[2], n);
     if (above) { // split with the table's own patterns (§3.5), welded in the shared layout
         const rt::UniformSplit split(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
-        mesh.fixed_one = rt::uniform_split_fixed_one;
         for (int i = 0; i < 3; ++i) mesh.uniform.factors[i] = static_cast<std::uint32_t>(split.factors()[i]);
         mesh.uniform.subpatches = split.subpatch_count();
         mesh.uniform.depth = split.depth();
-        mesh.vertices.resize(split.counts().vertices);
-        mesh.indices.resize(split.counts().index_count());
-        split.emit(mesh.vertices, mesh.indices);
+        emit_patch(mesh, split);
         return mesh;
     }
     const rt::UniformPatch patch(rt::uniform_tables, r.factors[0], r.factors[1], r.factors[2], options);
-    mesh.fixed_one = uniform::fixed_one;
     for (int i = 0; i < 3; ++i)
         mesh.uniform.factors[i] = rt::uniform_factor(r.factors[i], mesh.uniform.table_max);
-    mesh.vertices.resize(patch.counts().vertices);
-    mesh.indices.resize(patch.counts().index_count());
-    patch.emit(mesh.vertices, mesh.indices);
+    emit_patch(mesh, patch);
     return mesh;
 }
 

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <map>
 #include <stdexcept>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -65,7 +66,7 @@ void cp_pattern(const Factors& f, Pattern& out) {
 // efficiency's second baseline).
 template <ctess::d3d11::Partitioning P>
 void d3d11_pattern(const Factors& f, Pattern& out) {
-    static std::vector<ctess::DomainPoint> v(ctess::d3d11::max_tri_counts.vertices);
+    static std::vector<ctess::d3d11::Point> v(ctess::d3d11::max_tri_counts.vertices);
     static std::vector<std::uint32_t> i(ctess::d3d11::max_tri_counts.index_count());
     const ctess::d3d11::TessOptions opt{P, ctess::Winding::ccw};
     const float inside = (f[0] + f[1] + f[2]) / 3.0f;
@@ -108,29 +109,36 @@ bool uniform_fits(const Factors& f) {
     return ctess::uniform::within_table(f[0], n) && ctess::uniform::within_table(f[1], n) &&
            ctess::uniform::within_table(f[2], n);
 }
-// Emits into v and i (grown as needed) and returns the counts and the unit of the coordinates.
-std::pair<ctess::Counts, double> uniform_emit_into(const Factors& f, std::vector<ctess::DomainPoint>& v,
-                                                   std::vector<std::uint32_t>& i) {
-    auto emit = [&](const auto& patch, double one) {
-        const ctess::Counts n = patch.counts();
-        if (v.size() < n.vertices) v.resize(n.vertices);
-        if (i.size() < n.index_count()) i.resize(n.index_count());
-        if (!patch.emit(v, i)) throw std::runtime_error("uniform emit refused its buffers");
-        return std::pair{n, one};
-    };
-    if (uniform_fits(f))
-        return emit(ctess::rt::UniformPatch(ctess::rt::uniform_tables, f[0], f[1], f[2]),
-                    double(ctess::uniform::fixed_one));
-    return emit(ctess::rt::UniformSplit(ctess::rt::uniform_tables, f[0], f[1], f[2]),
-                double(ctess::rt::uniform_split_fixed_one));
+// Emits a uniform patch into v and i (grown as needed) and returns its counts.
+template <class Patch>
+ctess::Counts uniform_emit_into(const Patch& patch, std::vector<typename Patch::point_type>& v,
+                                std::vector<std::uint32_t>& i) {
+    const ctess::Counts n = patch.counts();
+    if (v.size() < n.vertices) v.resize(n.vertices);
+    if (i.size() < n.index_count()) i.resize(n.index_count());
+    if (!patch.emit(v, i)) throw std::runtime_error("uniform emit refused its buffers");
+    return n;
+}
+// The barycentric weights of points in units of Point::one.
+template <class Point>
+void uniform_weights(std::span<const Point> v, Pattern& out) {
+    const double one = Point::one;
+    out.w.resize(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k)
+        out.w[k] = {(one - v[k].u - v[k].v) / one, v[k].u / one, v[k].v / one};
 }
 void uniform_pattern(const Factors& f, Pattern& out) {
-    static std::vector<ctess::DomainPoint> v;
+    static std::vector<ctess::uniform::Point> v;
+    static std::vector<ctess::uniform::SplitPoint> vs;
     static std::vector<std::uint32_t> i;
-    const auto [n, one] = uniform_emit_into(f, v, i);
-    out.w.resize(n.vertices);
-    for (std::uint32_t k = 0; k < n.vertices; ++k)
-        out.w[k] = {(one - v[k].u - v[k].v) / one, v[k].u / one, v[k].v / one};
+    ctess::Counts n;
+    if (uniform_fits(f)) {
+        n = uniform_emit_into(ctess::rt::UniformPatch(ctess::rt::uniform_tables, f[0], f[1], f[2]), v, i);
+        uniform_weights(std::span<const ctess::uniform::Point>(v.data(), n.vertices), out);
+    } else {
+        n = uniform_emit_into(ctess::rt::UniformSplit(ctess::rt::uniform_tables, f[0], f[1], f[2]), vs, i);
+        uniform_weights(std::span<const ctess::uniform::SplitPoint>(vs.data(), n.vertices), out);
+    }
     out.indices.assign(i.begin(), i.begin() + n.index_count());
 }
 
@@ -145,13 +153,18 @@ std::uint32_t cp_emit(const Factors& f) {
     return patch.triangle_count();
 }
 std::uint32_t uniform_emit(const Factors& f) {
-    static std::vector<ctess::DomainPoint> v;
+    static std::vector<ctess::uniform::Point> v;
+    static std::vector<ctess::uniform::SplitPoint> vs;
     static std::vector<std::uint32_t> i;
-    return uniform_emit_into(f, v, i).first.triangles;
+    if (uniform_fits(f))
+        return uniform_emit_into(ctess::rt::UniformPatch(ctess::rt::uniform_tables, f[0], f[1], f[2]), v, i)
+            .triangles;
+    return uniform_emit_into(ctess::rt::UniformSplit(ctess::rt::uniform_tables, f[0], f[1], f[2]), vs, i)
+        .triangles;
 }
 template <ctess::d3d11::Partitioning P>
 std::uint32_t d3d11_emit(const Factors& f) {
-    static std::vector<ctess::DomainPoint> v(ctess::d3d11::max_tri_counts.vertices);
+    static std::vector<ctess::d3d11::Point> v(ctess::d3d11::max_tri_counts.vertices);
     static std::vector<std::uint32_t> i(ctess::d3d11::max_tri_counts.index_count());
     const ctess::d3d11::TessOptions opt{P, ctess::Winding::ccw};
     return ctess::d3d11::tessellate_tri(v, i, {f[0], f[1], f[2], (f[0] + f[1] + f[2]) / 3.0f},

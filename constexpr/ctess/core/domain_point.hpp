@@ -1,5 +1,6 @@
-// A point of the tessellation domain as exact fixed-point coordinates. The unit (fixed_one) depends on the
-// algorithm: 2^16 for D3D11 (16.16, as the reference), 2^24 for CP (1/256 grid with a 16-bit lerp).
+// DomainPoint: a point of a CP pattern or of the mesh pipeline's base triangle, in units of 2^-24
+// (FixedPoint<units::cp>). The other families have their own point types (core/fixed_point.hpp):
+// d3d11::Point (2^16), uniform::Point (65534) and uniform::SplitPoint (65534^2); mixing them does not compile.
 #pragma once
 #include <cstdint>
 
@@ -7,10 +8,6 @@
 
 namespace ctess {
 
-struct DomainPoint {
-    std::uint32_t u = 0;
-    std::uint32_t v = 0;
-    friend constexpr bool operator==(const DomainPoint&, const DomainPoint&) = default;
-};
+using DomainPoint = FixedPoint<units::cp>;
 
 } // namespace ctess

@@ -12,11 +12,14 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <ctess/core/fixed_point.hpp>
 #include <ctess/core/numeric.hpp>
 
 namespace ctess::d3d11 {
 
-inline constexpr std::uint32_t fixed_one = 65536; // 16.16
+inline constexpr std::uint32_t fixed_one = units::d3d11::one; // 16.16
+// A point of a D3D11 domain in units of fixed_one (the reference tessellator's 16.16).
+using Point = FixedPoint<units::d3d11>;
 inline constexpr std::uint32_t fixed_half = fixed_one / 2;
 
 // Values as in D3D11_TESSELLATOR_PARTITIONING. pow2 behaves exactly like integer in the hardware (the

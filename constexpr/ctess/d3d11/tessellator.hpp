@@ -45,7 +45,7 @@ inline constexpr IsolineCounts max_isoline_counts = {65 * 64, 64 * 64};
 namespace detail {
 
 struct PointWriter {
-    DomainPoint* out = nullptr;
+    Point* out = nullptr;
     std::uint32_t count = 0;
     constexpr void add(std::uint32_t u, std::uint32_t v) {
         if (out != nullptr) out[count] = {u, v};
@@ -78,7 +78,7 @@ constexpr std::uint32_t edge_param_index(bool reversed, std::uint32_t first, std
 
 // factors: {Ueq0, Veq0, Weq0, inside}.
 namespace detail {
-constexpr Counts tessellate_tri_into(DomainPoint* points, std::uint32_t* indices, const std::array<float, 4>& factors,
+constexpr Counts tessellate_tri_into(Point* points, std::uint32_t* indices, const std::array<float, 4>& factors,
     const TessOptions& options) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 3; ++e)
@@ -202,7 +202,7 @@ constexpr Counts tessellate_tri_into(DomainPoint* points, std::uint32_t* indices
 
 // factors: {Ueq0, Veq0, Ueq1, Veq1, insideU, insideV}.
 namespace detail {
-constexpr Counts tessellate_quad_into(DomainPoint* points, std::uint32_t* indices, const std::array<float, 6>& factors,
+constexpr Counts tessellate_quad_into(Point* points, std::uint32_t* indices, const std::array<float, 6>& factors,
     const TessOptions& options) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 4; ++e)
@@ -375,7 +375,7 @@ constexpr Counts tessellate_quad_into(DomainPoint* points, std::uint32_t* indice
 // factors: {density, detail}. Density is always integer (rounded up, [1, 64]); lines sit at v = 0 .. < 1
 // (none at v = 1); detail follows the partitioning. Segments connect consecutive points of each line.
 namespace detail {
-constexpr IsolineCounts tessellate_isoline_into(DomainPoint* points, std::uint32_t* indices, const std::array<float, 2>& factors,
+constexpr IsolineCounts tessellate_isoline_into(Point* points, std::uint32_t* indices, const std::array<float, 2>& factors,
     const TessOptions& options) {
     if (culls(factors[0]) || culls(factors[1])) return {};
     const FixedFactor density = process_edge_factor(Partitioning::integer, factors[0]);
@@ -409,21 +409,21 @@ constexpr IsolineCounts tessellate_isoline_into(DomainPoint* points, std::uint32
 // Count, then fill (docs/api.md, "Sized outputs"): each returns the pattern's counts and writes it only when
 // both spans are large enough; with a shorter span (empty spans: count only) nothing is written.
 // Triangle factors: {Ueq0, Veq0, Weq0, inside}.
-constexpr Counts tessellate_tri(std::span<DomainPoint> points, std::span<std::uint32_t> indices,
+constexpr Counts tessellate_tri(std::span<Point> points, std::span<std::uint32_t> indices,
                                 const std::array<float, 4>& factors, const TessOptions& options = {}) {
     const Counts n = detail::tessellate_tri_into(nullptr, nullptr, factors, options);
     if (!fits(n, points.size(), indices.size())) return n;
     return detail::tessellate_tri_into(points.data(), indices.data(), factors, options);
 }
 // Quad factors: {Ueq0, Veq0, Ueq1, Veq1, insideU, insideV}.
-constexpr Counts tessellate_quad(std::span<DomainPoint> points, std::span<std::uint32_t> indices,
+constexpr Counts tessellate_quad(std::span<Point> points, std::span<std::uint32_t> indices,
                                  const std::array<float, 6>& factors, const TessOptions& options = {}) {
     const Counts n = detail::tessellate_quad_into(nullptr, nullptr, factors, options);
     if (!fits(n, points.size(), indices.size())) return n;
     return detail::tessellate_quad_into(points.data(), indices.data(), factors, options);
 }
 // Isoline factors: {density, detail}; 2 indices per segment.
-constexpr IsolineCounts tessellate_isoline(std::span<DomainPoint> points, std::span<std::uint32_t> indices,
+constexpr IsolineCounts tessellate_isoline(std::span<Point> points, std::span<std::uint32_t> indices,
                                            const std::array<float, 2>& factors, const TessOptions& options = {}) {
     const IsolineCounts n = detail::tessellate_isoline_into(nullptr, nullptr, factors, options);
     if (n.vertices > points.size() || n.index_count() > indices.size()) return n;

@@ -33,7 +33,7 @@ constexpr unsigned triangle_count(unsigned boundary, unsigned interior) {
 }
 
 // Canonical boundary vertex k < f0 + f1 + f2 of the triple (f0, f1, f2).
-constexpr DomainPoint boundary_vertex(unsigned f0, unsigned f1, unsigned f2, unsigned k) {
+constexpr Point boundary_vertex(unsigned f0, unsigned f1, unsigned f2, unsigned k) {
     if (k < f0) return {edge_parameter(k, f0), 0};
     k -= f0;
     if (k < f1) {
@@ -78,7 +78,7 @@ struct Pattern {
     constexpr unsigned triangle_count() const {
         return pattern_offsets.triangle[index + 1] - pattern_offsets.triangle[index];
     }
-    constexpr DomainPoint vertex(unsigned k) const {
+    constexpr Point vertex(unsigned k) const {
         if (k < boundary_count()) return boundary_vertex(f0, f1, f2, k);
         const data::InteriorVertex& q =
             data::interior[pattern_offsets.interior[index] + k - boundary_count()];

@@ -4,9 +4,14 @@
 #pragma once
 #include <cstdint>
 
+#include <ctess/core/fixed_point.hpp>
+
 namespace ctess::uniform {
 
-inline constexpr std::uint32_t fixed_one = 65534;
+inline constexpr std::uint32_t fixed_one = units::uniform::one;
+// A point of a uniform-density pattern (units of 65534) and of a split patch on its root (units of 65534^2).
+using Point = FixedPoint<units::uniform>;
+using SplitPoint = FixedPoint<units::split>;
 
 // The quantised weight of an edge's end corner at point i of f segments (0 <= i <= f, f >= 1), rounded half
 // up from the exact i / f on the smaller side.

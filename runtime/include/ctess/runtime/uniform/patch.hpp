@@ -6,7 +6,7 @@
 //   ctess::rt::UniformPatch patch(ctess::rt::uniform_tables_16, 6.0f, 11.0f, 9.0f);
 //   ctess::Counts n = patch.counts();
 //   std::array<std::uint32_t, 3> t = patch.triangle(0);  // counter-clockwise by default
-//   ctess::DomainPoint p = patch.vertex(t[0]);            // exact (u, v), units of uniform::fixed_one =
+//   ctess::uniform::Point p = patch.vertex(t[0]);            // exact (u, v), units of uniform::fixed_one =
 //   65534
 //
 // Embedded style: no heap, no exceptions, no RTTI, no static constructors; a patch is a small value.
@@ -48,7 +48,7 @@ constexpr std::uint32_t uniform_factor(float f, std::uint32_t max_factor) noexce
 
 class UniformPatch {
   public:
-    using point_type = DomainPoint; // units of uniform::fixed_one = 65534
+    using point_type = uniform::Point; // units of uniform::fixed_one = 65534
     UniformPatch(const UniformTableSet& tables, float f0, float f1, float f2,
                  PatchOptions options = {}) noexcept
         : UniformPatch(tables,
@@ -75,7 +75,7 @@ class UniformPatch {
 
     // Vertex i as an exact point (u, v), units of 65534; {0, 0} when i >= counts().vertices. In the
     // provoking layout, vertices from distinct_vertices() on are copies.
-    DomainPoint vertex(std::uint32_t i) const noexcept {
+    uniform::Point vertex(std::uint32_t i) const noexcept {
         if (i >= distinct_ + copies_) return {};
         return canonical_vertex(i < distinct_ ? i : copy_sources_[i - distinct_]);
     }
@@ -97,7 +97,7 @@ class UniformPatch {
     // concatenates patches into one buffer passes its first vertex). Returns false and writes nothing when
     // either span is too small or an index would reach 2^32 - 1 (the primitive-restart value, or wrap). Bit
     // for bit what vertex(i) and triangle(p) give (plus index_base).
-    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices,
+    bool emit(std::span<uniform::Point> vertices, std::span<std::uint32_t> indices,
               std::uint32_t index_base = 0) const noexcept {
         if (vertices.size() < distinct_ + copies_ || indices.size() < 3u * triangles_) return false;
         if (index_base > 0xFFFFFFFFu - (distinct_ + copies_)) return false; // an index would reach 0xFFFFFFFF
@@ -108,9 +108,9 @@ class UniformPatch {
 
   private:
     // Canonical vertex i < distinct_ of the stored pattern, mapped to the output corners.
-    DomainPoint canonical_vertex(std::uint32_t i) const noexcept {
+    uniform::Point canonical_vertex(std::uint32_t i) const noexcept {
         const std::uint32_t boundary = sorted_[0] + sorted_[1] + sorted_[2];
-        DomainPoint c;
+        uniform::Point c;
         if (i < boundary)
             c = uniform::boundary_vertex(sorted_[0], sorted_[1], sorted_[2], i);
         else {
@@ -123,12 +123,12 @@ class UniformPatch {
 
     // The bulk path (docs/algorithm.md §3.4): canonical_vertex's arithmetic without a branch or a division
     // per vertex, the copies read back from the output, the triangles in one pass with a running copy rank.
-    void emit_vertices(DomainPoint* out) const noexcept {
+    void emit_vertices(uniform::Point* out) const noexcept {
         // Output coordinate k is weight source_[k + 1] of (one - u - v, u, v), picked by masks (no branch).
         std::uint32_t mask[2][3];
         for (int k = 0; k < 2; ++k)
             for (std::uint8_t c = 0; c < 3; ++c) mask[k][c] = source_[k + 1] == c ? ~0u : 0u;
-        const auto put = [&](DomainPoint* d, std::uint32_t u, std::uint32_t v) {
+        const auto put = [&](uniform::Point* d, std::uint32_t u, std::uint32_t v) {
             const std::uint32_t w = uniform::fixed_one - u - v;
             *d = {(w & mask[0][0]) | (u & mask[0][1]) | (v & mask[0][2]),
                   (w & mask[1][0]) | (u & mask[1][1]) | (v & mask[1][2])};
@@ -137,7 +137,7 @@ class UniformPatch {
         const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
         const std::uint32_t r0 = uniform::edge_reciprocal(f0), r1 = uniform::edge_reciprocal(f1),
                             r2 = uniform::edge_reciprocal(f2);
-        DomainPoint* d = out;
+        uniform::Point* d = out;
         for (std::uint32_t k = 0; k < f0; ++k) put(d++, uniform::edge_parameter(k, f0, r0), 0);
         for (std::uint32_t k = 0; k < f1; ++k) {
             const std::uint32_t p = uniform::edge_parameter(k, f1, r1);

@@ -47,7 +47,7 @@ inline void uniform_setup_words(std::uint32_t* setup, const UniformPatch& patch)
 
 // Vertex i of a patch as base weights of w1 and w2 in units of cp::fixed_one (w0 = fixed_one - u - v).
 inline DomainPoint uniform_base_point(const UniformPatch& patch, std::uint32_t i) noexcept {
-    const DomainPoint p = patch.vertex(i);
+    const uniform::Point p = patch.vertex(i);
     return {uniform_weight_to_fixed(p.u), uniform_weight_to_fixed(p.v)};
 }
 

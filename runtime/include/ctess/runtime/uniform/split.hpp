@@ -83,7 +83,7 @@ inline constexpr PatternBounds bounds = pattern_bounds();
 
 class UniformSplit {
   public:
-    using point_type = DomainPoint; // units of uniform_split_fixed_one = 65534^2
+    using point_type = uniform::SplitPoint; // units of uniform_split_fixed_one = 65534^2
     // interior_tolerance: the dice limit of edges inside the root patch, in units of N; clamped to
     // [uniform_split_strict_tolerance, uniform_split_interior_tolerance] (NaN gives the strict 1).
     UniformSplit(const UniformTableSet& tables, float f0, float f1, float f2, PatchOptions options = {},
@@ -143,7 +143,7 @@ class UniformSplit {
 
     // Writes the vertices (units of uniform_split_fixed_one) and triangles, welded in the shared layout.
     // Returns false and writes nothing when either span is too small.
-    bool emit(std::span<DomainPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
+    bool emit(std::span<uniform::SplitPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
         if (vertices.size() < counts_.vertices || indices.size() < counts_.index_count()) return false;
         if (welded() && depth_ > 0) {
             Welder w{vertices, indices};
@@ -173,15 +173,18 @@ class UniformSplit {
         }
     };
     struct Writer {
-        std::span<DomainPoint> vertices;
+        std::span<uniform::SplitPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t v = 0, t = 0;
-        // The leaf's bulk emit (indices already offset; emit() sized the spans, so it cannot refuse), then
-        // its points mapped into the root in place.
+        // The leaf's bulk emit into a stack buffer (indices already offset; emit() sized the spans, so it
+        // cannot refuse), then its points mapped into the root.
         void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
             const Counts n = p.counts();
-            p.emit(vertices.subspan(v, n.vertices), indices.subspan(t, n.index_count()), v);
-            self.map_in_place(s, vertices.subspan(v, n.vertices));
+            std::array<uniform::Point, uniform_split_detail::bounds.vertices> local;
+            p.emit(std::span<uniform::Point>(local.data(), n.vertices), indices.subspan(t, n.index_count()),
+                   v);
+            self.map_points(s, std::span<const uniform::Point>(local.data(), n.vertices),
+                            vertices.subspan(v, n.vertices));
             v += n.vertices, t += n.index_count();
         }
     };
@@ -214,7 +217,7 @@ class UniformSplit {
 
     // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded (half
     // up) at depth 2 from an exact integer sum.
-    Point map(const Sub& s, DomainPoint d) const noexcept {
+    Point map(const Sub& s, uniform::Point d) const noexcept {
         const std::int64_t w = std::int64_t{uniform::fixed_one} - d.u - d.v;
         Point r{};
         for (int k = 0; k < 2; ++k) {
@@ -225,18 +228,20 @@ class UniformSplit {
         return r;
     }
 
-    // map() of every point, in place. When every corner is a multiple of 65534 (always at depth 0 and 1: a
-    // corner there is the root's pattern point times 65534) the exact sum divided by 65534 is
-    // w a0 + u a1 + v a2 = 65534 a0 + u (a1 - a0) + v (a2 - a0) with a = corner / 65534, a point of the root
-    // below 65534^2 < 2^32: unsigned 32-bit arithmetic (modulo 2^32, exact) gives the same integers.
-    void map_in_place(const Sub& s, std::span<DomainPoint> points) const noexcept {
+    // map() of every point of in, written to out (as long as in). When every corner is a multiple of 65534
+    // (always at depth 0 and 1: a corner there is the root's pattern point times 65534) the exact sum divided
+    // by 65534 is w a0 + u a1 + v a2 = 65534 a0 + u (a1 - a0) + v (a2 - a0) with a = corner / 65534, a point
+    // of the root below 65534^2 < 2^32: unsigned 32-bit arithmetic (modulo 2^32, exact) gives the same
+    // integers.
+    void map_points(const Sub& s, std::span<const uniform::Point> in,
+                    std::span<uniform::SplitPoint> out) const noexcept {
         constexpr std::int64_t unit = uniform::fixed_one;
         bool multiples = true;
         for (const Point& c : s.corner) multiples = multiples && c[0] % unit == 0 && c[1] % unit == 0;
         if (!multiples) {
-            for (DomainPoint& d : points) {
-                const Point q = map(s, d);
-                d = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
+            for (std::size_t i = 0; i < in.size(); ++i) {
+                const Point q = map(s, in[i]);
+                out[i] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
             }
             return;
         }
@@ -247,12 +252,13 @@ class UniformSplit {
                        a2 = static_cast<std::uint32_t>(s.corner[2][k] / unit);
             base[k] = a0 * uniform::fixed_one, du[k] = a1 - a0, dv[k] = a2 - a0;
         }
-        for (DomainPoint& d : points)
-            d = {base[0] + d.u * du[0] + d.v * dv[0], base[1] + d.u * du[1] + d.v * dv[1]};
+        for (std::size_t i = 0; i < in.size(); ++i)
+            out[i] = {base[0] + in[i].u * du[0] + in[i].v * dv[0],
+                      base[1] + in[i].u * du[1] + in[i].v * dv[1]};
     }
 
     // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
-    static double edge_factor(const std::array<double, 3>& f, DomainPoint a, DomainPoint b) noexcept {
+    static double edge_factor(const std::array<double, 3>& f, uniform::Point a, uniform::Point b) noexcept {
         const double one = uniform::fixed_one;
         return uniform::intrinsic_length(f, (double(b.u) - double(a.u)) / one,
                                          (double(b.v) - double(a.v)) / one);
@@ -310,7 +316,7 @@ class UniformSplit {
     // share is the pattern-sized point array.
     struct SplitPattern {
         UniformPatch patch;
-        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point;
+        std::array<uniform::Point, uniform_split_detail::bounds.vertices> point;
         explicit SplitPattern(const UniformPatch& p) noexcept : patch(p) {
             for (std::uint32_t i = 0; i < p.counts().vertices; ++i) point[i] = p.vertex(i);
         }
@@ -320,7 +326,7 @@ class UniformSplit {
     }
     // The subpatch of s on the split pattern's triangle tri (counter-clockwise).
     Sub child(const Sub& s, const SplitPattern& pattern, const UniformTriangle& tri) const noexcept {
-        const DomainPoint a = pattern.point[tri[0]], b = pattern.point[tri[1]], c = pattern.point[tri[2]];
+        const uniform::Point a = pattern.point[tri[0]], b = pattern.point[tri[1]], c = pattern.point[tri[2]];
         Sub c_sub;
         c_sub.depth = s.depth + 1;
         c_sub.corner = {map(s, a), map(s, b), map(s, c)}; // exact at depth 0 (root corners are multiples)
@@ -342,8 +348,8 @@ class UniformSplit {
 
     // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
     // the value the neighbour across it sees; any other child edge is measured in the parent's metric.
-    static double child_edge_factor(const Sub& s, DomainPoint a, DomainPoint b) noexcept {
-        auto corner = [](DomainPoint p) -> int {
+    static double child_edge_factor(const Sub& s, uniform::Point a, uniform::Point b) noexcept {
+        auto corner = [](uniform::Point p) -> int {
             constexpr std::uint32_t one = uniform::fixed_one;
             if (p.u == 0 && p.v == 0) return 0;
             if (p.u == one && p.v == 0) return 1;
@@ -372,8 +378,8 @@ class UniformSplit {
         return total;
     }
     static double piece_factor(double f, std::uint32_t k, std::uint32_t s) noexcept {
-        return edge_factor({f, f, f}, DomainPoint{uniform::edge_parameter(s, k), 0},
-                           DomainPoint{uniform::edge_parameter(s + 1, k), 0});
+        return edge_factor({f, f, f}, uniform::Point{uniform::edge_parameter(s, k), 0},
+                           uniform::Point{uniform::edge_parameter(s + 1, k), 0});
     }
 
     // The points of one welded segment: at distance d (in segments) from its `first` end, d = 0 is first,
@@ -400,7 +406,7 @@ class UniformSplit {
         }
     };
     struct Welder {
-        std::span<DomainPoint> vertices;
+        std::span<uniform::SplitPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t next = 0, t = 0; // the next interior number, the next index slot
     };
@@ -408,7 +414,7 @@ class UniformSplit {
     // Step i of a boundary point p (local units of 65534) on edge j with k segments (e0: v = 0 from v0,
     // e1: u + v = 1 from v1, e2: u = 0 from v0), or -1 when p is not on it. Parameters are i / k quantised
     // (§3.2): far apart for k <= N, so rounding p's parameter * k recovers i exactly.
-    static int step_on(DomainPoint p, int j, std::uint32_t k) noexcept {
+    static int step_on(uniform::Point p, int j, std::uint32_t k) noexcept {
         constexpr std::uint32_t one = uniform::fixed_one;
         const bool on = j == 0 ? p.v == 0 : j == 1 ? p.u + p.v == one : p.u == 0;
         if (!on) return -1;
@@ -416,7 +422,7 @@ class UniformSplit {
         return static_cast<int>((t * k + one / 2) / one);
     }
     // The edge of a node's side j that holds a boundary point, and its step there (both found by step_on).
-    static bool locate(DomainPoint p, const std::array<std::uint32_t, 3>& k, int& j, std::uint32_t& step) {
+    static bool locate(uniform::Point p, const std::array<std::uint32_t, 3>& k, int& j, std::uint32_t& step) {
         for (j = 0; j < 3; ++j) {
             const int s = step_on(p, j, k[j]);
             if (s >= 0) return step = static_cast<std::uint32_t>(s), true;
@@ -447,12 +453,14 @@ class UniformSplit {
     // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
     // written at their numbers, the indices renumbered in place.
     void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        std::array<DomainPoint, uniform_split_detail::bounds.vertices> point;    // local, then on the root
+        std::array<uniform::Point, uniform_split_detail::bounds.vertices> point;       // local
+        std::array<uniform::SplitPoint, uniform_split_detail::bounds.vertices> mapped; // on the root
         std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number; // local vertex -> global
         const UniformPatch p = leaf_patch(s);
         const Counts n = p.counts();
         const std::span<std::uint32_t> indices = w.indices.subspan(w.t, n.index_count());
-        p.emit(std::span<DomainPoint>(point.data(), n.vertices), indices); // sized by emit(): cannot refuse
+        p.emit(std::span<uniform::Point>(point.data(), n.vertices),
+               indices); // sized by emit(): cannot refuse
         // The leaf's own segments per edge equal its edges' counts (the same segments() walk).
         const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
                                              rounded(s.factor[2])};
@@ -464,8 +472,9 @@ class UniformSplit {
         }
         for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = w.next + (i - boundary);
         w.next += n.vertices - boundary;
-        map_in_place(s, std::span<DomainPoint>(point.data(), n.vertices));
-        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = point[i];
+        map_points(s, std::span<const uniform::Point>(point.data(), n.vertices),
+                   std::span<uniform::SplitPoint>(mapped.data(), n.vertices));
+        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = mapped[i];
         for (std::uint32_t& index : indices) index = number[index];
         w.t += n.index_count();
     }
