@@ -2,11 +2,13 @@
 // filled slot for slot with nothing written around them, and the walk's own checks (emit_checked, without
 // emit()'s comparison with counts()) refuse spans one vertex or one triangle short, or shorter, without a
 // write past them. Also built with -O2 -ffast-math (test_uniform_split_fast_math): counts() and emit() must
-// agree whatever the caller's flags.
+// agree whatever the caller's flags, and a NaN factor must still give 1 (uniform) and T0 (CP).
+#include <ctess/runtime/cp/line_state.hpp>
 #include <ctess/runtime/uniform/split.hpp>
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -57,6 +59,11 @@ std::vector<std::array<float, 3>> triples(std::uint32_t n) {
                                                {26.75f, 40.13f, 217.18f},
                                                {71, 104, 217},
                                                {250.68f, 184.88f, 217.37f}};
+    constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+    constexpr float inf_f = std::numeric_limits<float>::infinity();
+    for (const std::array<float, 3>& f :
+         {std::array<float, 3>{nan_f, 300, 1e30f}, {-inf_f, inf_f, 40}, {nan_f, 5, 5}})
+        cases.push_back(f);
     std::uint32_t state = 7 + n;
     for (int k = 0; k < 40; ++k) {
         std::array<float, 3> f{};
@@ -124,4 +131,20 @@ TEST_CASE("uniform split emit: the walk checks every write against the spans, no
                 REQUIRE(v.all_written());
                 REQUIRE(i.all_written());
             }
+}
+
+TEST_CASE("float factors: NaN gives 1 (CP: T0) and infinities clamp, whatever the flags",
+          "[uniform][split][bounds]") {
+    constexpr float nan_f = std::numeric_limits<float>::quiet_NaN();
+    constexpr float inf_f = std::numeric_limits<float>::infinity();
+    volatile float nan_v = nan_f, inf_v = inf_f; // read at run time, not folded
+    CHECK(ctess::rt::uniform_factor(nan_v, 16) == 1);
+    CHECK(ctess::rt::uniform_factor(-nan_v, 16) == 1);
+    CHECK(ctess::rt::uniform_factor(inf_v, 16) == 16);
+    CHECK(ctess::rt::uniform_factor(-inf_v, 16) == 1);
+    const UniformSplit split(ctess::rt::uniform_tables_16, nan_v, inf_v, -inf_v);
+    CHECK(split.factors() == std::array<double, 3>{1, 256, 1});
+    CHECK(ctess::rt::line_state(nan_v, 64) == ctess::cp::LineState{0, 0});
+    CHECK(ctess::rt::line_state(-nan_v, 64) == ctess::cp::LineState{0, 0});
+    CHECK(ctess::rt::line_state(inf_v, 64) == ctess::rt::line_state(64.0f, 64));
 }

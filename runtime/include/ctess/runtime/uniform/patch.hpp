@@ -42,7 +42,9 @@ using UniformTriangle = std::array<std::uint32_t, 3>;
 
 // A factor rounded and clamped to [1, max_factor] as documented above.
 constexpr std::uint32_t uniform_factor(float f, std::uint32_t max_factor) noexcept {
-    if (!(f >= 1.5f)) return 1u; // NaN, -inf, negatives, zero, [0, 1.5)
+    // NaN from the bits first: under -ffinite-math-only !(f >= 1.5f) may compile as f < 1.5f, false for NaN.
+    if ((std::bit_cast<std::uint32_t>(f) & 0x7FFFFFFFu) > 0x7F800000u) return 1u;
+    if (!(f >= 1.5f)) return 1u; // -inf, negatives, zero, [0, 1.5)
     if (!(f < static_cast<float>(max_factor) - 0.5f)) return max_factor;
     return static_cast<std::uint32_t>(f + 0.5f);
 }

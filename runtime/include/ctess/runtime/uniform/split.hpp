@@ -32,7 +32,13 @@
 //   a disk, B the root's boundary segments). Below N it is UniformPatch's own numbering.
 //
 // Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()
-// traverses again and returns false (writing nothing) when a span is too small. Every walk keeps its split
+// traverses again and returns false (writing nothing) when a span is shorter than counts(); during its walk
+// it checks every leaf and every welded vertex number against the spans too, and returns false rather than
+// write past one. Every decision (factor sanitising, the dice limit and an edge's pieces, rounding, child
+// factors, segments, the walks, longest_edge) is out of line in runtime/src/uniform/split.cpp, compiled with
+// -ffp-contract=off -fno-fast-math (ctess::uniform_core): in header code the constructor's count and emit()'s
+// walk were compiled with the caller's flags in different inlining contexts, and under -ffast-math they could
+// decide an edge differently (§3.5; docs/api.md, "Crack-free evaluation"). Every walk keeps its split
 // pattern's points on the stack per split level (two levels at most); the shared layout's emit() also keeps
 // one pattern-sized set of arrays per level and one for the leaf: with g++ 12 -O2 about 1.5 KB per level of
 // a walk (4.6 KB in all) and about 13.3 KB for the shared layout's emit() (5.6 KB per split level, 2.1 KB
