@@ -7,7 +7,7 @@ set(CTESS_INSTALL_SHADERDIR ${CMAKE_INSTALL_DATADIR}/ctess/shaders)
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/constexpr/ctess ${PROJECT_SOURCE_DIR}/runtime/include/ctess
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
-install(TARGETS ctess_constexpr ctess_runtime_core ctess_runtime_64 ctess_runtime_256 ctess_uniform_runtime_11
+install(TARGETS ctess_constexpr ctess_runtime_core ctess_uniform_core ctess_runtime_64 ctess_runtime_256 ctess_uniform_runtime_11
                 ctess_uniform_runtime_16 ctess_uniform_runtime ctess_runtime
         EXPORT ctessTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

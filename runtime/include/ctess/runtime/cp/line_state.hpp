@@ -30,7 +30,11 @@ constexpr cp::LineState line_state_fixed(std::uint32_t f16) noexcept {
 }
 
 // cp::line_state(f, max_factor), the same results (NaN, f <= 1 -> T0; f >= max_factor -> the last token).
+// NaN is read from the bits first: under -ffinite-math-only the caller's compiler may fold f != f to false,
+// and a NaN factor must give T0 whatever the caller's flags (docs/api.md, "Crack-free evaluation"). Finite
+// factors take exact steps only (a product by 2^16, a truncation, an exact difference).
 constexpr cp::LineState line_state(float f, unsigned max_factor) noexcept {
+    if ((std::bit_cast<std::uint32_t>(f) & 0x7FFFFFFFu) > 0x7F800000u) return {0, 0};
     return line_state_fixed(cp::clamp_factor_16_16(f, max_factor));
 }
 

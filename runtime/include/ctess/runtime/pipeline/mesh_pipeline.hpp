@@ -10,7 +10,10 @@
 // barycentrics converted exactly to 2^-24 base weights. The uniform pattern needs the overloads that take a
 // UniformTableSet as well; the CP-only overloads refuse it (PipelineStatus::no_uniform_tables).
 //
-// Counts first, then fills (as OpenSubdiv's Bfr::Tessellation): nothing here allocates.
+// Counts first, then fills (as OpenSubdiv's Bfr::Tessellation): nothing here allocates. The factors, setup
+// and emit are out of line in ctess::runtime_core (src/pipeline/mesh_pipeline.cpp), compiled with
+// contraction and fast-math off, so that the counts and every shared edge's points are the same whatever
+// the caller's flags (docs/api.md, "Crack-free evaluation").
 //
 //   std::vector<PatchRecord> patches(mesh.triangle_count);
 //   PipelineTotals totals;
@@ -61,8 +64,8 @@ struct PipelineOptions {
 
 // One base triangle (patch). 48 words: the GPU's patch buffer uses this layout. Words 16-47 are the setup
 // block the GPU's emit passes read instead of redoing the patch setup (patch_setup_block.hpp). A uniform
-// patch has rotation 0, token[k] = the integer factor of base edge Ek, t16 zero, and the uniform setup words
-// (uniform_pipeline_patch.hpp).
+// patch has rotation 0, token[k] = uniform_factor(k), the integer factor of base edge Ek, t16 zero, and the
+// uniform setup words (uniform_pipeline_patch.hpp).
 struct PatchRecord {
     std::uint32_t rotation = 0;  // cp::Rotation::shift: pattern vertex v_k is base vertex (k + rotation) % 3
     std::uint32_t token[3] = {}; // pattern edges e0, e1, e2: CP line state
@@ -74,6 +77,10 @@ struct PatchRecord {
     float factor[3] = {}; // base edges E0 = w0w1, E1 = w1w2, E2 = w2w0, before clamping
     std::uint32_t reserved[2] = {};
     std::uint32_t setup[setup_word::words] = {};
+
+    // A uniform patch's integer factor of base edge Ek, kept in token[k] (the shaders read the same word).
+    constexpr std::uint32_t uniform_factor(unsigned k) const noexcept { return token[k]; }
+    constexpr void set_uniform_factor(unsigned k, std::uint32_t f) noexcept { token[k] = f; }
 };
 static_assert(sizeof(PatchRecord) == 192);
 
@@ -143,139 +150,28 @@ constexpr PipelineStatus check_pipeline_size(std::uint64_t patches, std::uint64_
     return PipelineStatus::ok;
 }
 
-namespace detail {
-
-inline Vec3 mesh_position(const MeshView& mesh, std::uint32_t v) {
-    const float* p = mesh.vertices + std::size_t{v} * mesh_vertex_floats;
-    return {p[0], p[1], p[2]};
-}
-
-inline SurfaceCorner mesh_corner(const MeshView& mesh, std::uint32_t v) {
-    const float* p = mesh.vertices + std::size_t{v} * mesh_vertex_floats;
-    return {{p[0], p[1], p[2]}, {p[3], p[4], p[5]}, {p[6], p[7]}, v};
-}
-
-inline bool base_triangle(const MeshView& mesh, std::uint32_t t, std::uint32_t (&w)[3]) {
-    for (unsigned k = 0; k < 3; ++k) w[k] = mesh.indices[std::size_t{t} * 3 + k];
-    return w[0] < mesh.vertex_count && w[1] < mesh.vertex_count && w[2] < mesh.vertex_count;
-}
-
-} // namespace detail
-
-namespace detail {
-
-// The unclamped factors of base edges E0, E1, E2 (endpoints in mesh-index order, so neighbours agree) and the
-// edges' squared lengths.
-inline void base_edges(const MeshView& mesh, const std::uint32_t (&w)[3], const DiceOptions& dice,
-                       float (&factor)[3], float (&length2)[3]) {
-    const float scale = dice.factor_scale();
-    for (unsigned k = 0; k < 3; ++k) {
-        const std::uint32_t i = w[k], j = w[(k + 1) % 3];
-        const Vec3 a = mesh_position(mesh, i < j ? i : j);
-        const Vec3 b = mesh_position(mesh, i < j ? j : i);
-        factor[k] = edge_tess_factor(a, b, dice.eye, scale);
-        const Vec3 d = b - a;
-        length2[k] = dot(d, d);
-    }
-}
-
-} // namespace detail
-
 // Patch t's rotation, line states, counts and setup block (first_vertex and first_triangle are left 0). The
 // CP pattern, whatever options.pattern says.
-inline PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, std::uint32_t t,
-                               const PipelineOptions& options) {
-    PatchRecord rec;
-    std::uint32_t w[3];
-    if (!detail::base_triangle(mesh, t, w)) return rec;
-    float length2[3];
-    detail::base_edges(mesh, w, options.dice, rec.factor, length2);
-    const cp::Rotation rot = cp::smallest_edge_rotation(length2[0], length2[1], length2[2]);
-    rec.rotation = rot.shift;
-    cp::LineState s[3];
-    for (unsigned k = 0; k < 3; ++k) {
-        s[k] = cp::clamp_line_state(cp::line_state(rec.factor[(k + rot.shift) % 3], tables.max_factor),
-                                    tables.max_factor);
-        rec.token[k] = s[k].token;
-        rec.t16[k] = s[k].t16;
-    }
-    // One CpPatchSetup gives both the counts and the block.
-    const PatchSetupBlock block = patch_setup_block(tables, s[0], s[1], s[2]);
-    rec.vertex_count = block.vertices;
-    rec.triangle_count = block.triangles;
-    for (unsigned k = 0; k < setup_word::words; ++k) rec.setup[k] = block.word[k];
-    return rec;
-}
+PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, std::uint32_t t,
+                        const PipelineOptions& options);
 
 // The pipeline's uniform patches: one vertex per position (the shaders have no provoking copies for uniform),
 // counter-clockwise as the base triangles.
 inline constexpr PatchOptions uniform_pipeline_options{Layout::shared, Winding::ccw};
 
-// Patch t's uniform record: rotation 0, token[k] = the rounded and clamped factor of base edge Ek, counts and
-// the uniform setup words.
-inline PatchRecord setup_uniform_patch(const UniformTableSet& tables, const MeshView& mesh, std::uint32_t t,
-                                       const PipelineOptions& options) {
-    PatchRecord rec;
-    std::uint32_t w[3];
-    if (!detail::base_triangle(mesh, t, w)) return rec;
-    float length2[3];
-    detail::base_edges(mesh, w, options.dice, rec.factor, length2);
-    for (unsigned k = 0; k < 3; ++k) rec.token[k] = uniform_factor(rec.factor[k], tables.max_factor);
-    const UniformPatch patch(tables, {rec.token[0], rec.token[1], rec.token[2]}, uniform_pipeline_options);
-    rec.vertex_count = patch.counts().vertices;
-    rec.triangle_count = patch.counts().triangles;
-    uniform_setup_words(rec.setup, patch);
-    return rec;
-}
-
-namespace detail {
-
-inline PipelineStatus check_pattern(const UniformTableSet* uniform, const PipelineOptions& options) {
-    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
-        return PipelineStatus::bad_option;
-    if (options.pattern == Pattern::uniform && uniform == nullptr) return PipelineStatus::no_uniform_tables;
-    return PipelineStatus::ok;
-}
-
-inline PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet* uniform,
-                                    const MeshView& mesh, const PipelineOptions& options,
-                                    std::span<PatchRecord> patches, PipelineTotals& totals) {
-    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_pattern(uniform, options); s != PipelineStatus::ok) return s;
-    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
-        return s;
-    std::uint64_t vertices = 0, triangles = 0;
-    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        PatchRecord rec = options.pattern == Pattern::uniform
-                              ? setup_uniform_patch(*uniform, mesh, t, options)
-                              : setup_patch(tables, mesh, t, options);
-        rec.first_vertex = static_cast<std::uint32_t>(vertices);
-        rec.first_triangle = static_cast<std::uint32_t>(triangles);
-        vertices += rec.vertex_count;
-        triangles += rec.triangle_count;
-        if (const PipelineStatus s = check_pipeline_size(0, vertices, triangles); s != PipelineStatus::ok)
-            return s;
-        patches[t] = rec;
-    }
-    totals = {static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(triangles)};
-    return PipelineStatus::ok;
-}
-
-} // namespace detail
+// Patch t's uniform record: rotation 0, uniform_factor(k) = the rounded and clamped factor of base edge Ek,
+// counts and the uniform setup words.
+PatchRecord setup_uniform_patch(const UniformTableSet& tables, const MeshView& mesh, std::uint32_t t,
+                                const PipelineOptions& options);
 
 // Every patch's record, with the exclusive prefix sums and the totals. Stops at the first patch that takes a
 // total past its limit (the records before it are written, totals is left unchanged).
-inline PipelineStatus setup_patches(const CpTableSet& tables, const MeshView& mesh,
-                                    const PipelineOptions& options, std::span<PatchRecord> patches,
-                                    PipelineTotals& totals) {
-    return detail::setup_patches(tables, nullptr, mesh, options, patches, totals);
-}
+PipelineStatus setup_patches(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
+                             std::span<PatchRecord> patches, PipelineTotals& totals);
 // The same with the uniform tables, for PipelineOptions::pattern = Pattern::uniform.
-inline PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet& uniform,
-                                    const MeshView& mesh, const PipelineOptions& options,
-                                    std::span<PatchRecord> patches, PipelineTotals& totals) {
-    return detail::setup_patches(tables, &uniform, mesh, options, patches, totals);
-}
+PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
+                             const PipelineOptions& options, std::span<PatchRecord> patches,
+                             PipelineTotals& totals);
 
 inline CpPatch patch_of(const CpTableSet& tables, const PatchRecord& rec) {
     return CpPatch(tables, cp::LineState{rec.token[0], rec.t16[0]}, cp::LineState{rec.token[1], rec.t16[1]},
@@ -283,122 +179,23 @@ inline CpPatch patch_of(const CpTableSet& tables, const PatchRecord& rec) {
 }
 
 inline UniformPatch uniform_patch_of(const UniformTableSet& tables, const PatchRecord& rec) {
-    return UniformPatch(tables, {rec.token[0], rec.token[1], rec.token[2]}, uniform_pipeline_options);
+    return UniformPatch(tables, {rec.uniform_factor(0), rec.uniform_factor(1), rec.uniform_factor(2)},
+                        uniform_pipeline_options);
 }
-
-namespace detail {
-// The output vertex of exact base weights (w1, w2) = (base.u, base.v), units of cp::fixed_one.
-inline TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base,
-                                 const SurfaceOptions& surface) {
-    const std::uint32_t w[3] = {cp::fixed_one - base.u - base.v, base.u, base.v};
-    const SurfacePoint s = evaluate_surface(corner, w, surface);
-    return {base.u,
-            base.v,
-            {s.position.x, s.position.y, s.position.z},
-            {s.normal.x, s.normal.y, s.normal.z},
-            {s.uv[0], s.uv[1]}};
-}
-} // namespace detail
 
 // Vertex i of a patch: exact base weights, then the surface.
-inline TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const SurfaceCorner (&corner)[3],
-                               std::uint32_t i, const SurfaceOptions& surface) {
-    return detail::surface_vertex(
-        corner, cp::to_base_point(cp::Rotation{static_cast<std::uint8_t>(rec.rotation)}, patch.vertex(i)),
-        surface);
-}
-
-namespace detail {
-
-// The counts a record must have: its pattern's, or none for a culled patch; false when the record cannot be
-// one setup_patches wrote.
-inline bool record_counts(const CpTableSet& tables, const UniformTableSet* uniform, const PatchRecord& rec,
-                          bool culled, Pattern pattern, Counts& counts) {
-    counts = {};
-    if (pattern == Pattern::cp) {
-        if (rec.rotation > 2) return false;
-        if (!culled) counts = patch_of(tables, rec).counts();
-        return true;
-    }
-    if (culled) return true;
-    if (rec.rotation != 0) return false;
-    for (unsigned k = 0; k < 3; ++k)
-        if (rec.token[k] < 1 || rec.token[k] > uniform->max_factor || rec.t16[k] != 0) return false;
-    counts = uniform_patch_of(*uniform, rec).counts();
-    return true;
-}
-
-inline PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* uniform,
-                                const MeshView& mesh, const PipelineOptions& options,
-                                std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
-                                std::span<std::uint32_t> indices) {
-    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_pattern(uniform, options); s != PipelineStatus::ok) return s;
-    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
-        return s;
-    std::uint64_t vertex_sum = 0, triangle_sum = 0;
-    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const PatchRecord& rec = patches[t];
-        std::uint32_t w[3];
-        const bool culled = !base_triangle(mesh, t, w);
-        Counts counts;
-        if (!record_counts(tables, uniform, rec, culled, options.pattern, counts) ||
-            rec.first_vertex != vertex_sum || rec.first_triangle != triangle_sum ||
-            rec.vertex_count != counts.vertices || rec.triangle_count != counts.triangles)
-            return PipelineStatus::bad_patch_record;
-        vertex_sum += rec.vertex_count;
-        triangle_sum += rec.triangle_count;
-        if (const PipelineStatus s = check_pipeline_size(0, vertex_sum, triangle_sum);
-            s != PipelineStatus::ok)
-            return s;
-    }
-    if (vertex_sum > vertices.size() || 3 * triangle_sum > indices.size())
-        return PipelineStatus::span_too_small;
-    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const PatchRecord& rec = patches[t];
-        std::uint32_t w[3];
-        if (!base_triangle(mesh, t, w) || rec.vertex_count == 0) continue;
-        const SurfaceCorner corner[3] = {mesh_corner(mesh, w[0]), mesh_corner(mesh, w[1]),
-                                         mesh_corner(mesh, w[2])};
-        std::uint32_t* out = indices.data() + 3 * std::size_t{rec.first_triangle};
-        if (options.pattern == Pattern::uniform) {
-            const UniformPatch patch = uniform_patch_of(*uniform, rec);
-            for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
-                vertices[rec.first_vertex + i] =
-                    surface_vertex(corner, uniform_base_point(patch, i), options.surface);
-            for (std::uint32_t p = 0; p < rec.triangle_count; ++p) {
-                const UniformTriangle tri = patch.triangle(p);
-                for (unsigned k = 0; k < 3; ++k) out[3 * p + k] = rec.first_vertex + tri[k];
-            }
-            continue;
-        }
-        const CpPatch patch = patch_of(tables, rec);
-        for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
-            vertices[rec.first_vertex + i] = patch_vertex(patch, rec, corner, i, options.surface);
-        for (std::uint32_t p = 0; p < rec.triangle_count; ++p) {
-            const CpTriangle tri = patch.triangle(p);
-            for (unsigned k = 0; k < 3; ++k) out[3 * p + k] = rec.first_vertex + tri[k];
-        }
-    }
-    return PipelineStatus::ok;
-}
-
-} // namespace detail
+TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const SurfaceCorner (&corner)[3],
+                        std::uint32_t i, const SurfaceOptions& surface);
 
 // Every vertex and triangle of the mesh, at the records' offsets. Checks every record first (its counts are
 // its pattern's counts, its offsets the exclusive prefix sums, a culled patch is empty) and the spans; on
 // any failure writes nothing.
-inline PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh,
-                                const PipelineOptions& options, std::span<const PatchRecord> patches,
-                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
-    return detail::emit_mesh(tables, nullptr, mesh, options, patches, vertices, indices);
-}
+PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
+                         std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
+                         std::span<std::uint32_t> indices);
 // The same with the uniform tables, for PipelineOptions::pattern = Pattern::uniform.
-inline PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
-                                const MeshView& mesh, const PipelineOptions& options,
-                                std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
-                                std::span<std::uint32_t> indices) {
-    return detail::emit_mesh(tables, &uniform, mesh, options, patches, vertices, indices);
-}
+PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
+                         const PipelineOptions& options, std::span<const PatchRecord> patches,
+                         std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
 
 } // namespace ctess::rt

@@ -1,10 +1,10 @@
-// Uniform-density splitting above the table (algorithm.md §3.5, Karis 2026): a patch whose factors exceed
+// Uniform-density splitting above the table (docs/algorithm.md §3.5, seed 001): a patch whose factors exceed
 // the table's maximum N is split with the table's own pattern for the split factors, and each subpatch is
 // diced (or split once more) with the table.
 //
 // * Factors: NaN, -inf, zero and negatives give 1; each factor is rounded to the nearest integer (halves up)
 //   and clamped to [1, N^2] (+inf and huge values give N^2), which two levels of splitting always reach.
-// * SplitFactor S = min(ceil(T / N), N) per edge (Karis: min(TessFactor / MaxDiceFactor, MaxSplitFactor),
+// * SplitFactor S = min(ceil(T / N), N) per edge (seed 001: min(TessFactor / MaxDiceFactor, MaxSplitFactor),
 //   rounded up so that each sub-edge's factor T / S is at most N).
 // * A subpatch edge's factor is the intrinsic length of that edge in the metric of its parent (the parent's
 //   factors as side lengths): on a parent edge that is T_i times the edge's parameter span, i.e. a function
@@ -32,16 +32,25 @@
 //   a disk, B the root's boundary segments). Below N it is UniformPatch's own numbering.
 //
 // Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()
-// traverses again and returns false (writing nothing) when a span is too small. Every walk keeps its split
+// traverses again and returns false (writing nothing) when a span is shorter than counts(); during its walk
+// it checks every leaf and every welded vertex number against the spans too, and returns false rather than
+// write past one. Every decision (factor sanitising, the dice limit and an edge's pieces, rounding, child
+// factors, segments, the walks, longest_edge) is out of line in runtime/src/uniform/split.cpp, compiled with
+// -ffp-contract=off -fno-fast-math (ctess::uniform_core): in header code the constructor's count and emit()'s
+// walk were compiled with the caller's flags in different inlining contexts, and under -ffast-math they could
+// decide an edge differently (§3.5; docs/api.md, "Crack-free evaluation"). Every walk keeps its split
 // pattern's points on the stack per split level (two levels at most); the shared layout's emit() also keeps
-// one pattern-sized set of arrays per level and one for the leaf. Stack use is therefore a constant bounded
-// by the largest stored pattern, whatever the factors (sizes measured in docs/algorithm.md §3.5).
+// one pattern-sized set of arrays per level and one for the leaf: with g++ 12 -O2 about 1.5 KB per level of
+// a walk (4.6 KB in all) and about 13.3 KB for the shared layout's emit() (5.6 KB per split level, 2.1 KB
+// for the leaf).
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <type_traits>
 
 #include <ctess/core/counts.hpp>
 #include <ctess/core/domain_point.hpp>
@@ -61,24 +70,13 @@ inline constexpr double uniform_split_interior_tolerance = 1.433;
 inline constexpr double uniform_split_strict_tolerance = 1.0;
 inline constexpr std::uint32_t uniform_split_fixed_one = uniform::fixed_one * uniform::fixed_one;
 
+class UniformSplit;
 namespace uniform_split_detail {
-// The largest stored pattern's vertices and interior edges (3T - B) / 2: the shared layout's per-level
-// arrays.
-struct PatternBounds {
-    std::uint32_t vertices = 0, interior_edges = 0;
-};
-constexpr PatternBounds pattern_bounds() {
-    PatternBounds b;
-    for (unsigned p = 0; p < uniform::data::pattern_count; ++p) {
-        const uniform::data::PatternRecord& r = uniform::data::patterns[p];
-        const std::uint32_t boundary = r.f0 + r.f1 + r.f2;
-        const std::uint32_t triangles = uniform::triangle_count(boundary, r.interior);
-        b.vertices = std::max<std::uint32_t>(b.vertices, boundary + r.interior);
-        b.interior_edges = std::max<std::uint32_t>(b.interior_edges, (3 * triangles - boundary) / 2);
-    }
-    return b;
-}
-inline constexpr PatternBounds bounds = pattern_bounds();
+// emit()'s walk without its up-front comparison of the spans with counts(): every write is still checked
+// against the spans, and false comes back on any shortfall (the spans then hold a partial output). For the
+// tests of those checks; use emit().
+bool emit_checked(const UniformSplit& split, std::span<uniform::SplitPoint> vertices,
+                  std::span<std::uint32_t> indices) noexcept;
 } // namespace uniform_split_detail
 
 class UniformSplit {
@@ -87,29 +85,7 @@ class UniformSplit {
     // interior_tolerance: the dice limit of edges inside the root patch, in units of N; clamped to
     // [uniform_split_strict_tolerance, uniform_split_interior_tolerance] (NaN gives the strict 1).
     UniformSplit(const UniformTableSet& tables, float f0, float f1, float f2, PatchOptions options = {},
-                 double interior_tolerance = uniform_split_interior_tolerance) noexcept
-        : tables_(&tables), options_(options) {
-        const std::uint32_t n = tables.max_factor;
-        tolerance_ = !(interior_tolerance > uniform_split_strict_tolerance) ? uniform_split_strict_tolerance
-                     : interior_tolerance > uniform_split_interior_tolerance
-                         ? uniform_split_interior_tolerance
-                         : interior_tolerance;
-        const float top = static_cast<float>(n * n);
-        for (int i = 0; i < 3; ++i) {
-            const float f = i == 0 ? f0 : i == 1 ? f1 : f2;
-            root_[i] = !(f >= 1.5f) ? 1.0 : !(f < top - 0.5f) ? double(n * n) : std::floor(double(f) + 0.5);
-        }
-        Counter c;
-        walk(c);
-        counts_ = c.counts;
-        subpatches_ = c.subpatches;
-        depth_ = c.depth;
-        if (welded() && depth_ > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
-            std::uint32_t boundary = 0;
-            for (int i = 0; i < 3; ++i) boundary += segments(root_[i], 0);
-            counts_.vertices = 1 + (counts_.triangles + boundary) / 2;
-        }
-    }
+                 double interior_tolerance = uniform_split_interior_tolerance) noexcept;
 
     Counts counts() const noexcept { return counts_; }
     std::uint32_t subpatch_count() const noexcept { return subpatches_; }
@@ -126,431 +102,31 @@ class UniformSplit {
         std::array<std::array<std::int64_t, 2>, 3> corners;
         std::uint32_t depth;
     };
-    // Calls f(const Leaf&) for every diced subpatch in output order.
+    // Calls f(const Leaf&) for every diced subpatch in output order. The walk and its decisions are out of
+    // line (split.cpp); only the call to f is in the caller's code.
+    using LeafCallback = void (*)(void* context, const Leaf& leaf);
+    void for_each_leaf(LeafCallback callback, void* context) const noexcept;
     template <class F>
     void for_each_leaf(F&& f) const noexcept {
-        LeafCaller<F> c{f};
-        walk(c);
+        using Fn = std::remove_reference_t<F>;
+        for_each_leaf([](void* c, const Leaf& leaf) { (*static_cast<Fn*>(c))(leaf); },
+                      const_cast<void*>(static_cast<const void*>(std::addressof(f))));
     }
 
     // The longest edge of the output's triangles in the root patch's intrinsic metric (§3.1: the rounded
     // root factors as side lengths; negative squares clamp at 0), from the emitted positions.
-    double longest_edge() const noexcept {
-        EdgeMeter m;
-        walk(m);
-        return m.longest;
-    }
+    double longest_edge() const noexcept;
 
     // Writes the vertices (units of uniform_split_fixed_one) and triangles, welded in the shared layout.
-    // Returns false and writes nothing when either span is too small.
-    bool emit(std::span<uniform::SplitPoint> vertices, std::span<std::uint32_t> indices) const noexcept {
-        if (vertices.size() < counts_.vertices || indices.size() < counts_.index_count()) return false;
-        if (welded() && depth_ > 0) {
-            Welder w{vertices, indices};
-            weld_root(w);
-        } else {
-            Writer w{vertices, indices};
-            walk(w);
-        }
-        return true;
-    }
+    // Returns false and writes nothing when either span is shorter than counts(). Every write is checked
+    // against the spans as well, never only against counts(): should the walk disagree with counts(), emit()
+    // returns false with a partial output inside the spans and nothing past them.
+    bool emit(std::span<point_type> vertices, std::span<std::uint32_t> indices) const noexcept;
 
   private:
-    using Point = std::array<std::int64_t, 2>; // units of 65534^2
-    struct Sub {
-        std::array<Point, 3> corner;
-        std::array<double, 3> factor;
-        std::uint32_t depth;
-    };
-    struct Counter {
-        Counts counts;
-        std::uint32_t subpatches = 0, depth = 0;
-        void patch(const UniformPatch& p, const Sub& s, const UniformSplit&) {
-            counts.vertices += p.counts().vertices;
-            counts.triangles += p.counts().triangles;
-            ++subpatches;
-            depth = s.depth > depth ? s.depth : depth;
-        }
-    };
-    struct Writer {
-        std::span<uniform::SplitPoint> vertices;
-        std::span<std::uint32_t> indices;
-        std::uint32_t v = 0, t = 0;
-        // The leaf's bulk emit into a stack buffer (indices already offset; emit() sized the spans, so it
-        // cannot refuse), then its points mapped into the root.
-        void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
-            const Counts n = p.counts();
-            std::array<uniform::Point, uniform_split_detail::bounds.vertices> local;
-            p.emit(std::span<uniform::Point>(local.data(), n.vertices), indices.subspan(t, n.index_count()),
-                   v);
-            self.map_points(s, std::span<const uniform::Point>(local.data(), n.vertices),
-                            vertices.subspan(v, n.vertices));
-            v += n.vertices, t += n.index_count();
-        }
-    };
-
-    template <class F>
-    struct LeafCaller {
-        F& f;
-        void patch(const UniformPatch& p, const Sub& s, const UniformSplit&) {
-            f(Leaf{p, s.factor, s.corner, s.depth});
-        }
-    };
-    struct EdgeMeter {
-        double longest = 0;
-        void patch(const UniformPatch& p, const Sub& s, const UniformSplit& self) {
-            constexpr double one = uniform_split_fixed_one;
-            for (std::uint32_t k = 0; k < p.counts().triangles; ++k) {
-                const UniformTriangle tri = p.triangle(k);
-                for (int e = 0; e < 3; ++e) {
-                    const Point a = self.map(s, p.vertex(tri[e])),
-                                b = self.map(s, p.vertex(tri[(e + 1) % 3]));
-                    const double len = uniform::intrinsic_length(self.root_, double(b[0] - a[0]) / one,
-                                                                 double(b[1] - a[1]) / one);
-                    longest = len > longest ? len : longest;
-                }
-            }
-        }
-    };
-
-    bool welded() const noexcept { return options_.layout == Layout::shared; }
-
-    // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded (half
-    // up) at depth 2 from an exact integer sum.
-    Point map(const Sub& s, uniform::Point d) const noexcept {
-        const std::int64_t w = std::int64_t{uniform::fixed_one} - d.u - d.v;
-        Point r{};
-        for (int k = 0; k < 2; ++k) {
-            const std::int64_t sum = w * s.corner[0][k] + std::int64_t{d.u} * s.corner[1][k] +
-                                     std::int64_t{d.v} * s.corner[2][k]; // units 65534^3 at most 2^63
-            r[k] = (sum + std::int64_t{uniform::fixed_one} / 2) / std::int64_t{uniform::fixed_one};
-        }
-        return r;
-    }
-
-    // map() of every point of in, written to out (as long as in). When every corner is a multiple of 65534
-    // (always at depth 0 and 1: a corner there is the root's pattern point times 65534) the exact sum divided
-    // by 65534 is w a0 + u a1 + v a2 = 65534 a0 + u (a1 - a0) + v (a2 - a0) with a = corner / 65534, a point
-    // of the root below 65534^2 < 2^32: unsigned 32-bit arithmetic (modulo 2^32, exact) gives the same
-    // integers.
-    void map_points(const Sub& s, std::span<const uniform::Point> in,
-                    std::span<uniform::SplitPoint> out) const noexcept {
-        constexpr std::int64_t unit = uniform::fixed_one;
-        bool multiples = true;
-        for (const Point& c : s.corner) multiples = multiples && c[0] % unit == 0 && c[1] % unit == 0;
-        if (!multiples) {
-            for (std::size_t i = 0; i < in.size(); ++i) {
-                const Point q = map(s, in[i]);
-                out[i] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
-            }
-            return;
-        }
-        std::uint32_t base[2], du[2], dv[2];
-        for (int k = 0; k < 2; ++k) {
-            const auto a0 = static_cast<std::uint32_t>(s.corner[0][k] / unit),
-                       a1 = static_cast<std::uint32_t>(s.corner[1][k] / unit),
-                       a2 = static_cast<std::uint32_t>(s.corner[2][k] / unit);
-            base[k] = a0 * uniform::fixed_one, du[k] = a1 - a0, dv[k] = a2 - a0;
-        }
-        for (std::size_t i = 0; i < in.size(); ++i)
-            out[i] = {base[0] + in[i].u * du[0] + in[i].v * dv[0],
-                      base[1] + in[i].u * du[1] + in[i].v * dv[1]};
-    }
-
-    // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
-    static double edge_factor(const std::array<double, 3>& f, uniform::Point a, uniform::Point b) noexcept {
-        const double one = uniform::fixed_one;
-        return uniform::intrinsic_length(f, (double(b.u) - double(a.u)) / one,
-                                         (double(b.v) - double(a.v)) / one);
-    }
-
-    std::uint32_t rounded(double t) const noexcept {
-        const std::uint32_t n = tables_->max_factor;
-        if (!(t >= 1.5)) return 1u;
-        if (!(t < double(n) - 0.5)) return n;
-        return static_cast<std::uint32_t>(t + 0.5);
-    }
-
-    template <class Visitor>
-    void walk(Visitor& visitor) const noexcept {
-        visit(visitor, root());
-    }
-    Sub root() const noexcept {
-        const std::int64_t one = uniform_split_fixed_one;
-        return Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_, 0};
-    }
-
-    // The dice limit of an edge at this depth: at the root N (+ rounding), below it tolerance x N (only edges
-    // inside the root patch can exceed N there: a sub-edge of a root edge is at most N).
-    double dice_limit(std::uint32_t depth) const noexcept {
-        const double n = tables_->max_factor;
-        return depth == 0 ? n + 0.5 : n * tolerance_;
-    }
-
-    // How many pieces a split divides an edge into: a function of the edge's own factor and depth only, so
-    // the two patches that share the edge agree whether each of them is diced or split. An edge within the
-    // dice limit stays whole (its patch may still split because of another edge).
-    std::uint32_t edge_pieces(double factor, std::uint32_t depth) const noexcept {
-        const std::uint32_t n = tables_->max_factor;
-        if (factor < dice_limit(depth)) return 1u;
-        const std::uint32_t t = static_cast<std::uint32_t>(std::floor(factor + 0.5));
-        const std::uint32_t k = (t + n - 1) / n;
-        return k < 1 ? 1 : k > n ? n : k;
-    }
-
-    // Node s's split factors, or all 1 when it is diced (a leaf).
-    std::array<std::uint32_t, 3> split_of(const Sub& s) const noexcept {
-        std::array<std::uint32_t, 3> split{1, 1, 1};
-        if (s.depth == uniform_split_max_depth) return split;
-        for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth);
-        return split;
-    }
-    static bool is_leaf(const std::array<std::uint32_t, 3>& split) noexcept {
-        return split[0] == 1 && split[1] == 1 && split[2] == 1;
-    }
-    UniformPatch leaf_patch(const Sub& s) const noexcept {
-        return UniformPatch(*tables_, {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])},
-                            options_);
-    }
-    // A split node's pattern with its vertices read once (vertex(i) divides on every call); its stack
-    // share is the pattern-sized point array.
-    struct SplitPattern {
-        UniformPatch patch;
-        std::array<uniform::Point, uniform_split_detail::bounds.vertices> point;
-        explicit SplitPattern(const UniformPatch& p) noexcept : patch(p) {
-            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) point[i] = p.vertex(i);
-        }
-    };
-    SplitPattern split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
-        return SplitPattern(UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw}));
-    }
-    // The subpatch of s on the split pattern's triangle tri (counter-clockwise).
-    Sub child(const Sub& s, const SplitPattern& pattern, const UniformTriangle& tri) const noexcept {
-        const uniform::Point a = pattern.point[tri[0]], b = pattern.point[tri[1]], c = pattern.point[tri[2]];
-        Sub c_sub;
-        c_sub.depth = s.depth + 1;
-        c_sub.corner = {map(s, a), map(s, b), map(s, c)}; // exact at depth 0 (root corners are multiples)
-        c_sub.factor = {child_edge_factor(s, a, b), child_edge_factor(s, b, c), child_edge_factor(s, a, c)};
-        return c_sub;
-    }
-
-    template <class Visitor>
-    void visit(Visitor& visitor, const Sub& s) const noexcept {
-        const std::array<std::uint32_t, 3> split = split_of(s);
-        if (is_leaf(split)) {
-            visitor.patch(leaf_patch(s), s, *this);
-            return;
-        }
-        const SplitPattern pattern = split_pattern(split);
-        for (std::uint32_t k = 0; k < pattern.patch.counts().triangles; ++k)
-            visit(visitor, child(s, pattern, pattern.patch.triangle(k)));
-    }
-
-    // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
-    // the value the neighbour across it sees; any other child edge is measured in the parent's metric.
-    static double child_edge_factor(const Sub& s, uniform::Point a, uniform::Point b) noexcept {
-        auto corner = [](uniform::Point p) -> int {
-            constexpr std::uint32_t one = uniform::fixed_one;
-            if (p.u == 0 && p.v == 0) return 0;
-            if (p.u == one && p.v == 0) return 1;
-            if (p.u == 0 && p.v == one) return 2;
-            return -1;
-        };
-        const int ca = corner(a), cb = corner(b);
-        if (ca >= 0 && cb >= 0 && ca != cb) {
-            // Parent edges: 0 = v0v1 (factor[0]), 1 = v1v2 (factor[1]), 2 = v2v0 (factor[2]).
-            const int lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
-            return s.factor[lo == 0 && hi == 1 ? 0 : lo == 1 && hi == 2 ? 1 : 2];
-        }
-        return edge_factor(s.factor, a, b);
-    }
-
-    // --- The shared layout (§3.5): one vertex per exact position, numbered by the node that owns it. ---
-
-    // The final segments on an edge of factor f of a node at `depth`: a function of the edge alone, the same
-    // walk as visit() (a piece of a split edge is f times its symmetric parameter span, as child_edge_factor
-    // computes it on any of the parent's edges, bit for bit).
-    std::uint32_t segments(double f, std::uint32_t depth) const noexcept {
-        const std::uint32_t k = depth >= uniform_split_max_depth ? 1u : edge_pieces(f, depth);
-        if (k == 1) return rounded(f);
-        std::uint32_t total = 0;
-        for (std::uint32_t s = 0; s < k; ++s) total += segments(piece_factor(f, k, s), depth + 1);
-        return total;
-    }
-    static double piece_factor(double f, std::uint32_t k, std::uint32_t s) noexcept {
-        return edge_factor({f, f, f}, uniform::Point{uniform::edge_parameter(s, k), 0},
-                           uniform::Point{uniform::edge_parameter(s + 1, k), 0});
-    }
-
-    // The points of one welded segment: at distance d (in segments) from its `first` end, d = 0 is first,
-    // d = n is last, anything between is base + d - 1.
-    struct Line {
-        std::uint32_t first = 0, last = 0, base = 0, n = 0;
-        std::uint32_t at(std::uint32_t d) const noexcept {
-            return d == 0 ? first : d == n ? last : base + d - 1;
-        }
-    };
-    // A node's edge as a stretch of a Line: its point i (from the edge's own start) is at distance
-    // origin + i (forward) or origin - i along the line; `count` segments.
-    struct EdgeRef {
-        Line line;
-        std::uint32_t origin = 0, count = 0;
-        bool forward = true;
-        std::uint32_t at(std::uint32_t i) const noexcept {
-            return line.at(forward ? origin + i : origin - i);
-        }
-        // The stretch between distances `from` and `to` along this edge.
-        EdgeRef piece(std::uint32_t from, std::uint32_t to) const noexcept {
-            return {line, forward ? origin + from : origin - from, to > from ? to - from : from - to,
-                    (to > from) == forward};
-        }
-    };
-    struct Welder {
-        std::span<uniform::SplitPoint> vertices;
-        std::span<std::uint32_t> indices;
-        std::uint32_t next = 0, t = 0; // the next interior number, the next index slot
-    };
-
-    // Step i of a boundary point p (local units of 65534) on edge j with k segments (e0: v = 0 from v0,
-    // e1: u + v = 1 from v1, e2: u = 0 from v0), or -1 when p is not on it. Parameters are i / k quantised
-    // (§3.2): far apart for k <= N, so rounding p's parameter * k recovers i exactly.
-    static int step_on(uniform::Point p, int j, std::uint32_t k) noexcept {
-        constexpr std::uint32_t one = uniform::fixed_one;
-        const bool on = j == 0 ? p.v == 0 : j == 1 ? p.u + p.v == one : p.u == 0;
-        if (!on) return -1;
-        const std::uint32_t t = j == 0 ? p.u : p.v;
-        return static_cast<int>((t * k + one / 2) / one);
-    }
-    // The edge of a node's side j that holds a boundary point, and its step there (both found by step_on).
-    static bool locate(uniform::Point p, const std::array<std::uint32_t, 3>& k, int& j, std::uint32_t& step) {
-        for (j = 0; j < 3; ++j) {
-            const int s = step_on(p, j, k[j]);
-            if (s >= 0) return step = static_cast<std::uint32_t>(s), true;
-        }
-        return false;
-    }
-
-    void weld_root(Welder& w) const noexcept {
-        // The root's corners 0, 1, 2, then the points of e0, e1, e2 in order: B numbers in all.
-        std::array<std::uint32_t, 3> n{};
-        for (int j = 0; j < 3; ++j) n[j] = segments(root_[j], 0);
-        const Line e0{0, 1, 3, n[0]}, e1{1, 2, 3 + n[0] - 1, n[1]}, e2{0, 2, 3 + n[0] - 1 + n[1] - 1, n[2]};
-        w.next = n[0] + n[1] + n[2];
-        const std::array<EdgeRef, 3> edges{EdgeRef{e0, 0, n[0], true}, EdgeRef{e1, 0, n[1], true},
-                                           EdgeRef{e2, 0, n[2], true}};
-        weld_visit(w, root(), edges);
-    }
-
-    void weld_visit(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        const std::array<std::uint32_t, 3> split = split_of(s);
-        if (is_leaf(split))
-            weld_leaf(w, s, edges);
-        else
-            weld_split(w, s, edges, split);
-    }
-
-    // A leaf's bulk emit: its points into a stack buffer, its triangles straight into the output; the
-    // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
-    // written at their numbers, the indices renumbered in place.
-    void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        std::array<uniform::Point, uniform_split_detail::bounds.vertices> point;       // local
-        std::array<uniform::SplitPoint, uniform_split_detail::bounds.vertices> mapped; // on the root
-        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number; // local vertex -> global
-        const UniformPatch p = leaf_patch(s);
-        const Counts n = p.counts();
-        const std::span<std::uint32_t> indices = w.indices.subspan(w.t, n.index_count());
-        p.emit(std::span<uniform::Point>(point.data(), n.vertices),
-               indices); // sized by emit(): cannot refuse
-        // The leaf's own segments per edge equal its edges' counts (the same segments() walk).
-        const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
-                                             rounded(s.factor[2])};
-        const std::uint32_t boundary = r[0] + r[1] + r[2];
-        for (std::uint32_t i = 0; i < boundary; ++i) {
-            int j = 0;
-            std::uint32_t step = 0;
-            number[i] = locate(point[i], r, j, step) ? edges[j].at(step) : 0;
-        }
-        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = w.next + (i - boundary);
-        w.next += n.vertices - boundary;
-        map_points(s, std::span<const uniform::Point>(point.data(), n.vertices),
-                   std::span<uniform::SplitPoint>(mapped.data(), n.vertices));
-        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = mapped[i];
-        for (std::uint32_t& index : indices) index = number[index];
-        w.t += n.index_count();
-    }
-
-    // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
-    void weld_split(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges,
-                    const std::array<std::uint32_t, 3>& split) const noexcept {
-        // pattern vertex -> global; every entry below the pattern's count is written before it is read
-        std::array<std::uint32_t, uniform_split_detail::bounds.vertices> number;
-        const SplitPattern pattern = split_pattern(split);
-        const auto& point = pattern.point;
-        // Distances (in final segments) of each split point along this node's edges.
-        std::array<std::array<std::uint32_t, uniform::data_max_factor + 1>, 3> offset{};
-        for (int j = 0; j < 3; ++j) {
-            offset[j][split[j]] = edges[j].count;
-            for (std::uint32_t p = 0; p + 1 < split[j]; ++p)
-                offset[j][p + 1] =
-                    offset[j][p] + segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
-        }
-        // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
-        const std::uint32_t boundary = split[0] + split[1] + split[2], all = pattern.patch.counts().vertices;
-        for (std::uint32_t i = 0; i < all; ++i) {
-            int j = 0;
-            std::uint32_t step = 0;
-            number[i] = i >= boundary                      ? w.next + (i - boundary)
-                        : locate(point[i], split, j, step) ? edges[j].at(offset[j][step])
-                                                           : 0;
-        }
-        w.next += all - boundary;
-        // Interior edges, each owned by its half-edge from the lower to the higher pattern vertex, numbered
-        // in triangle order; sorted by (lower, higher) to look up from either side.
-        struct Owned {
-            std::uint32_t key, base;
-        };
-        std::array<Owned, uniform_split_detail::bounds.interior_edges> owned; // the first owned_count used
-        std::uint32_t owned_count = 0;
-        auto along = [&](std::uint32_t a, std::uint32_t b, int& j, std::uint32_t& sa, std::uint32_t& sb) {
-            if (a >= boundary || b >= boundary) return false;
-            for (j = 0; j < 3; ++j) {
-                const int x = step_on(point[a], j, split[j]), y = step_on(point[b], j, split[j]);
-                if (x >= 0 && y >= 0) return sa = std::uint32_t(x), sb = std::uint32_t(y), true;
-            }
-            return false;
-        };
-        auto edge_segments = [&](std::uint32_t a, std::uint32_t b) {
-            return segments(child_edge_factor(s, point[a], point[b]), s.depth + 1);
-        };
-        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.patch.triangle(t);
-            for (int e = 0; e < 3; ++e) {
-                const std::uint32_t a = tri[e], b = tri[(e + 1) % 3];
-                int j = 0;
-                std::uint32_t sa = 0, sb = 0;
-                if (a > b || along(a, b, j, sa, sb)) continue;
-                owned[owned_count++] = {(a << 16) | b, w.next};
-                w.next += edge_segments(a, b) - 1;
-            }
-        }
-        std::sort(owned.begin(), owned.begin() + owned_count,
-                  [](const Owned& x, const Owned& y) { return x.key < y.key; });
-        auto edge_ref = [&](std::uint32_t a, std::uint32_t b) -> EdgeRef {
-            int j = 0;
-            std::uint32_t sa = 0, sb = 0;
-            if (along(a, b, j, sa, sb)) return edges[j].piece(offset[j][sa], offset[j][sb]);
-            const std::uint32_t lo = a < b ? a : b, hi = a < b ? b : a, n = edge_segments(lo, hi);
-            const Owned* o = std::lower_bound(owned.begin(), owned.begin() + owned_count, (lo << 16) | hi,
-                                              [](const Owned& x, std::uint32_t key) { return x.key < key; });
-            const Line line{number[lo], number[hi], o->base, n};
-            return a == lo ? EdgeRef{line, 0, n, true} : EdgeRef{line, n, n, false};
-        };
-        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.patch.triangle(t);
-            weld_visit(w, child(s, pattern, tri),
-                       {edge_ref(tri[0], tri[1]), edge_ref(tri[1], tri[2]), edge_ref(tri[0], tri[2])});
-        }
-    }
+    struct Impl; // split.cpp
+    friend bool uniform_split_detail::emit_checked(const UniformSplit&, std::span<uniform::SplitPoint>,
+                                                   std::span<std::uint32_t>) noexcept;
 
     const UniformTableSet* tables_;
     PatchOptions options_;
