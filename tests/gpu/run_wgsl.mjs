@@ -3,8 +3,8 @@
 // Backend: Dawn's OpenGL ES backend on Mesa's llvmpipe in compatibility mode, with EGL_PLATFORM=surfaceless
 // (Dawn's Vulkan backend rejects bookworm's lavapipe 22.3, docs/shaders.md). CTESS_DAWN_BACKEND
 // overrides the backend flag (e.g. "vulkan" on a machine with a newer driver).
-// CTESS_MAX_WORKGROUPS caps every dispatch (the passes stride over the rest; default 65535, the one-dispatch
-// limit); CTESS_COUNTS_ONLY=1 runs only the setup and prefix-sum passes and returns no outputs.
+// CTESS_MAX_WORKGROUPS caps every dispatch (the passes stride over the rest; default MAX_DISPATCH_WORKGROUPS,
+// the one-dispatch limit); CTESS_COUNTS_ONLY=1 runs only the setup and prefix-sum passes and returns no outputs.
 // Every layout number (params words, record and vertex words, workgroup sizes, limits) comes from the generated
 // ctess_mesh_<max>.layout.json (docs/shaders.md, "Generated constants"). File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message (also when the mesh's totals do
 // not fit in 32 bits: the prefix sum then writes 0xFFFFFFFF).
