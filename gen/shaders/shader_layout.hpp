@@ -23,7 +23,8 @@
 
 namespace ctess::gen {
 
-// The params buffer (binding 0), one u32 word each; floats as their bits (docs/shaders.md, "Bindings").
+// The params buffer (binding 0), one u32 word each; floats as their bits (docs/shaders.md, "Passes and
+// bindings").
 namespace param_word {
 inline constexpr std::uint32_t patch_count = 0;
 inline constexpr std::uint32_t surface = 1;      // rt::Surface
@@ -49,7 +50,7 @@ inline constexpr std::uint32_t totals_words = 2; // after the last record: total
 
 // The uniform-factor rule of rt::uniform_factor (runtime/include/ctess/runtime/uniform/patch.hpp), as the
 // shaders evaluate it in f32: below round_from gives 1, from clamp_from (= N - half) on gives N, else
-// u32(f + half). gen_shaders.cpp checks these against rt::uniform_factor at the boundaries for the configured
+// u32(f + half). gen_shaders.cpp checks them against rt::uniform_factor at the boundaries of the configured
 // N.
 inline constexpr float uniform_round_from = 1.5f;
 inline constexpr float uniform_round_half = 0.5f;
