@@ -565,12 +565,19 @@ SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha)
 }
 
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
-// rt::uniform_factor (runtime/include/ctess/runtime/uniform/patch.hpp), its thresholds generated from it: rounded to
-// the nearest integer (halves up), clamped to [1, UNIFORM_MAX_FACTOR]; NaN gives 1.
+// uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
+// bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
+// on give UNIFORM_MAX_FACTOR, else the nearest integer, halves up (UNIFORM_ROUND_FROM_BITS = 1.5f and
+// F32_INFINITY_BITS are generated from that function's checks).
 uint uniform_factor(float f) {
-    if ((floatBitsToUint(f) & 0x7FFFFFFFu) > 0x7F800000u || !(f >= UNIFORM_ROUND_FROM)) return 1u;
-    if (!(f < UNIFORM_CLAMP_FROM)) return UNIFORM_MAX_FACTOR;
-    return uint(f + UNIFORM_ROUND_HALF);
+    uint bits = floatBitsToUint(f);
+    if (bits < UNIFORM_ROUND_FROM_BITS || bits > F32_INFINITY_BITS) return 1u;
+    uint exponent = (bits >> 23) - 127u; // f in [2^exponent, 2^(exponent + 1)), exponent >= 0
+    if (exponent >= 23u) return UNIFORM_MAX_FACTOR;
+    uint mantissa = (bits & 0x7FFFFFu) | 0x800000u; // f = mantissa * 2^(exponent - 23)
+    uint shift = 23u - exponent;
+    uint rounded = (mantissa + (1u << (shift - 1u))) >> shift; // halves up, exact
+    return min(rounded, UNIFORM_MAX_FACTOR);
 }
 uint uniform_edge_parameter(uint i, uint f) {
     uint small_ = min(i, f - i);

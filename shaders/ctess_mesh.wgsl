@@ -559,12 +559,19 @@ fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: 
 }
 
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
-// rt::uniform_factor (runtime/include/ctess/runtime/uniform/patch.hpp), its thresholds generated from it: rounded to
-// the nearest integer (halves up), clamped to [1, UNIFORM_MAX_FACTOR]; NaN gives 1.
+// uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
+// bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
+// on give UNIFORM_MAX_FACTOR, else the nearest integer, halves up (UNIFORM_ROUND_FROM_BITS = 1.5f and
+// F32_INFINITY_BITS are generated from that function's checks).
 fn uniform_factor(f: f32) -> u32 {
-    if (is_nan_bits(f) || !(f >= UNIFORM_ROUND_FROM)) { return 1u; }
-    if (!(f < UNIFORM_CLAMP_FROM)) { return UNIFORM_MAX_FACTOR; }
-    return u32(f + UNIFORM_ROUND_HALF);
+    let bits = bitcast<u32>(f);
+    if (bits < UNIFORM_ROUND_FROM_BITS || bits > F32_INFINITY_BITS) { return 1u; }
+    let exponent = (bits >> 23u) - 127u; // f in [2^exponent, 2^(exponent + 1)), exponent >= 0
+    if (exponent >= 23u) { return UNIFORM_MAX_FACTOR; }
+    let mantissa = (bits & 0x7FFFFFu) | 0x800000u; // f = mantissa * 2^(exponent - 23)
+    let shift = 23u - exponent;
+    let rounded = (mantissa + (1u << (shift - 1u))) >> shift; // halves up, exact
+    return min(rounded, UNIFORM_MAX_FACTOR);
 }
 fn uniform_edge_parameter(i: u32, f: u32) -> u32 {
     let nearer = min(i, f - i);

@@ -11,14 +11,17 @@
 // layout.json. tests/gpu/test_shader_layout.cpp fails when a generated file or a source drifts from it.
 #pragma once
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include <ctess/cp/line.hpp>
 #include <ctess/runtime/cp/setup_block.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 #include <ctess/runtime/surface/eval.hpp>
 #include <ctess/runtime/uniform/pipeline_words.hpp>
+#include <ctess/uniform/factor.hpp>
 #include <ctess/uniform/quantise.hpp>
 
 namespace ctess::gen {
@@ -48,15 +51,18 @@ inline constexpr std::uint32_t emit_workgroup = 64;
 inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
 inline constexpr std::uint32_t totals_words = 2; // after the last record: total vertices, total triangles
 
-// The uniform-factor rule of rt::uniform_factor (runtime/include/ctess/runtime/uniform/patch.hpp), as the
-// shaders evaluate it in f32: below round_from gives 1, from clamp_from (= N - half) on gives N, else
-// u32(f + half). gen_shaders.cpp checks them against rt::uniform_factor at the boundaries of the configured
-// N.
-inline constexpr float uniform_round_from = 1.5f;
-inline constexpr float uniform_round_half = 0.5f;
-static_assert(rt::uniform_factor(uniform_round_from, 16) == 2 && rt::uniform_factor(1.4999999f, 16) == 1);
-static_assert(rt::uniform_factor(16.0f - uniform_round_half, 16) == 16 &&
-              rt::uniform_factor(15.499999f, 16) == 15);
+// The thresholds of uniform::round_factor (constexpr/ctess/uniform/factor.hpp), the one rounding rule of
+// uniform factors, which the shaders' uniform_factor runs line for line on the float's bits: below 1.5f (and
+// every negative float) gives 1, above +inf (NaN) gives 1. Checked against the function on both sides.
+inline constexpr std::uint32_t uniform_round_from_bits = std::bit_cast<std::uint32_t>(1.5f);
+inline constexpr std::uint32_t f32_infinity_bits =
+    std::bit_cast<std::uint32_t>(std::numeric_limits<float>::infinity());
+static_assert(uniform::round_factor(std::bit_cast<float>(uniform_round_from_bits), 16) == 2 &&
+              uniform::round_factor(std::bit_cast<float>(uniform_round_from_bits - 1), 16) == 1);
+static_assert(uniform::round_factor(std::bit_cast<float>(f32_infinity_bits), 16) == 16 &&
+              uniform::round_factor(std::bit_cast<float>(f32_infinity_bits + 1), 16) == 1);
+static_assert(rt::uniform_factor(3.4999998f, 16) ==
+              uniform::round_factor(3.4999998f, 16)); // the C++ callers' rule
 
 #define CTESS_WORD_OF(type, member) static_cast<std::uint32_t>(offsetof(type, member) / 4)
 
@@ -144,6 +150,9 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"MAX_DISPATCH_WORKGROUPS", rt::max_dispatch_workgroups, "rt::max_dispatch_workgroups"},
     ShaderConstant{"TOTALS_WORDS", totals_words, "gen::totals_words"},
     ShaderConstant{"TOTALS_OVERFLOW", totals_overflow, "gen::totals_overflow"},
+    // the uniform-factor rule (the shaders' uniform_factor)
+    ShaderConstant{"UNIFORM_ROUND_FROM_BITS", uniform_round_from_bits, "uniform::round_factor: 1.5f"},
+    ShaderConstant{"F32_INFINITY_BITS", f32_infinity_bits, "uniform::round_factor: +inf"},
 };
 
 #undef CTESS_WORD_OF

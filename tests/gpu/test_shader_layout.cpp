@@ -106,7 +106,8 @@ TEST_CASE("the shader templates restate no generated constant") {
         for (const char* literal :
              {R"(params\[\d+)", R"(patches\[rec \+ \d+u)", R"(patches\[b \+ \d+u)", R"(patches\[(rec|b)\])",
               R"(t \* PATCH_WORDS \+ \d+u\])", R"(out_vertices\[o( \+ \d+u)?\])", R"(workgroup_size\(\d+)",
-              R"(\b(48|128|65534|16777216)u\b)", R"(const (uint )?UNIFORM_MAX_FACTOR)", R"(>= 1\.5\b)"}) {
+              R"(\b(48|128|65534|16777216)u\b)", R"(const (uint )?UNIFORM_MAX_FACTOR)", R"(>= 1\.5\b)",
+              R"(0x3FC00000)"}) {
             INFO(literal);
             CHECK(first_match(text, literal) == "");
         }

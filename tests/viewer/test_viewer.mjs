@@ -393,10 +393,10 @@ console.log(`mesh welded: icosahedron ${weldIco.points} points, ${weldIco.edges}
 
 // ---- the mesh view with the uniform pattern (params word 10 = 1, the uniform blob) ----
 // No CPU mesh pipeline is reachable from here (the CLI has no mesh command), so each patch stands in for it: its
-// integer factors are rt::uniform_factor of the factor bits the setup pass computed (nearest, halves up,
-// clamped to [1, N]: mirrored below in float arithmetic), and its counts, (u, v) and triangles are the CLI's
+// integer factors are uniform::round_factor of the factor bits the setup pass computed (nearest, halves up,
+// clamped to [1, N]: mirrored below exactly, in double arithmetic), and its counts, (u, v) and triangles are the CLI's
 // pattern for those factors (uniformMismatch); the totals are the sums. Then the surface is closed, as for CP.
-const uniformFactorRef = (f, n) => (!(f >= 1.5) ? 1 : !(f < n - 0.5) ? n : Math.floor(Math.fround(f + 0.5)));
+const uniformFactorRef = (f, n) => (!(f >= 1.5) ? 1 : Math.min(n, Math.floor(f + 0.5)));
 const cliUniform = new Map(); // 'a,b,c' -> the CLI's JSON
 async function uniformMeshAgainstCli(state) {
     const { records, uv, indices } = await page.evaluate((C) => {
