@@ -7,6 +7,7 @@ For each emit pass of max 64: the instructions of the per-patch setup an emit wo
 `record_patch`, as glslang emits it, one function per GLSL function), and the whole pass after `spirv-opt -O`
 (everything inlined into main). Needs spirv-dis and spirv-opt (Debian spirv-tools).
 """
+import os
 import re
 import subprocess
 import sys
@@ -67,7 +68,9 @@ def main():
     print("|---|---|---|---|")
     for d in sys.argv[1:]:
         for p in PASSES:
-            spv = f"{d}/ctess_cp_64_{p}.spv"
+            spv = f"{d}/ctess_mesh_64_{p}.spv"
+            if not os.path.exists(spv):  # a build from before the shaders' rename
+                spv = f"{d}/ctess_cp_64_{p}.spv"
             funcs = functions(spv)
             root = next((f for f in funcs if f.startswith("%record_patch")), None)
             setup = "—" if root is None else "%d, %d" % tree_size(funcs, root)

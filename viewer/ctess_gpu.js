@@ -1,11 +1,10 @@
-// The generated mesh pipeline (build/<preset>/shaders/ctess_cp_<max>.wgsl and its table blobs) on the browser's
+// The generated mesh pipeline (build/<preset>/shaders/ctess_mesh_<max>.wgsl and its table blobs) on the browser's
 // WebGPU, driven as tests/gpu/run_wgsl.mjs drives it on Dawn: bindings and record layouts in docs/shaders.md.
-// Params word 10 selects the pattern (docs/shaders.md, "Pattern option"): CP binds the CP blob, uniform density
-// the uniform blob (the same CP sections, then the uniform ones), fetched on first use.
-const VERTEX_WORDS = 10;
-const PARAMS_WORDS = 11; // the generated module's params; the viewer's explicit factors follow (explicit_factors.wgsl)
-const PATTERN_WORD = 10;
-export const PATTERNS = { cp: 0, uniform: 1 };
+// Every layout number (params words, record and vertex words, pattern codes, workgroup sizes, dispatch limits)
+// is the generated ctess_mesh_<max>.layout.json's (docs/shaders.md, "Generated constants"): `constants` below.
+// The params' pattern word selects the pattern (docs/shaders.md, "Pattern option"): CP binds the CP blob, uniform
+// density the uniform blob (the same CP sections, then the uniform ones), fetched on first use.
+export const PATTERN_NAMES = ['cp', 'uniform']; // the layout's PATTERN_CP, PATTERN_UNIFORM
 
 // Resolves to {device, adapterInfo} or throws an Error whose message says plainly why WebGPU is unusable.
 export async function openDevice() {
@@ -38,13 +37,15 @@ async function fetchOk(url) {
 export class WgslPipeline {
     static async load(device, maxFactor) {
         const [wgsl, extra, blob, layout] = await Promise.all([
-            fetchOk(`shaders/ctess_cp_${maxFactor}.wgsl`).then((r) => r.text()),
+            fetchOk(`shaders/ctess_mesh_${maxFactor}.wgsl`).then((r) => r.text()),
             fetchOk('explicit_factors.wgsl').then((r) => r.text()),
-            fetchOk(`shaders/ctess_cp_${maxFactor}.tables.bin`).then((r) => r.arrayBuffer()),
-            fetchOk(`shaders/ctess_cp_${maxFactor}.layout.json`).then((r) => r.json()),
+            fetchOk(`shaders/ctess_mesh_${maxFactor}.tables.bin`).then((r) => r.arrayBuffer()),
+            fetchOk(`shaders/ctess_mesh_${maxFactor}.layout.json`).then((r) => r.json()),
         ]);
         const p = new WgslPipeline(device, maxFactor);
-        p.patchWords = layout.patch_words; // words per patch record (the generated layout)
+        p.constants = layout.constants; // the generated constants (names as in the shaders)
+        p.patchWords = layout.constants.PATCH_WORDS; // words per patch record
+        p.setupGroup = layout.passes.find((pass) => pass.name === 'patch_setup').workgroup_size;
         device.pushErrorScope('validation');
         const module = device.createShaderModule({ code: `${wgsl}\n${extra}` });
         const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === 'error');
@@ -71,10 +72,10 @@ export class WgslPipeline {
         this.uniform = null; // Promise<{tables, maxFactor}>: the uniform blob and its N (uniform_max_factor)
     }
 
-    // The uniform blob, bound when params word 10 is 1, and the largest factor its table holds.
+    // The uniform blob, bound for the uniform pattern, and the largest factor its table holds.
     uniformTables() {
         if (!this.uniform) {
-            const base = `shaders/ctess_cp_${this.maxFactor}.uniform`;
+            const base = `shaders/ctess_mesh_${this.maxFactor}.uniform`;
             this.uniform = Promise.all([fetchOk(`${base}.tables.bin`).then((r) => r.arrayBuffer()),
                                         fetchOk(`${base}.layout.json`).then((r) => r.json())])
                 .then(([blob, layout]) => ({ tables: this.storage(new Uint32Array(blob)), maxFactor: layout.uniform_max_factor }));
@@ -121,26 +122,45 @@ export class WgslPipeline {
         this.device.queue.submit([enc.finish()]);
     }
 
+    // The params buffer (the layout's PARAM_* words), with `extra` words after it (the explicit factors):
+    // {patchCount, surface, alpha, factorScale, eye: [x, y, z], meshVertexCount, first, end, pattern: 'cp' | 'uniform'}.
+    params(f, extra = 0) {
+        const C = this.constants;
+        const p = new Uint32Array(C.PARAMS_WORDS + extra);
+        p[C.PARAM_PATCH_COUNT] = f.patchCount;
+        p[C.PARAM_SURFACE] = f.surface;
+        p[C.PARAM_ALPHA] = f32Bits(f.alpha);
+        p[C.PARAM_FACTOR_SCALE] = f32Bits(f.factorScale);
+        p.set(f.eye.map(f32Bits), C.PARAM_EYE);
+        p[C.PARAM_MESH_VERTEX_COUNT] = f.meshVertexCount;
+        p[C.PARAM_FIRST_PATCH] = f.first ?? 0;
+        p[C.PARAM_END_PATCH] = f.end ?? f.patchCount;
+        p[C.PARAM_PATTERN] = C[`PATTERN_${f.pattern.toUpperCase()}`];
+        return p;
+    }
+
     // Runs setup (explicit factors, or projected from the mesh) and the prefix sum, then both emit passes, with
-    // the blob of the pattern params word 10 names. Returns {patches, vertexCount, triangleCount, vertices,
+    // the blob of the pattern the params name. Returns {patches, vertexCount, triangleCount, vertices,
     // indices} with the output as GPU buffers.
     async run(params, meshVertices, meshIndices, explicit, indexUsage = 0) {
-        const n = params[0];
-        const tables = params[PATTERN_WORD] === PATTERNS.uniform ? (await this.uniformTables()).tables : this.tables;
+        const C = this.constants;
+        const n = params[C.PARAM_PATCH_COUNT];
+        const tables = params[C.PARAM_PATTERN] === C.PATTERN_UNIFORM ? (await this.uniformTables()).tables : this.tables;
         const bParams = this.storage(params);
         const bMesh = this.storage(meshVertices);
         const bIndices = this.storage(meshIndices);
-        const patchWords = n * this.patchWords + 2;
+        const patchWords = n * this.patchWords + C.TOTALS_WORDS;
         const bPatches = this.storage(null, patchWords);
         const none = [this.storage(null, 4), this.storage(null, 4)];
-        const setup = explicit ? [this.explicitSetup, n] : [this.setup, Math.ceil(n / 64)];
+        const setup = explicit ? [this.explicitSetup, n] : [this.setup, Math.ceil(n / this.setupGroup)];
         this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
         const patches = await this.read(bPatches, patchWords);
         const vertexCount = patches[n * this.patchWords], triangleCount = patches[n * this.patchWords + 1];
-        const vertices = this.storage(null, vertexCount * VERTEX_WORDS);
+        const vertices = this.storage(null, vertexCount * C.VERTEX_WORDS);
         const indices = this.storage(null, triangleCount * 3, indexUsage);
         this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices],
-                      [[this.emitVertices, Math.min(n, 65535)], [this.emitTriangles, Math.min(n, 65535)]]);
+                      [[this.emitVertices, Math.min(n, C.MAX_DISPATCH_WORKGROUPS)],
+                       [this.emitTriangles, Math.min(n, C.MAX_DISPATCH_WORKGROUPS)]]);
         for (const b of [bParams, bMesh, bIndices, bPatches, ...none]) b.destroy();
         return { patches, vertexCount, triangleCount, vertices, indices };
     }
@@ -153,21 +173,25 @@ export class WgslPipeline {
     // (1 - u, 1 - v). Both halves keep their own diagonal points, as the CLI's provoking layout does.
     async pattern(factors, pattern = 'cp') {
         const halves = factors.length === 4 ? [[factors[0], factors[0], factors[3]], [factors[2], factors[0], factors[1]]] : [factors];
+        const C = this.constants;
         const n = halves.length;
-        const params = new Uint32Array(PARAMS_WORDS + 3 * n);
-        params.set([n, 0, 0, f32Bits(1), 0, 0, 0, 3, 0, n, PATTERNS[pattern]]);
-        params.set(halves.flat().map(f32Bits), PARAMS_WORDS);
-        const mesh = new Float32Array([0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1]);
+        // The explicit factors follow the params (explicit_factors.wgsl reads them from word PARAMS_WORDS on).
+        const params = this.params({ patchCount: n, surface: C.SURFACE_FLAT, alpha: 0, factorScale: 1, eye: [0, 0, 0],
+                                     meshVertexCount: 3, pattern }, 3 * n);
+        params.set(halves.flat().map(f32Bits), C.PARAMS_WORDS);
+        // Three mesh vertices (position, normal, uv), MESH_VERTEX_FLOATS each.
+        const mesh = new Float32Array(3 * C.MESH_VERTEX_FLOATS);
+        [[0, 0, 0, 0, 0, 1, 0, 0], [1, 0, 0, 0, 0, 1, 1, 0], [0, 1, 0, 0, 0, 1, 0, 1]].forEach((v, i) => mesh.set(v, i * C.MESH_VERTEX_FLOATS));
         const out = await this.run(params, new Uint32Array(mesh.buffer), new Uint32Array(halves.flatMap(() => [0, 1, 2])), true);
-        const words = await this.read(out.vertices, out.vertexCount * VERTEX_WORDS);
+        const words = await this.read(out.vertices, out.vertexCount * C.VERTEX_WORDS);
         const indices = await this.read(out.indices, out.triangleCount * 3);
         out.vertices.destroy();
         out.indices.destroy();
-        const one = 1 << 24;
-        const secondHalf = n === 2 ? out.patches[this.patchWords + 9] : out.vertexCount;
+        const one = C.FIXED_ONE;
+        const secondHalf = n === 2 ? out.patches[this.patchWords + C.REC_FIRST_VERTEX] : out.vertexCount;
         const uv = new Uint32Array(out.vertexCount * 2);
         for (let i = 0; i < out.vertexCount; i++) {
-            const u = words[i * VERTEX_WORDS], v = words[i * VERTEX_WORDS + 1];
+            const u = words[i * C.VERTEX_WORDS + C.VERTEX_U], v = words[i * C.VERTEX_WORDS + C.VERTEX_V];
             uv[2 * i] = i < secondHalf ? u : one - u;
             uv[2 * i + 1] = i < secondHalf ? v : one - v;
         }
@@ -178,4 +202,3 @@ export class WgslPipeline {
 export function f32Bits(x) {
     return new Uint32Array(new Float32Array([x]).buffer)[0];
 }
-export { VERTEX_WORDS };

@@ -1,9 +1,11 @@
 // Mesh view: a built-in icosahedron/icosphere or quad torus run through the whole generated pipeline with the
 // CP or the uniform-density pattern (projected edge factors over a DiceRate, PN or Phong evaluation), drawn
 // shaded with its wireframe, under an orbit camera.
-import { f32Bits, PATTERNS, VERTEX_WORDS } from './ctess_gpu.js';
+import { PATTERN_NAMES } from './ctess_gpu.js';
 
 const FOV_Y = Math.PI / 4;
+// The meshes below: position xyz, normal xyz, uv per vertex (checked against the pipeline's MESH_VERTEX_FLOATS).
+const MESH_VERTEX_FLOATS = 8;
 
 // Icosahedron (counter-clockwise seen from outside), optionally split once (each triangle into four).
 function icosphere(levels) {
@@ -26,10 +28,10 @@ function icosphere(levels) {
         }
         f = next;
     }
-    const vertices = new Float32Array(p.length * 8);
+    const vertices = new Float32Array(p.length * MESH_VERTEX_FLOATS);
     p.forEach((q, i) => {
         const n = Math.hypot(...q), u = q.map((x) => x / n);
-        vertices.set([u[0], u[1], u[2], u[0], u[1], u[2], 0.5 + Math.atan2(u[2], u[0]) / (2 * Math.PI), 0.5 - Math.asin(u[1]) / Math.PI], i * 8);
+        vertices.set([u[0], u[1], u[2], u[0], u[1], u[2], 0.5 + Math.atan2(u[2], u[0]) / (2 * Math.PI), 0.5 - Math.asin(u[1]) / Math.PI], i * MESH_VERTEX_FLOATS);
     });
     return { vertices, indices: new Uint32Array(f.flat()), patches: f.length };
 }
@@ -40,14 +42,14 @@ function icosphere(levels) {
 // Vertices are shared across the seams (the factors are per edge of the indexed mesh); uv is (i / 12, j / 8).
 const TORUS = { major: 1, minor: 0.4, around: 12, across: 8 };
 function torus({ major, minor, around, across }) {
-    const vertices = new Float32Array(around * across * 8);
+    const vertices = new Float32Array(around * across * MESH_VERTEX_FLOATS);
     const at = (i, j) => (i % around) * across + (j % across);
     for (let i = 0; i < around; i++) {
         for (let j = 0; j < across; j++) {
             const u = (2 * Math.PI * i) / around, v = (2 * Math.PI * j) / across;
             const n = [Math.cos(v) * Math.cos(u), Math.sin(v), Math.cos(v) * Math.sin(u)];
             vertices.set([major * Math.cos(u) + minor * n[0], minor * n[1], major * Math.sin(u) + minor * n[2], ...n,
-                          i / around, j / across], at(i, j) * 8);
+                          i / around, j / across], at(i, j) * MESH_VERTEX_FLOATS);
         }
     }
     const tris = [];
@@ -81,18 +83,21 @@ function lookAt(eye) {
     return new Float32Array([x[0], y[0], z[0], 0, x[1], y[1], z[1], 0, x[2], y[2], z[2], 0, d(x), d(y), d(z), 1]);
 }
 
-const RENDER_WGSL = `
+// The pipeline's output vertex layout (VERTEX_WORDS, VERTEX_POSITION, VERTEX_NORMAL) is the generated module's
+// (its layout.json constants, docs/shaders.md), prefixed to the render shader.
+const renderWgsl = (C) => ['VERTEX_WORDS', 'VERTEX_POSITION', 'VERTEX_NORMAL'].map((k) => `const ${k}: u32 = ${C[k]}u;`).join('\n') + `
 struct Camera { view_proj: mat4x4<f32>, light: vec4<f32> }
 @group(0) @binding(0) var<uniform> cam: Camera;
 @group(0) @binding(1) var<storage, read> verts: array<f32>;
 @group(0) @binding(2) var<storage, read> tris: array<u32>;
 struct VOut { @builtin(position) pos: vec4<f32>, @location(0) normal: vec3<f32>, @location(1) bary: vec3<f32> }
 @vertex fn vs(@builtin(vertex_index) vi: u32) -> VOut {
-    let o = tris[vi] * 10u;
+    let o = tris[vi] * VERTEX_WORDS;
     var b = vec3<f32>(0.0);
     b[vi % 3u] = 1.0;
-    let p = vec3<f32>(verts[o + 2u], verts[o + 3u], verts[o + 4u]);
-    return VOut(cam.view_proj * vec4<f32>(p, 1.0), vec3<f32>(verts[o + 5u], verts[o + 6u], verts[o + 7u]), b);
+    let p = vec3<f32>(verts[o + VERTEX_POSITION], verts[o + VERTEX_POSITION + 1u], verts[o + VERTEX_POSITION + 2u]);
+    let n = vec3<f32>(verts[o + VERTEX_NORMAL], verts[o + VERTEX_NORMAL + 1u], verts[o + VERTEX_NORMAL + 2u]);
+    return VOut(cam.view_proj * vec4<f32>(p, 1.0), n, b);
 }
 @fragment fn fs(in: VOut) -> @location(0) vec4<f32> {
     let w = fwidth(in.bary);
@@ -130,14 +135,7 @@ export class MeshView {
         this.context = this.canvas.getContext('webgpu');
         this.format = navigator.gpu.getPreferredCanvasFormat();
         this.context.configure({ device, format: this.format, alphaMode: 'opaque' });
-        const module = device.createShaderModule({ code: RENDER_WGSL });
-        this.render = device.createRenderPipeline({
-            layout: 'auto',
-            vertex: { module, entryPoint: 'vs' },
-            fragment: { module, entryPoint: 'fs', targets: [{ format: this.format }] },
-            primitive: { topology: 'triangle-list', cullMode: 'none' },
-            depthStencil: { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' },
-        });
+        this.render = null; // made on the first redraw, from the pipeline's vertex layout
         this.depth = device.createTexture({ size: [this.canvas.width, this.canvas.height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT });
         this.uniform = device.createBuffer({ size: 80, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
     }
@@ -150,12 +148,24 @@ export class MeshView {
         const dice = Number(this.ui.dice.value);
         const projectionScale = this.canvas.height / (2 * Math.tan(FOV_Y / 2));
         const surface = Number(this.ui.surface.value);
-        const pattern = PATTERNS[this.ui.pattern.value] !== undefined ? this.ui.pattern.value : 'cp';
-        // params word 10: the pattern; uniform factors are rounded and clamped to [1, N] by the setup pass
-        const params = new Uint32Array([mesh.patches, surface, f32Bits(1), f32Bits(projectionScale / dice),
-                                        f32Bits(eye[0]), f32Bits(eye[1]), f32Bits(eye[2]), mesh.vertices.length / 8, 0, mesh.patches,
-                                        PATTERNS[pattern]]);
+        const pattern = PATTERN_NAMES.includes(this.ui.pattern.value) ? this.ui.pattern.value : 'cp';
         const pipeline = await this.pipeline();
+        const C = pipeline.constants;
+        if (C.MESH_VERTEX_FLOATS !== MESH_VERTEX_FLOATS)
+            throw new Error(`the generated pipeline reads ${C.MESH_VERTEX_FLOATS} floats per mesh vertex, the viewer's meshes have ${MESH_VERTEX_FLOATS}`);
+        if (!this.render) {
+            const module = this.device.createShaderModule({ code: renderWgsl(C) });
+            this.render = this.device.createRenderPipeline({
+                layout: 'auto',
+                vertex: { module, entryPoint: 'vs' },
+                fragment: { module, entryPoint: 'fs', targets: [{ format: this.format }] },
+                primitive: { topology: 'triangle-list', cullMode: 'none' },
+                depthStencil: { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' },
+            });
+        }
+        // The pattern word: uniform factors are rounded and clamped to [1, N] by the setup pass.
+        const params = pipeline.params({ patchCount: mesh.patches, surface, alpha: 1, factorScale: projectionScale / dice, eye,
+                                         meshVertexCount: mesh.vertices.length / MESH_VERTEX_FLOATS, pattern });
         const out = await pipeline.run(params, new Uint32Array(mesh.vertices.buffer), mesh.indices, false);
         const uniformMax = pattern === 'uniform' ? (await pipeline.uniformTables()).maxFactor : null;
         const viewProj = mul(perspective(FOV_Y, this.canvas.width / this.canvas.height, 0.05, 100), lookAt(eye));
@@ -180,7 +190,7 @@ export class MeshView {
         this.device.queue.submit([enc.finish()]);
         await this.device.queue.onSubmittedWorkDone();
         // What the pipeline wrote, for the test's watertightness check (docs/shaders.md's vertex records).
-        const readback = { vertices: await pipeline.read(out.vertices, out.vertexCount * VERTEX_WORDS),
+        const readback = { vertices: await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS),
                            indices: await pipeline.read(out.indices, out.triangleCount * 3), records: out.patches };
         out.vertices.destroy();
         out.indices.destroy();

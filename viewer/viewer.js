@@ -66,10 +66,11 @@ async function apiPattern(mode, factors) {
     return apiCache.get(key);
 }
 
-// rt::uniform_factor (docs/algorithm.md §3.4), float arithmetic as in C++: nearest integer, halves up, in
-// [1, top]. It shapes the drawing frame (the side lengths `ctess pattern --format svg` draws uniform with) and
-// picks the source: integer factors within the table's N run on the GPU, larger ones are split by the CLI.
-const uniformFactor = (f, top) => (!(f >= 1.5) ? 1 : !(f < top - 0.5) ? top : Math.floor(Math.fround(f + 0.5)));
+// uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4), exactly (f is a float, f +
+// 0.5 is exact in a double): nearest integer, halves up, in [1, top]. It shapes the drawing frame (the side lengths
+// `ctess pattern --format svg` draws uniform with) and picks the source: integer factors within the table's N run
+// on the GPU, larger ones are split by the CLI.
+const uniformFactor = (f, top) => (!(f >= 1.5) ? 1 : Math.min(top, Math.floor(f + 0.5)));
 
 // A pattern with the source that drew it: 'wgsl' (the generated WGSL on WebGPU) or 'api' (ctess serve).
 async function computePattern(mode, factors, max) {

@@ -1,16 +1,21 @@
 // ctess_gen_shaders: writes, for one maximum factor, the CP table blob (with the configured uniform-density
-// tables, CTESS_UNIFORM_MAX_FACTOR, in its last sections) and the compute shaders that read it.
+// tables, CTESS_UNIFORM_MAX_FACTOR, in its last sections) and the mesh pipeline's compute shaders that read
+// it.
 //
 //   ctess_gen_shaders --max 64 --shaders <repo>/shaders --out <dir>
 //
 // Output (docs/shaders.md):
-//   ctess_cp_<max>.tables.bin     the CP table blob (u32 little-endian; gen/shaders/table_blob.hpp), for WGSL
-//   ctess_cp_<max>.uniform.tables.bin  the same plus the uniform-density sections, for GLSL
-//   ctess_cp_<max>.uniform.layout.json  the uniform blob's size and its uniform sections' offsets
-//   ctess_cp_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
-//   ctess_cp_<max>.wgsl           WGSL, all four entry points in one module
-//   ctess_cp_<max>.layout.json    the blob's section offsets and size, and the entry points
-// Exit status: 0, or 2 with a message for bad arguments, 1 when a file cannot be read or written.
+//   ctess_mesh_<max>.tables.bin     the CP table blob (u32 little-endian; gen/shaders/table_blob.hpp), for
+//   WGSL ctess_mesh_<max>.uniform.tables.bin  the same plus the uniform-density sections, for GLSL
+//   ctess_mesh_<max>.uniform.layout.json  the uniform blob's size and its uniform sections' offsets
+//   ctess_mesh_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
+//   ctess_mesh_<max>.wgsl           WGSL, all four entry points in one module
+//   ctess_mesh_<max>.layout.json    the blob's section offsets and size, the entry points and their workgroup
+//                                   sizes, and every generated constant (the hosts' and the viewer's layouts)
+// The shader templates (shaders/ctess_mesh.*) hold no layout number: the {{CONSTANTS}} placeholder becomes a
+// block of `const` lines, from the table blob's layout and from gen/shaders/shader_layout.hpp
+// (docs/shaders.md, "Generated constants"). Exit status: 0, or 2 with a message for bad arguments, 1 when a
+// file cannot be read or written.
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -19,26 +24,28 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <ctess/cp/tables_layout.hpp>
 #include <ctess/runtime/cp/table_set.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 #include <ctess/runtime/uniform/table_set.hpp>
 
+#include "shader_layout.hpp"
 #include "shader_template.hpp"
 #include "table_blob.hpp"
 
 namespace {
 
 struct Pass {
-    const char* name;  // file suffix
-    const char* entry; // entry point
-    unsigned local_size;
+    const char* name;   // file suffix
+    const char* entry;  // entry point
+    std::uint32_t size; // workgroup size (gen/shaders/shader_layout.hpp)
 };
-constexpr Pass passes[] = {{"patch_setup", "ctess_patch_setup", 64},
-                           {"prefix_sum", "ctess_prefix_sum", 128},
-                           {"emit_vertices", "ctess_emit_vertices", 64},
-                           {"emit_triangles", "ctess_emit_triangles", 64}};
+constexpr Pass passes[] = {{"patch_setup", "ctess_patch_setup", ctess::gen::setup_workgroup},
+                           {"prefix_sum", "ctess_prefix_sum", ctess::gen::scan_workgroup},
+                           {"emit_vertices", "ctess_emit_vertices", ctess::gen::emit_workgroup},
+                           {"emit_triangles", "ctess_emit_triangles", ctess::gen::emit_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -62,27 +69,64 @@ void write_file(const std::string& path, std::string_view data) {
     }
 }
 
-// The blob's section offsets and the other values the templates take (both templates read every one).
-std::map<std::string, std::string, std::less<>> constants(const ctess::gen::TableBlobLayout& l) {
-    std::map<std::string, std::string, std::less<>> v;
-    auto put = [&v](const char* name, std::uint32_t value) { v.emplace(name, std::to_string(value)); };
-    put("MAX_FACTOR", l.max_factor);
-    put("TOKENS", l.tokens);
-    put("SHAPES", l.shapes);
-    put("TOKEN_RANGE", l.token_range);
-    put("TOKEN_RECORD", l.token_record);
-    put("POINT", l.point);
-    put("COLUMN_RECORD", l.column_record);
-    put("COLUMN_POOL", l.column_pool);
-    put("GAP_OFFSET", l.gap_offset);
-    put("GAP_WORD", l.gap_word);
-    put("T1_LAST_FAN", l.t1_last_fan);
-    put("SEARCH_WINDOW", ctess::cp::tables::search_window);
-    put("UNIFORM_MAX_FACTOR", l.uniform_max_factor);
-    put("UNIFORM_OFFSET", l.uniform_offset);
-    put("UNIFORM_INTERIOR", l.uniform_interior);
-    put("UNIFORM_TRIANGLE", l.uniform_triangle);
+// One generated constant (a u32) and the definition it comes from.
+struct Constant {
+    std::string name;
+    std::uint32_t value = 0;
+    std::string source;
+};
+
+// Every constant of the generated block, in its order: the blob's layout, then shader_layout.hpp's.
+std::vector<Constant> constants(const ctess::gen::TableBlobLayout& l) {
+    std::vector<Constant> v;
+    auto put = [&v](const char* name, std::uint32_t value, const char* source) {
+        v.push_back({name, value, source});
+    };
+    put("MAX_FACTOR", l.max_factor, "CpTableSet::max_factor");
+    put("TOKENS", l.tokens, "CpTableSet::tokens");
+    put("SHAPES", l.shapes, "CpTableSet::shapes");
+    put("TOKEN_RANGE", l.token_range, "blob section (table_blob.hpp)");
+    put("TOKEN_RECORD", l.token_record, "blob section");
+    put("POINT", l.point, "blob section");
+    put("COLUMN_RECORD", l.column_record, "blob section");
+    put("COLUMN_POOL", l.column_pool, "blob section");
+    put("GAP_OFFSET", l.gap_offset, "blob section");
+    put("GAP_WORD", l.gap_word, "blob section");
+    put("T1_LAST_FAN", l.t1_last_fan, "blob section");
+    put("SEARCH_WINDOW", ctess::cp::tables::search_window, "cp::tables::search_window");
+    put("UNIFORM_MAX_FACTOR", l.uniform_max_factor, "UniformTableSet::max_factor");
+    put("UNIFORM_OFFSET", l.uniform_offset, "blob section");
+    put("UNIFORM_INTERIOR", l.uniform_interior, "blob section");
+    put("UNIFORM_TRIANGLE", l.uniform_triangle, "blob section");
+    for (const ctess::gen::ShaderConstant& c : ctess::gen::shader_constants) put(c.name, c.value, c.source);
     return v;
+}
+
+enum class Language { glsl, wgsl };
+
+std::string constants_block(const std::vector<Constant>& v, Language lang) {
+    std::string out =
+        "// ---- generated by gen/shaders/gen_shaders.cpp from the C++ definitions (docs/shaders.md, "
+        "\"Generated constants\") ----\n";
+    for (const Constant& c : v) {
+        const std::string value = std::to_string(c.value) + "u";
+        if (lang == Language::wgsl)
+            out += "const " + c.name + ": u32 = " + value + ";";
+        else
+            out += "const uint " + c.name + " = " + value + ";";
+        out += " // " + c.source + "\n";
+    }
+    out += "// ---- end of the generated constants ----";
+    return out;
+}
+
+std::string json_constants(const std::vector<Constant>& v) {
+    std::string out = "{";
+    for (std::size_t k = 0; k < v.size(); ++k) {
+        out += k ? ",\n    \"" : "\n    \"";
+        out += v[k].name + "\": " + std::to_string(v[k].value);
+    }
+    return out + "\n  }";
 }
 
 int usage(const char* why) {
@@ -113,7 +157,7 @@ int main(int argc, char** argv) {
     const ctess::rt::CpTableSet& tables = max == "64" ? ctess::rt::cp_tables_64 : ctess::rt::cp_tables_256;
     try {
         const ctess::gen::TableBlob blob = ctess::gen::build_table_blob(tables, ctess::rt::uniform_tables);
-        const std::string prefix = out + "/ctess_cp_" + max;
+        const std::string prefix = out + "/ctess_mesh_" + max;
         // Two blobs: .uniform.tables.bin, every section (both patterns), and .tables.bin, the CP sections and
         // the padding only (enough for the CP pattern; docs/shaders.md).
         write_file(prefix + ".uniform.tables.bin",
@@ -124,15 +168,18 @@ int main(int argc, char** argv) {
         write_file(prefix + ".tables.bin",
                    std::string_view(reinterpret_cast<const char*>(cp_words.data()), cp_words.size() * 4));
 
-        const std::string glsl = read_file(shaders + "/ctess_cp.comp.glsl");
+        const std::vector<Constant> v = constants(blob.layout);
+        const std::string glsl = read_file(shaders + "/ctess_mesh.comp.glsl");
         for (const Pass& p : passes) {
-            auto v = constants(blob.layout);
-            v.emplace("LOCAL_SIZE", std::to_string(p.local_size));
-            v.emplace("ENTRY", p.entry);
-            write_file(prefix + "_" + p.name + ".comp", ctess::gen::fill_template(glsl, v));
+            const std::map<std::string, std::string, std::less<>> values = {
+                {"CONSTANTS", constants_block(v, Language::glsl)},
+                {"LOCAL_SIZE", std::to_string(p.size)},
+                {"ENTRY", p.entry}};
+            write_file(prefix + "_" + p.name + ".comp", ctess::gen::fill_template(glsl, values));
         }
-        const std::string wgsl = read_file(shaders + "/ctess_cp.wgsl");
-        write_file(prefix + ".wgsl", ctess::gen::fill_template(wgsl, constants(blob.layout)));
+        const std::string wgsl = read_file(shaders + "/ctess_mesh.wgsl");
+        write_file(prefix + ".wgsl",
+                   ctess::gen::fill_template(wgsl, {{"CONSTANTS", constants_block(v, Language::wgsl)}}));
 
         const ctess::gen::TableBlobLayout& l = blob.layout;
         std::ostringstream json;
@@ -145,9 +192,13 @@ int main(int argc, char** argv) {
              << ", \"t1_last_fan\": " << l.t1_last_fan << "},\n  \"passes\": [";
         for (std::size_t k = 0; k < std::size(passes); ++k)
             json << (k ? ", " : "") << "{\"name\": \"" << passes[k].name << "\", \"entry\": \""
-                 << passes[k].entry << "\", \"workgroup_size\": " << passes[k].local_size << "}";
+                 << passes[k].entry << "\", \"workgroup_size\": " << passes[k].size << "}";
         json << "],\n  \"patch_words\": " << sizeof(ctess::rt::PatchRecord) / 4
-             << ",\n  \"setup_block_word\": 16,\n  \"vertex_words\": 10,\n  \"mesh_vertex_floats\": 8\n}\n";
+             << ",\n  \"limits\": {\"max_dispatch_workgroups\": " << ctess::rt::max_dispatch_workgroups
+             << ", \"max_patches\": " << ctess::rt::max_pipeline_patches
+             << ", \"max_vertices\": " << ctess::rt::max_pipeline_vertices
+             << ", \"max_triangles\": " << ctess::rt::max_pipeline_triangles
+             << "},\n  \"constants\": " << json_constants(v) << "\n}\n";
         write_file(prefix + ".layout.json", json.str());
         // The uniform blob: the same CP sections, then the uniform-density ones (docs/shaders.md).
         std::ostringstream uniform_json;

@@ -23,7 +23,7 @@ if(NOT DEFINED MAP)
 endif()
 
 set(problems "")
-set(shader_files "shaders/ctess_cp.comp.glsl" "shaders/ctess_cp.wgsl")
+set(shader_files "shaders/ctess_mesh.comp.glsl" "shaders/ctess_mesh.wgsl")
 
 # Markdown text as a CMake list of lines: ';', '[' and ']' (which CMake's list handling interprets) are
 # replaced by placeholders first.

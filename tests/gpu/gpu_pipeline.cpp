@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -21,7 +22,7 @@ constexpr int run_wgsl_past_limits = 3; // run_wgsl.mjs's exit status for a mesh
 
 std::string shader_file(const std::string& dir, unsigned max_factor, const char* suffix) {
     std::string path = dir;
-    path += "/ctess_cp_";
+    path += "/ctess_mesh_";
     path += std::to_string(max_factor);
     path += suffix;
     return path;
@@ -47,7 +48,6 @@ std::uint32_t layout_patch_words(const std::string& dir, unsigned max_factor) {
 
 PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_factor, const Scene& scene,
                           RunLimits limits) {
-    static_assert(sizeof(rt::TessVertex) == 40);
     // From the shaders' layout, so that a host can also time shaders of another record size.
     const std::uint32_t record_words = layout_patch_words(dir, max_factor);
     const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
@@ -62,7 +62,7 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     vk.upload(b_mesh, scene.vertices.data(), scene.vertices.size() * 4);
     const std::size_t b_indices = vk.create_buffer(scene.indices.size() * 4);
     vk.upload(b_indices, scene.indices.data(), scene.indices.size() * 4);
-    const std::size_t b_patches = vk.create_buffer((std::size_t{n} * record_words + 2) * 4);
+    const std::size_t b_patches = vk.create_buffer((std::size_t{n} * record_words + gen::totals_words) * 4);
     const std::size_t b_none = vk.create_buffer(16);
 
     const std::size_t setup = vk.create_pipeline(shader_file(dir, max_factor, "_patch_setup.spv"));
@@ -73,24 +73,25 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     PipelineOutput out;
     const std::size_t first[] = {b_params, b_tables, b_mesh, b_indices, b_patches, b_none, b_none};
     // At most 65,535 workgroups per dimension: the setup pass strides over the rest.
-    const std::uint32_t setup_groups = std::min((n + 63) / 64, limits.max_workgroups);
+    constexpr std::uint32_t setup_group = gen::setup_workgroup;
+    const std::uint32_t setup_groups = std::min((n + setup_group - 1) / setup_group, limits.max_workgroups);
     const VkCompute::Dispatch counts[] = {{setup, setup_groups}, {scan, 1}};
     out.milliseconds = vk.run(first, counts);
     const auto* p = static_cast<const std::uint32_t*>(vk.mapped(b_patches));
-    out.patches.assign(p, p + std::size_t{n} * record_words + 2);
+    out.patches.assign(p, p + std::size_t{n} * record_words + gen::totals_words);
     if (limits.counts_only) return out;
     // The shader's u32 totals wrap past 2^32 (it then writes the overflow marker): recount them in 64 bits
     // and refuse a mesh past the pipeline's limits before sizing the outputs, as the CPU pipeline does.
     std::uint64_t sum_v = 0, sum_t = 0;
     for (std::size_t t = 0; t < n; ++t) {
-        sum_v += out.patches[t * record_words + 7];
-        sum_t += out.patches[t * record_words + 8];
+        sum_v += out.patches[t * record_words + offsetof(rt::PatchRecord, vertex_count) / 4];
+        sum_t += out.patches[t * record_words + offsetof(rt::PatchRecord, triangle_count) / 4];
     }
     require_pipeline_size(n, sum_v, sum_t);
     const std::uint32_t total_v = out.patches[std::size_t{n} * record_words];
     const std::uint32_t total_t = out.patches[std::size_t{n} * record_words + 1];
 
-    const std::size_t b_vertices = vk.create_buffer(std::size_t{total_v} * 40);
+    const std::size_t b_vertices = vk.create_buffer(std::size_t{total_v} * sizeof(rt::TessVertex));
     const std::size_t b_out_indices = vk.create_buffer(std::size_t{total_t} * 12);
     const std::size_t second[] = {b_params,  b_tables,   b_mesh,       b_indices,
                                   b_patches, b_vertices, b_out_indices};
@@ -98,13 +99,13 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     const VkCompute::Dispatch emits[] = {{emit_v, groups}, {emit_t, groups}};
     out.milliseconds += vk.run(second, emits);
     const auto* v = static_cast<const std::uint32_t*>(vk.mapped(b_vertices));
-    out.vertices.assign(v, v + std::size_t{total_v} * 10);
+    out.vertices.assign(v, v + std::size_t{total_v} * vertex_words);
     const auto* i = static_cast<const std::uint32_t*>(vk.mapped(b_out_indices));
     out.indices.assign(i, i + std::size_t{total_t} * 3);
     return out;
 }
 
-// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[11] (the last one the pattern), vertex
+// Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[gen::param_word::words], vertex
 // floats, index count, then the vertex floats and the indices. Result file: "CTGO", patch words, vertex
 // words, index words, milliseconds (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,

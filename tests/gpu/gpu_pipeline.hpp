@@ -19,11 +19,11 @@ std::uint32_t layout_patch_words(const std::string& dir, unsigned max_factor);
 // How a host dispatches: at most max_workgroups per dispatch (the passes stride over the rest; 65,535 is the
 // one-dispatch limit), and with counts_only only the setup and prefix-sum passes run (no outputs).
 struct RunLimits {
-    std::uint32_t max_workgroups = 65535;
+    std::uint32_t max_workgroups = rt::max_dispatch_workgroups;
     bool counts_only = false;
 };
 // The totals a prefix sum writes when a mesh's vertex or triangle total does not fit in u32.
-inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
+inline constexpr std::uint32_t totals_overflow = gen::totals_overflow;
 
 // Both throw std::runtime_error on failure, and when the totals overflow (unless counts_only).
 PipelineOutput run_vulkan(VkCompute& vk, const std::string& shader_dir, unsigned max_factor,

@@ -15,6 +15,7 @@
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 #include "gpu_scenes.hpp"
+#include "shader_layout.hpp" // gen/shaders: the params words and the other constants the shaders share
 
 namespace ctess::gpu_test {
 
@@ -37,26 +38,32 @@ struct PipelineOutput {
     std::vector<std::uint32_t> vertices; // TessVertex words
     std::vector<std::uint32_t> indices;
     double milliseconds = 0.0; // GPU: submit to completion of all four passes; CPU: the whole pipeline
-    std::uint32_t total_vertices() const { return static_cast<std::uint32_t>(vertices.size() / 10); }
+    std::uint32_t total_vertices() const {
+        return static_cast<std::uint32_t>(vertices.size() / vertex_words);
+    }
     std::uint32_t total_triangles() const { return static_cast<std::uint32_t>(indices.size() / 3); }
 };
 
-// The params buffer: patch count, surface, alpha bits, factor scale bits, eye xyz bits, mesh vertex count,
-// the patch range [first, end) of the emit passes (all of them here), and the pattern (0 CP, 1 uniform).
-inline constexpr std::size_t pipeline_param_words = 11;
+// The params buffer (gen::param_word, docs/shaders.md): patch count, surface, alpha bits, factor scale bits,
+// eye xyz bits, mesh vertex count, the patch range [first, end) of the emit passes (all of them here), the
+// pattern.
+inline constexpr std::size_t pipeline_param_words = gen::param_word::words;
 inline std::array<std::uint32_t, pipeline_param_words> pipeline_params(const Scene& scene) {
+    namespace w = gen::param_word;
     const rt::PipelineOptions& o = scene.options;
-    return {scene.patch_count(),
-            static_cast<std::uint32_t>(o.surface.surface),
-            float_bits(o.surface.alpha),
-            float_bits(o.dice.factor_scale()),
-            float_bits(o.dice.eye.x),
-            float_bits(o.dice.eye.y),
-            float_bits(o.dice.eye.z),
-            static_cast<std::uint32_t>(scene.vertices.size() / rt::mesh_vertex_floats),
-            0u,
-            scene.patch_count(),
-            static_cast<std::uint32_t>(o.pattern)};
+    std::array<std::uint32_t, pipeline_param_words> p{};
+    p[w::patch_count] = scene.patch_count();
+    p[w::surface] = static_cast<std::uint32_t>(o.surface.surface);
+    p[w::alpha] = float_bits(o.surface.alpha);
+    p[w::factor_scale] = float_bits(o.dice.factor_scale());
+    p[w::eye] = float_bits(o.dice.eye.x);
+    p[w::eye + 1] = float_bits(o.dice.eye.y);
+    p[w::eye + 2] = float_bits(o.dice.eye.z);
+    p[w::mesh_vertex_count] = static_cast<std::uint32_t>(scene.vertices.size() / rt::mesh_vertex_floats);
+    p[w::first_patch] = 0u;
+    p[w::end_patch] = scene.patch_count();
+    p[w::pattern] = static_cast<std::uint32_t>(o.pattern);
+    return p;
 }
 
 // The CPU pipeline with the scene's options; the uniform pattern uses the configured uniform tables
@@ -79,11 +86,11 @@ inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) 
         throw std::runtime_error(std::string("emit_mesh: ") + rt::pipeline_status_message(st));
     out.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    out.patches.resize(patches.size() * patch_words + 2);
+    out.patches.resize(patches.size() * patch_words + gen::totals_words);
     std::memcpy(out.patches.data(), patches.data(), patches.size() * sizeof(rt::PatchRecord));
     out.patches[patches.size() * patch_words] = totals.vertices;
     out.patches[patches.size() * patch_words + 1] = totals.triangles;
-    out.vertices.resize(vertices.size() * 10);
+    out.vertices.resize(vertices.size() * vertex_words);
     std::memcpy(out.vertices.data(), vertices.data(), vertices.size() * sizeof(rt::TessVertex));
     return out;
 }
@@ -115,8 +122,8 @@ inline Comparison compare(const PipelineOutput& cpu, const PipelineOutput& gpu) 
     if (!c.sizes_match) {
         char buf[200];
         std::snprintf(buf, sizeof buf, "sizes differ: patches %zu/%zu vertices %zu/%zu indices %zu/%zu",
-                      cpu.patches.size(), gpu.patches.size(), cpu.vertices.size() / 10,
-                      gpu.vertices.size() / 10, cpu.indices.size(), gpu.indices.size());
+                      cpu.patches.size(), gpu.patches.size(), cpu.vertices.size() / vertex_words,
+                      gpu.vertices.size() / vertex_words, cpu.indices.size(), gpu.indices.size());
         c.first_difference = buf;
     }
     for (std::size_t k = 0; k < cpu.patches.size() && k < gpu.patches.size(); ++k)
@@ -129,13 +136,15 @@ inline Comparison compare(const PipelineOutput& cpu, const PipelineOutput& gpu) 
             ++c.index_mismatches;
             note("index", k, cpu.indices[k], gpu.indices[k]);
         }
-    for (std::size_t v = 0; v + 10 <= cpu.vertices.size() && v + 10 <= gpu.vertices.size(); v += 10) {
+    for (std::size_t v = 0;
+         v + vertex_words <= cpu.vertices.size() && v + vertex_words <= gpu.vertices.size();
+         v += vertex_words) {
         for (std::size_t k = 0; k < 2; ++k)
             if (cpu.vertices[v + k] != gpu.vertices[v + k]) {
                 ++c.barycentric_mismatches;
                 note("barycentric", v + k, cpu.vertices[v + k], gpu.vertices[v + k]);
             }
-        for (std::size_t k = 2; k < 10; ++k) {
+        for (std::size_t k = 2; k < vertex_words; ++k) {
             const double a = bits_float(cpu.vertices[v + k]), b = bits_float(gpu.vertices[v + k]);
             const double err = std::fabs(a - b) / std::fmax(1.0, std::fabs(a));
             if (k < 5) c.max_position_error = std::fmax(c.max_position_error, err);

@@ -1,14 +1,18 @@
 // Validates WGSL files with Dawn's null backend (npm `webgpu`): Tint compiles each module and a compute pipeline
 // is created for every listed entry point, with nothing executed and no driver needed.
-//   node validate_wgsl.mjs FILE.wgsl ENTRY [ENTRY ...]
+//   node validate_wgsl.mjs FILE.wgsl [ENTRY ...]
+// Without entries, those of the generated FILE's layout.json (ctess_mesh_<max>.layout.json, its "passes").
 // Exit status: 0 when every file and entry point is valid, 1 otherwise (messages as file:line:col), 2 for usage.
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { create, globals } from 'webgpu';
 
 Object.assign(globalThis, globals);
 const [file, ...entries] = process.argv.slice(2);
+const layoutFile = file?.replace(/\.wgsl$/, '.layout.json');
+if (file && entries.length === 0 && existsSync(layoutFile))
+    entries.push(...JSON.parse(readFileSync(layoutFile, 'utf8')).passes.map((p) => p.entry));
 if (!file || entries.length === 0) {
-    console.error('usage: node validate_wgsl.mjs FILE.wgsl ENTRY [ENTRY ...]');
+    console.error('usage: node validate_wgsl.mjs FILE.wgsl [ENTRY ...] (no entries: FILE.layout.json has none)');
     process.exit(2);
 }
 // Kept referenced: a collected instance takes Dawn down under the live device (run_wgsl.mjs).

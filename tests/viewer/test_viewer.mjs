@@ -39,6 +39,9 @@ const base = await new Promise((resolve, reject) => {
 const stop = () => server.kill();
 process.on('exit', stop);
 check(/^http:\/\/127\.0\.0\.1:/.test(base), `serve listens on ${base}`);
+// The generated constants (record, vertex and fixed-point layouts; docs/shaders.md, "Generated constants"), as
+// served to the viewer.
+const C = (await (await fetch(`${base}shaders/ctess_mesh_64.layout.json`)).json()).constants;
 
 // ---- a busy port and an impossible port are errors, not a second server or a hang ----
 const exitOf = (args) => {
@@ -57,7 +60,7 @@ const cli = (mode, factors, max) => JSON.parse(execFileSync(ctess, ['pattern', '
 
 // Uniform patterns within the table's N come from the generated WGSL (2^-24 units), split ones from
 // /api/pattern (the CLI's JSON, bit for bit): the CLI's fixed_one says which (65534 unsplit, 65534² split).
-const UNIFORM_ONE = 65534, PIPELINE_ONE = 1 << 24;
+const UNIFORM_ONE = C.UNIFORM_ONE, PIPELINE_ONE = C.FIXED_ONE;
 // The pipeline's weight for the CLI's w / 65534: the nearest multiple of 2^-24 (docs/shaders.md), exact in BigInt.
 // Never a tie: 2^24·w is even, so its remainder by 65534 is never 32767.
 function pipelineUnits(w) {
@@ -331,11 +334,12 @@ check(stats.ink > 0.1 && stats.colours > 50, 'mesh canvas looks blank');
 // without T-junctions or cracks is used exactly twice, once each way. Euler's V - E + F is then 2 for the
 // icosphere and 0 for the torus.
 async function weldCheck() {
-    return page.evaluate(() => {
+    return page.evaluate((C) => {
         const { vertices, indices } = window.ctessViewer.readback;
         const id = new Map();
         const point = (i) => {
-            const key = `${vertices[i * 10 + 2]},${vertices[i * 10 + 3]},${vertices[i * 10 + 4]}`;
+            const o = i * C.VERTEX_WORDS + C.VERTEX_POSITION;
+            const key = `${vertices[o]},${vertices[o + 1]},${vertices[o + 2]}`;
             if (!id.has(key)) id.set(key, id.size);
             return id.get(key);
         };
@@ -356,7 +360,7 @@ async function weldCheck() {
             if (n !== 1 || directed.get(`${b},${a}`) !== 1) unpaired++;
         }
         return { points: id.size, edges: directed.size / 2, faces, unpaired, euler: id.size - directed.size / 2 + faces };
-    });
+    }, C);
 }
 const meshStart = Date.now();
 const weldIco = await weldCheck();
@@ -389,31 +393,33 @@ console.log(`mesh welded: icosahedron ${weldIco.points} points, ${weldIco.edges}
 
 // ---- the mesh view with the uniform pattern (params word 10 = 1, the uniform blob) ----
 // No CPU mesh pipeline is reachable from here (the CLI has no mesh command), so each patch stands in for it: its
-// integer factors are rt::uniform_factor of the factor bits the setup pass computed (nearest, halves up,
-// clamped to [1, N]: mirrored below in float arithmetic), and its counts, (u, v) and triangles are the CLI's
+// integer factors are uniform::round_factor of the factor bits the setup pass computed (nearest, halves up,
+// clamped to [1, N]: mirrored below exactly, in double arithmetic), and its counts, (u, v) and triangles are the CLI's
 // pattern for those factors (uniformMismatch); the totals are the sums. Then the surface is closed, as for CP.
-const uniformFactorRef = (f, n) => (!(f >= 1.5) ? 1 : !(f < n - 0.5) ? n : Math.floor(Math.fround(f + 0.5)));
+const uniformFactorRef = (f, n) => (!(f >= 1.5) ? 1 : Math.min(n, Math.floor(f + 0.5)));
 const cliUniform = new Map(); // 'a,b,c' -> the CLI's JSON
 async function uniformMeshAgainstCli(state) {
-    const { records, uv, indices } = await page.evaluate(() => {
+    const { records, uv, indices } = await page.evaluate((C) => {
         const { vertices, indices, records } = window.ctessViewer.readback;
         const pairs = [];
-        for (let i = 0; i < vertices.length; i += 10) pairs.push(vertices[i], vertices[i + 1]);
+        for (let i = 0; i < vertices.length; i += C.VERTEX_WORDS) pairs.push(vertices[i + C.VERTEX_U], vertices[i + C.VERTEX_V]);
         return { records: Array.from(records), uv: pairs, indices: Array.from(indices) };
-    });
+    }, C);
     const factor = new Float32Array(new Uint32Array(records).buffer);
     const wanted = [];
     let clamped = 0, vertices = 0, triangles = 0;
     for (let t = 0; t < state.patches; t++) {
-        const rec = t * 48, f = [0, 1, 2].map((k) => uniformFactorRef(factor[rec + 11 + k], UNIFORM_N));
-        clamped += [0, 1, 2].filter((k) => factor[rec + 11 + k] >= UNIFORM_N + 0.5).length;
-        if (!check(f.every((x, k) => records[rec + 1 + k] === x), `uniform mesh patch ${t}: integer factors ${records.slice(rec + 1, rec + 4)}, expected ${f}`)) return null;
+        const rec = t * C.PATCH_WORDS, f = [0, 1, 2].map((k) => uniformFactorRef(factor[rec + C.REC_FACTOR + k], UNIFORM_N));
+        clamped += [0, 1, 2].filter((k) => factor[rec + C.REC_FACTOR + k] >= UNIFORM_N + 0.5).length;
+        const token = rec + C.REC_TOKEN;
+        if (!check(f.every((x, k) => records[token + k] === x), `uniform mesh patch ${t}: integer factors ${records.slice(token, token + 3)}, expected ${f}`)) return null;
         wanted.push(f.join(','));
     }
     for (const key of wanted) if (!cliUniform.has(key)) cliUniform.set(key, cli('uniform', key.split(',').map(Number)));
     for (let t = 0; t < state.patches; t++) {
-        const rec = t * 48, ref = cliUniform.get(wanted[t]);
-        const [count, tcount, first, tfirst] = [records[rec + 7], records[rec + 8], records[rec + 9], records[rec + 10]];
+        const rec = t * C.PATCH_WORDS, ref = cliUniform.get(wanted[t]);
+        const [count, tcount, first, tfirst] = [records[rec + C.REC_VERTEX_COUNT], records[rec + C.REC_TRIANGLE_COUNT],
+                                                records[rec + C.REC_FIRST_VERTEX], records[rec + C.REC_FIRST_TRIANGLE]];
         const wrong = count !== ref.vertex_count || tcount !== ref.triangle_count ? `counts ${count}/${tcount}` :
             uniformMismatch(uv.slice(2 * first, 2 * (first + count)), indices.slice(3 * tfirst, 3 * (tfirst + tcount)).map((i) => i - first), ref);
         if (!check(!wrong, `uniform mesh patch ${t} (factors ${wanted[t]}): ${wrong}`)) return null;

@@ -1,31 +1,12 @@
-// ctess CP mesh pipeline, GLSL 4.50 compute (Vulkan). Generated from shaders/ctess_cp.comp.glsl by gen/: the
-// generator fills in the double-brace placeholders (max factor, token counts, table section offsets) and the entry
-// point. The same steps as runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp, operation for operation; the
-// CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
+// ctess mesh pipeline (both pattern families: CP and uniform density), GLSL 4.50 compute (Vulkan). Generated from
+// shaders/ctess_mesh.comp.glsl by gen/: the generator replaces the constants placeholder below with a block of
+// `const` lines taken from the C++ definitions (gen/shaders/shader_layout.hpp and the table blob's layout;
+// docs/shaders.md, "Generated constants"), and fills in the pass's workgroup size and entry point. The same steps as
+// runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp, operation for operation; the CP lookups mirror
+// runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 #version 450
 
-const uint MAX_FACTOR = {{MAX_FACTOR}}u;
-const uint TOKENS = {{TOKENS}}u;
-const uint SHAPES = {{SHAPES}}u;
-const uint TOKEN_RANGE = {{TOKEN_RANGE}}u;
-const uint TOKEN_RECORD = {{TOKEN_RECORD}}u;
-const uint POINT = {{POINT}}u;
-const uint COLUMN_RECORD = {{COLUMN_RECORD}}u;
-const uint COLUMN_POOL = {{COLUMN_POOL}}u;
-const uint GAP_OFFSET = {{GAP_OFFSET}}u;
-const uint GAP_WORD = {{GAP_WORD}}u;
-const uint T1_LAST_FAN = {{T1_LAST_FAN}}u;
-const uint SEARCH_WINDOW = {{SEARCH_WINDOW}}u;
-const uint UNIFORM_MAX_FACTOR = {{UNIFORM_MAX_FACTOR}}u;
-const uint UNIFORM_OFFSET = {{UNIFORM_OFFSET}}u;
-const uint UNIFORM_INTERIOR = {{UNIFORM_INTERIOR}}u;
-const uint UNIFORM_TRIANGLE = {{UNIFORM_TRIANGLE}}u;
-const uint FIXED_ONE = 16777216u; // 2^24
-const uint LERP_ONE = 65536u;
-const uint PATCH_WORDS = 48u;
-const uint SETUP = 16u; // the setup block's first word in a record (patch_setup_block.hpp)
-const uint VERTEX_WORDS = 10u;
-const uint MESH_VERTEX_FLOATS = 8u;
+{{CONSTANTS}}
 
 layout(local_size_x = {{LOCAL_SIZE}}) in;
 
@@ -39,8 +20,8 @@ layout(std430, set = 0, binding = 4) buffer Patches { uint patches[]; };
 layout(std430, set = 0, binding = 5) writeonly buffer OutVertices { uint out_vertices[]; };
 layout(std430, set = 0, binding = 6) writeonly buffer OutIndices { uint out_indices[]; };
 
-uint patch_count() { return params[0]; }
-bool uniform_pattern() { return params[10] == 1u; }
+uint patch_count() { return params[PARAM_PATCH_COUNT]; }
+bool uniform_pattern() { return params[PARAM_PATTERN] == PATTERN_UNIFORM; }
 
 // ---- 64-bit helpers (GLSL 4.50 core has no 64-bit integers): x = (lo, hi) ----
 uvec2 mul_wide(uint a, uint b) {
@@ -70,7 +51,7 @@ uvec2 line_state(float f) {
     uint f16;
     if (nan_ || f <= 1.0) f16 = LERP_ONE;
     else if (f >= float(MAX_FACTOR)) f16 = MAX_FACTOR << 16;
-    else f16 = uint(roundEven(f * 65536.0));
+    else f16 = uint(roundEven(f * float(LERP_ONE)));
     if (f16 <= LERP_ONE) return uvec2(0u, 0u);
     for (uint t = 1u; t < TOKENS; ++t) {
         uint range = tables[TOKEN_RANGE + t];
@@ -98,7 +79,7 @@ struct Patch {
     uint head, n0, n1, n2;
     float a, b;
     uint copy_bias, clamp_, e1_offset, unique_, strips, zipper, vertices, triangles;
-    uvec2 tri_skip[8];
+    uvec2 tri_skip[SETUP_TRI_SKIPS];
     uint tri_skips;
     uvec2 slot_skip[4];
     uint slot_skips;
@@ -140,7 +121,7 @@ Patch patch_zero() {
     p.column = 0u; p.c = 0u; p.gap = 0u; p.head = 0u; p.a = 0.0; p.b = 0.0;
     p.copy_bias = 0u; p.clamp_ = 0u; p.e1_offset = 0u; p.unique_ = 0u; p.strips = 0u; p.zipper = 0u;
     p.vertices = 0u; p.triangles = 0u;
-    for (uint k = 0u; k < 8u; ++k) p.tri_skip[k] = uvec2(0u);
+    for (uint k = 0u; k < SETUP_TRI_SKIPS; ++k) p.tri_skip[k] = uvec2(0u);
     for (uint k = 0u; k < 4u; ++k) p.slot_skip[k] = uvec2(0u);
     return p;
 }
@@ -464,7 +445,7 @@ Corner mesh_corner(uint v) {
 }
 bool base_triangle(uint t, out uvec3 w) {
     w = uvec3(mesh_indices[3u * t], mesh_indices[3u * t + 1u], mesh_indices[3u * t + 2u]);
-    uint n = params[7];
+    uint n = params[PARAM_MESH_VERTEX_COUNT];
     return w.x < n && w.y < n && w.z < n;
 }
 
@@ -513,14 +494,14 @@ SurfacePoint edge_surface(Corner a, Corner b, float s, float t, uint surface, fl
     vec3 flat_n = s * a.normal + t * b.normal;
     o.uv = vec2(s * a.uv.x + t * b.uv.x, s * a.uv.y + t * b.uv.y);
     vec3 pos = flat_p, n = flat_n;
-    if (surface == 1u) {
+    if (surface == SURFACE_PN) {
         vec3 bab = pn_edge_point(a, b), bba = pn_edge_point(b, a);
         float s2 = s * s, t2 = t * t;
         vec3 pn = (s2 * s) * a.position + (3.0 * s2 * t) * bab + (3.0 * s * t2) * bba + (t2 * t) * b.position;
         vec3 nn = s2 * a.normal + t2 * b.normal + (s * t) * pn_edge_normal(a, b);
         pos = blend(flat_p, pn, alpha);
         n = blend(flat_n, nn, alpha);
-    } else if (surface == 2u) {
+    } else if (surface == SURFACE_PHONG) {
         vec3 ph = (s * s) * a.position + (t * t) * b.position +
                   (s * t) * (phong_project(b.position, a) + phong_project(a.position, b));
         pos = blend(flat_p, ph, alpha);
@@ -535,7 +516,7 @@ SurfacePoint interior_surface(Corner c0, Corner c1, Corner c2, float w0, float w
     vec3 flat_n = w0 * c0.normal + w1 * c1.normal + w2 * c2.normal;
     o.uv = vec2(w0 * c0.uv.x + w1 * c1.uv.x + w2 * c2.uv.x, w0 * c0.uv.y + w1 * c1.uv.y + w2 * c2.uv.y);
     vec3 pos = flat_p, n = flat_n;
-    if (surface == 1u) {
+    if (surface == SURFACE_PN) {
         vec3 b210 = pn_edge_point(c0, c1), b120 = pn_edge_point(c1, c0);
         vec3 b021 = pn_edge_point(c1, c2), b012 = pn_edge_point(c2, c1);
         vec3 b102 = pn_edge_point(c2, c0), b201 = pn_edge_point(c0, c2);
@@ -551,7 +532,7 @@ SurfacePoint interior_surface(Corner c0, Corner c1, Corner c2, float w0, float w
                   (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
         pos = blend(flat_p, pn, alpha);
         n = blend(flat_n, nn, alpha);
-    } else if (surface == 2u) {
+    } else if (surface == SURFACE_PHONG) {
         vec3 ph = (w0 * w0) * c0.position + (w1 * w1) * c1.position + (w2 * w2) * c2.position +
                   (w0 * w1) * (phong_project(c1.position, c0) + phong_project(c0.position, c1)) +
                   (w1 * w2) * (phong_project(c2.position, c1) + phong_project(c1.position, c2)) +
@@ -562,7 +543,7 @@ SurfacePoint interior_surface(Corner c0, Corner c1, Corner c2, float w0, float w
     o.normal = normalize_or_zero(n);
     return o;
 }
-float fixed_weight(uint w) { return float(w) * (1.0 / 16777216.0); }
+float fixed_weight(uint w) { return float(w) * (1.0 / float(FIXED_ONE)); }
 SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha) {
     for (uint k = 0u; k < 3u; ++k) {
         if (w[k] == FIXED_ONE) {
@@ -584,12 +565,19 @@ SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha)
 }
 
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
-const uint UNIFORM_ONE = 65534u;
-// Rounded to the nearest integer (halves up), clamped to [1, UNIFORM_MAX_FACTOR]; NaN gives 1.
+// uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
+// bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
+// on give UNIFORM_MAX_FACTOR, else the nearest integer, halves up (UNIFORM_ROUND_FROM_BITS = 1.5f and
+// F32_INFINITY_BITS are generated from that function's checks).
 uint uniform_factor(float f) {
-    if ((floatBitsToUint(f) & 0x7FFFFFFFu) > 0x7F800000u || !(f >= 1.5)) return 1u;
-    if (!(f < float(UNIFORM_MAX_FACTOR) - 0.5)) return UNIFORM_MAX_FACTOR;
-    return uint(f + 0.5);
+    uint bits = floatBitsToUint(f);
+    if (bits < UNIFORM_ROUND_FROM_BITS || bits > F32_INFINITY_BITS) return 1u;
+    uint exponent = (bits >> 23) - 127u; // f in [2^exponent, 2^(exponent + 1)), exponent >= 0
+    if (exponent >= 23u) return UNIFORM_MAX_FACTOR;
+    uint mantissa = (bits & 0x7FFFFFu) | 0x800000u; // f = mantissa * 2^(exponent - 23)
+    uint shift = 23u - exponent;
+    uint rounded = (mantissa + (1u << (shift - 1u))) >> shift; // halves up, exact
+    return min(rounded, UNIFORM_MAX_FACTOR);
 }
 uint uniform_edge_parameter(uint i, uint f) {
     uint small_ = min(i, f - i);
@@ -598,7 +586,7 @@ uint uniform_edge_parameter(uint i, uint f) {
 }
 uint uniform_pattern_index(uint f0, uint f1, uint f2) { return (f0 - 1u) * f0 * (f0 + 1u) / 6u + (f1 - 1u) * f1 / 2u + (f2 - 1u); }
 // A 65534-unit weight in units of 2^-24: nearest, never a tie, so mirror-exact.
-uint uniform_to_fixed(uint w) { return 256u * w + (512u * w + 32767u) / 65534u; }
+uint uniform_to_fixed(uint w) { return 256u * w + (512u * w + 32767u) / UNIFORM_ONE; }
 // The uniform setup words from the integer factors of base edges E0, E1, E2 (UniformPatch's constructor).
 // Returns the counts; words: pattern index, f0 | f1 << 8 | f2 << 16, corner sources | flip << 12.
 uvec2 uniform_setup(uint f[3], out uvec3 words) {
@@ -620,7 +608,7 @@ uvec2 uniform_setup(uint f[3], out uvec3 words) {
 }
 // Vertex i as base weights (w1, w2), units of 2^-24.
 uvec2 uniform_vertex(uint rec, uint i) {
-    uint index = patches[rec + SETUP], sorted = patches[rec + SETUP + 1u], corners = patches[rec + SETUP + 2u];
+    uint index = patches[rec + SETUP + USETUP_PATTERN], sorted = patches[rec + SETUP + USETUP_SORTED], corners = patches[rec + SETUP + USETUP_CORNERS];
     uint f0 = sorted & 255u, f1 = (sorted >> 8) & 255u, f2 = sorted >> 16;
     uvec2 c;
     if (i < f0) c = uvec2(uniform_edge_parameter(i, f0), 0u);
@@ -635,9 +623,9 @@ uvec2 uniform_vertex(uint rec, uint i) {
 }
 uint uniform_index_byte(uint b) { return (tables[UNIFORM_TRIANGLE + (b >> 2)] >> ((b & 3u) * 8u)) & 255u; }
 uvec3 uniform_triangle(uint rec, uint p) {
-    uint b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP]] >> 16) + p);
+    uint b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP + USETUP_PATTERN]] >> 16) + p);
     uvec3 t = uvec3(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
-    return (patches[rec + SETUP + 2u] & 4096u) != 0u ? t.xzy : t;
+    return (patches[rec + SETUP + USETUP_CORNERS] & 4096u) != 0u ? t.xzy : t;
 }
 
 // ---- patch records (PatchRecord) ----
@@ -651,39 +639,39 @@ uint smallest_edge_rotation(float l[3]) {
     }
     return (smallest + 1u) % 3u;
 }
-// The setup block (patch_setup_block.hpp's word order): written once by the setup pass, read by every emit
+// The setup block (rt::setup_word's word order, runtime/include/ctess/runtime/cp/setup_block.hpp): written once by the setup pass, read by every emit
 // invocation instead of redoing patch_setup.
 void store_setup_block(uint rec, Patch p) {
     uint b = rec + SETUP;
-    patches[b] = p.type_ | (p.c0 ? 4u : 0u) | (p.c1 ? 8u : 0u) | (p.c2 ? 16u : 0u) | (p.copies ? 32u : 0u) |
+    patches[b + SETUP_FLAGS] = p.type_ | (p.c0 ? 4u : 0u) | (p.c1 ? 8u : 0u) | (p.c2 ? 16u : 0u) | (p.copies ? 32u : 0u) |
                  (p.tri_skips << 8) | (p.slot_skips << 12);
     for (uint k = 0u; k < 3u; ++k) {
-        patches[b + 1u + k] = p.e[k].points | (p.e[k].segments << 16);
-        patches[b + 4u + k] = p.e[k].half_step;
+        patches[b + SETUP_TOKEN_REC + k] = p.e[k].points | (p.e[k].segments << 16);
+        patches[b + SETUP_HALF_STEP + k] = p.e[k].half_step;
     }
-    patches[b + 7u] = p.column;
-    patches[b + 8u] = p.type_ == 2u ? p.gap - GAP_WORD : 0u;
-    patches[b + 9u] = p.clamp_;
-    patches[b + 10u] = p.strips;
-    patches[b + 11u] = p.e1_offset;
-    patches[b + 12u] = p.unique_;
-    patches[b + 13u] = p.copy_bias;
-    for (uint k = 0u; k < 2u; ++k) patches[b + 14u + k] = p.slot_skip[k].x | (p.slot_skip[k].y << 16);
+    patches[b + SETUP_COLUMN] = p.column;
+    patches[b + SETUP_GAP] = p.type_ == 2u ? p.gap - GAP_WORD : 0u;
+    patches[b + SETUP_CLAMP] = p.clamp_;
+    patches[b + SETUP_STRIPS] = p.strips;
+    patches[b + SETUP_E1_OFFSET] = p.e1_offset;
+    patches[b + SETUP_UNIQUE] = p.unique_;
+    patches[b + SETUP_COPY_BIAS] = p.copy_bias;
+    for (uint k = 0u; k < SETUP_SLOT_SKIPS; ++k) patches[b + SETUP_SLOT_SKIP + k] = p.slot_skip[k].x | (p.slot_skip[k].y << 16);
     for (uint k = 0u; k < 8u; ++k) {
-        patches[b + 16u + 2u * k] = p.tri_skip[k].x;
-        patches[b + 17u + 2u * k] = p.tri_skip[k].y;
+        patches[b + SETUP_TRI_SKIP + 2u * k] = p.tri_skip[k].x;
+        patches[b + (SETUP_TRI_SKIP + 1u) + 2u * k] = p.tri_skip[k].y;
     }
 }
 Patch record_patch(uint rec) {
     Patch p = patch_zero();
     uint b = rec + SETUP;
-    uint flags = patches[b];
+    uint flags = patches[b + SETUP_FLAGS];
     for (uint k = 0u; k < 3u; ++k) {
-        uint tr = patches[b + 1u + k];
+        uint tr = patches[b + SETUP_TOKEN_REC + k];
         p.e[k].points = tr & 0xFFFFu;
         p.e[k].segments = tr >> 16;
-        p.e[k].half_step = patches[b + 4u + k];
-        p.e[k].t16 = patches[rec + 1u + k] == 0u ? 0u : patches[rec + 4u + k];
+        p.e[k].half_step = patches[b + SETUP_HALF_STEP + k];
+        p.e[k].t16 = patches[rec + REC_TOKEN + k] == 0u ? 0u : patches[rec + REC_T16 + k];
     }
     p.type_ = flags & 3u;
     p.c0 = (flags & 4u) != 0u;
@@ -695,24 +683,24 @@ Patch record_patch(uint rec) {
     p.n0 = p.e[0].segments;
     p.n1 = p.e[1].segments;
     p.n2 = p.e[2].segments;
-    p.vertices = patches[rec + 7u];
-    p.triangles = patches[rec + 8u];
+    p.vertices = patches[rec + REC_VERTEX_COUNT];
+    p.triangles = patches[rec + REC_TRIANGLE_COUNT];
     if (p.type_ == 2u) {
-        p.column = patches[b + 7u];
+        p.column = patches[b + SETUP_COLUMN];
         load_column_record(p);
-        p.gap = GAP_WORD + patches[b + 8u];
-        p.clamp_ = patches[b + 9u];
-        p.strips = patches[b + 10u];
+        p.gap = GAP_WORD + patches[b + SETUP_GAP];
+        p.clamp_ = patches[b + SETUP_CLAMP];
+        p.strips = patches[b + SETUP_STRIPS];
         p.zipper = p.n0 + p.n1 - 1u;
-        p.e1_offset = patches[b + 11u];
-        p.unique_ = patches[b + 12u];
-        p.copy_bias = patches[b + 13u];
+        p.e1_offset = patches[b + SETUP_E1_OFFSET];
+        p.unique_ = patches[b + SETUP_UNIQUE];
+        p.copy_bias = patches[b + SETUP_COPY_BIAS];
     }
     for (uint k = 0u; k < p.slot_skips; ++k) {
-        uint w = patches[b + 14u + k];
+        uint w = patches[b + SETUP_SLOT_SKIP + k];
         p.slot_skip[k] = uvec2(w & 0xFFFFu, w >> 16);
     }
-    for (uint k = 0u; k < p.tri_skips; ++k) p.tri_skip[k] = uvec2(patches[b + 16u + 2u * k], patches[b + 17u + 2u * k]);
+    for (uint k = 0u; k < p.tri_skips; ++k) p.tri_skip[k] = uvec2(patches[b + SETUP_TRI_SKIP + 2u * k], patches[b + (SETUP_TRI_SKIP + 1u) + 2u * k]);
     return p;
 }
 
@@ -723,8 +711,8 @@ void setup_one_patch(uint t) {
     uvec3 w;
     if (!base_triangle(t, w)) return;
     uint wv[3] = uint[3](w.x, w.y, w.z);
-    float scale = uintBitsToFloat(params[3]);
-    vec3 eye = vec3(uintBitsToFloat(params[4]), uintBitsToFloat(params[5]), uintBitsToFloat(params[6]));
+    float scale = uintBitsToFloat(params[PARAM_FACTOR_SCALE]);
+    vec3 eye = vec3(uintBitsToFloat(params[PARAM_EYE]), uintBitsToFloat(params[PARAM_EYE + 1u]), uintBitsToFloat(params[PARAM_EYE + 2u]));
     float factor[3], length2[3];
     for (uint k = 0u; k < 3u; ++k) {
         uint i = wv[k], j = wv[(k + 1u) % 3u];
@@ -737,59 +725,58 @@ void setup_one_patch(uint t) {
         uint f[3];
         for (uint k = 0u; k < 3u; ++k) {
             f[k] = uniform_factor(factor[k]);
-            patches[rec + 1u + k] = f[k];
-            patches[rec + 11u + k] = floatBitsToUint(factor[k]);
+            patches[rec + REC_TOKEN + k] = f[k];
+            patches[rec + REC_FACTOR + k] = floatBitsToUint(factor[k]);
         }
         uvec3 words;
         uvec2 counts = uniform_setup(f, words);
-        patches[rec + 7u] = counts.x;
-        patches[rec + 8u] = counts.y;
-        patches[rec + SETUP] = words.x;
-        patches[rec + SETUP + 1u] = words.y;
-        patches[rec + SETUP + 2u] = words.z;
+        patches[rec + REC_VERTEX_COUNT] = counts.x;
+        patches[rec + REC_TRIANGLE_COUNT] = counts.y;
+        patches[rec + SETUP + USETUP_PATTERN] = words.x;
+        patches[rec + SETUP + USETUP_SORTED] = words.y;
+        patches[rec + SETUP + USETUP_CORNERS] = words.z;
         return;
     }
     uint rot = smallest_edge_rotation(length2);
     uvec2 s[3];
     for (uint k = 0u; k < 3u; ++k) s[k] = line_state(factor[(k + rot) % 3u]);
     Patch p = patch_setup(s[0], s[1], s[2]);
-    patches[rec] = rot;
+    patches[rec + REC_ROTATION] = rot;
     for (uint k = 0u; k < 3u; ++k) {
-        patches[rec + 1u + k] = s[k].x;
-        patches[rec + 4u + k] = s[k].y;
-        patches[rec + 11u + k] = floatBitsToUint(factor[k]);
+        patches[rec + REC_TOKEN + k] = s[k].x;
+        patches[rec + REC_T16 + k] = s[k].y;
+        patches[rec + REC_FACTOR + k] = floatBitsToUint(factor[k]);
     }
-    patches[rec + 7u] = p.vertices;
-    patches[rec + 8u] = p.triangles;
+    patches[rec + REC_VERTEX_COUNT] = p.vertices;
+    patches[rec + REC_TRIANGLE_COUNT] = p.triangles;
     store_setup_block(rec, p);
 }
-// Grid-stride: a host may dispatch fewer workgroups than patches / 64 (at most 65,535 per dimension).
+// Grid-stride: a host may dispatch fewer workgroups than patches / SETUP_GROUP (at most MAX_DISPATCH_WORKGROUPS).
 void ctess_patch_setup() {
     uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     for (uint t = gl_GlobalInvocationID.x; t < patch_count(); t += stride) setup_one_patch(t);
 }
 
-// Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+// Pass 2, one workgroup of SCAN_GROUP = 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
 // Totals that do not fit in u32 (indices are u32) are written as TOTALS_OVERFLOW, both of them: hosts refuse them.
-const uint TOTALS_OVERFLOW = 0xFFFFFFFFu;
-shared uvec2 scan_sum[128];
+shared uvec2 scan_sum[SCAN_GROUP];
 shared uint scan_overflow;
 void ctess_prefix_sum() {
     uint n = patch_count();
     uint lane = gl_LocalInvocationID.x;
     if (lane == 0u) scan_overflow = 0u;
     bool overflow = false;
-    uint per = (n + 127u) / 128u;
+    uint per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
     uint begin = min(n, lane * per), end = min(n, begin + per);
     uvec2 sum = uvec2(0u);
     for (uint t = begin; t < end; ++t) {
-        uvec2 count = uvec2(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+        uvec2 count = uvec2(patches[t * PATCH_WORDS + REC_VERTEX_COUNT], patches[t * PATCH_WORDS + REC_TRIANGLE_COUNT]);
         sum += count;
         overflow = overflow || sum.x < count.x || sum.y < count.y || sum.x == TOTALS_OVERFLOW || sum.y == TOTALS_OVERFLOW;
     }
     scan_sum[lane] = sum;
     barrier();
-    for (uint d = 1u; d < 128u; d <<= 1) {
+    for (uint d = 1u; d < SCAN_GROUP; d <<= 1) {
         uvec2 add = lane >= d ? scan_sum[lane - d] : uvec2(0u);
         barrier();
         uvec2 before = scan_sum[lane];
@@ -803,31 +790,31 @@ void ctess_prefix_sum() {
     uvec2 base = scan_sum[lane] - sum;
     for (uint t = begin; t < end; ++t) {
         uint rec = t * PATCH_WORDS;
-        patches[rec + 9u] = base.x;
-        patches[rec + 10u] = base.y;
-        base += uvec2(patches[rec + 7u], patches[rec + 8u]);
+        patches[rec + REC_FIRST_VERTEX] = base.x;
+        patches[rec + REC_FIRST_TRIANGLE] = base.y;
+        base += uvec2(patches[rec + REC_VERTEX_COUNT], patches[rec + REC_TRIANGLE_COUNT]);
     }
-    if (lane == 127u) {
+    if (lane == SCAN_GROUP - 1u) {
         bool too_large = scan_overflow != 0u;
-        patches[n * PATCH_WORDS] = too_large ? TOTALS_OVERFLOW : scan_sum[127].x;
-        patches[n * PATCH_WORDS + 1u] = too_large ? TOTALS_OVERFLOW : scan_sum[127].y;
+        patches[n * PATCH_WORDS] = too_large ? TOTALS_OVERFLOW : scan_sum[SCAN_GROUP - 1u].x;
+        patches[n * PATCH_WORDS + 1u] = too_large ? TOTALS_OVERFLOW : scan_sum[SCAN_GROUP - 1u].y;
     }
 }
 
 // Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex.
 void ctess_emit_vertices() {
-    uint end = min(params[9], patch_count());
-    float alpha = uintBitsToFloat(params[2]);
-    uint surface = params[1];
-    for (uint t = params[8] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    uint end = min(params[PARAM_END_PATCH], patch_count());
+    float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
+    uint surface = params[PARAM_SURFACE];
+    for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
-        uint count = patches[rec + 7u];
+        uint count = patches[rec + REC_VERTEX_COUNT];
         uvec3 w;
         if (count == 0u || !base_triangle(t, w)) continue;
         bool uniform_ = uniform_pattern();
         Patch p = uniform_ ? patch_zero() : record_patch(rec);
-        uint rot = patches[rec];
-        uint first = patches[rec + 9u];
+        uint rot = patches[rec + REC_ROTATION];
+        uint first = patches[rec + REC_FIRST_VERTEX];
         Corner c[3] = Corner[3](mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uvec2 d = uniform_ ? uniform_vertex(rec, i) : patch_vertex(p, i);
@@ -837,31 +824,31 @@ void ctess_emit_vertices() {
             for (uint k = 0u; k < 3u; ++k) bw[(k + rot) % 3u] = pw[k];
             SurfacePoint sp = evaluate_surface(c, bw, surface, alpha);
             uint o = (first + i) * VERTEX_WORDS;
-            out_vertices[o] = bw[1];
-            out_vertices[o + 1u] = bw[2];
-            out_vertices[o + 2u] = floatBitsToUint(sp.position.x);
-            out_vertices[o + 3u] = floatBitsToUint(sp.position.y);
-            out_vertices[o + 4u] = floatBitsToUint(sp.position.z);
-            out_vertices[o + 5u] = floatBitsToUint(sp.normal.x);
-            out_vertices[o + 6u] = floatBitsToUint(sp.normal.y);
-            out_vertices[o + 7u] = floatBitsToUint(sp.normal.z);
-            out_vertices[o + 8u] = floatBitsToUint(sp.uv.x);
-            out_vertices[o + 9u] = floatBitsToUint(sp.uv.y);
+            out_vertices[o + VERTEX_U] = bw[1];
+            out_vertices[o + VERTEX_V] = bw[2];
+            out_vertices[o + VERTEX_POSITION] = floatBitsToUint(sp.position.x);
+            out_vertices[o + (VERTEX_POSITION + 1u)] = floatBitsToUint(sp.position.y);
+            out_vertices[o + (VERTEX_POSITION + 2u)] = floatBitsToUint(sp.position.z);
+            out_vertices[o + VERTEX_NORMAL] = floatBitsToUint(sp.normal.x);
+            out_vertices[o + (VERTEX_NORMAL + 1u)] = floatBitsToUint(sp.normal.y);
+            out_vertices[o + (VERTEX_NORMAL + 2u)] = floatBitsToUint(sp.normal.z);
+            out_vertices[o + VERTEX_UV] = floatBitsToUint(sp.uv.x);
+            out_vertices[o + (VERTEX_UV + 1u)] = floatBitsToUint(sp.uv.y);
         }
     }
 }
 
 // Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices.
 void ctess_emit_triangles() {
-    uint end = min(params[9], patch_count());
-    for (uint t = params[8] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    uint end = min(params[PARAM_END_PATCH], patch_count());
+    for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
-        uint count = patches[rec + 8u];
+        uint count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) continue;
         bool uniform_ = uniform_pattern();
         Patch p = uniform_ ? patch_zero() : record_patch(rec);
-        uint vfirst = patches[rec + 9u];
-        uint tfirst = patches[rec + 10u];
+        uint vfirst = patches[rec + REC_FIRST_VERTEX];
+        uint tfirst = patches[rec + REC_FIRST_TRIANGLE];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uvec3 tri = (uniform_ ? uniform_triangle(rec, i) : patch_triangle(p, i)) + uvec3(vfirst);
             uint o = 3u * (tfirst + i);

@@ -1,31 +1,11 @@
-// ctess CP mesh pipeline, WGSL compute. Generated from shaders/ctess_cp.wgsl by gen/: the generator fills in the double-brace
-// placeholders (max factor, token counts, table section offsets). Four entry points, the same steps as
-// runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_cp.comp.glsl, operation for operation;
-// the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
+// ctess mesh pipeline (both pattern families: CP and uniform density), WGSL compute. Generated from
+// shaders/ctess_mesh.wgsl by gen/: the generator replaces the constants placeholder below with a block of `const`
+// lines taken from the C++ definitions (gen/shaders/shader_layout.hpp and the table blob's layout; docs/shaders.md,
+// "Generated constants"), so no layout number is written by hand here. Four entry points, the same steps as
+// runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_mesh.comp.glsl, operation for
+// operation; the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 
-const MAX_FACTOR: u32 = {{MAX_FACTOR}}u;
-const TOKENS: u32 = {{TOKENS}}u;
-const SHAPES: u32 = {{SHAPES}}u;
-const TOKEN_RANGE: u32 = {{TOKEN_RANGE}}u;
-const TOKEN_RECORD: u32 = {{TOKEN_RECORD}}u;
-const POINT: u32 = {{POINT}}u;
-const COLUMN_RECORD: u32 = {{COLUMN_RECORD}}u;
-const COLUMN_POOL: u32 = {{COLUMN_POOL}}u;
-const GAP_OFFSET: u32 = {{GAP_OFFSET}}u;
-const GAP_WORD: u32 = {{GAP_WORD}}u;
-const T1_LAST_FAN: u32 = {{T1_LAST_FAN}}u;
-const SEARCH_WINDOW: u32 = {{SEARCH_WINDOW}}u;
-const UNIFORM_MAX_FACTOR: u32 = {{UNIFORM_MAX_FACTOR}}u;
-const UNIFORM_OFFSET: u32 = {{UNIFORM_OFFSET}}u;
-const UNIFORM_INTERIOR: u32 = {{UNIFORM_INTERIOR}}u;
-const UNIFORM_TRIANGLE: u32 = {{UNIFORM_TRIANGLE}}u;
-const FIXED_ONE: u32 = 16777216u; // 2^24
-const LERP_ONE: u32 = 65536u;
-const PATCH_WORDS: u32 = 48u;
-const SETUP: u32 = 16u; // the setup block's first word in a record (patch_setup_block.hpp)
-const VERTEX_WORDS: u32 = 10u;
-const MESH_VERTEX_FLOATS: u32 = 8u;
-const GROUP: u32 = 64u;
+{{CONSTANTS}}
 
 // params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
 // patch range [first, end) that the emit passes cover (hosts may emit in batches), and the pattern (0 CP, 1 uniform)
@@ -37,8 +17,8 @@ const GROUP: u32 = 64u;
 @group(0) @binding(5) var<storage, read_write> out_vertices: array<u32>;
 @group(0) @binding(6) var<storage, read_write> out_indices: array<u32>;
 
-fn patch_count() -> u32 { return params[0]; }
-fn uniform_pattern() -> bool { return params[10] == 1u; }
+fn patch_count() -> u32 { return params[PARAM_PATCH_COUNT]; }
+fn uniform_pattern() -> bool { return params[PARAM_PATTERN] == PATTERN_UNIFORM; }
 
 // ---- 64-bit helpers: x = (lo, hi) ----
 fn mul_wide(a: u32, b: u32) -> vec2<u32> {
@@ -67,7 +47,7 @@ fn line_state(f: f32) -> vec2<u32> {
     var f16: u32;
     if (is_nan_bits(f) || f <= 1.0) { f16 = LERP_ONE; }
     else if (f >= f32(MAX_FACTOR)) { f16 = MAX_FACTOR << 16u; }
-    else { f16 = u32(round(f * 65536.0)); }
+    else { f16 = u32(round(f * f32(LERP_ONE))); }
     if (f16 <= LERP_ONE) { return vec2<u32>(0u, 0u); }
     for (var t = 1u; t < TOKENS; t++) {
         let range = tables[TOKEN_RANGE + t];
@@ -94,7 +74,7 @@ struct Patch {
     head: u32, n0: u32, n1: u32, n2: u32,
     a: f32, b: f32,
     copy_bias: u32, clamp_: u32, e1_offset: u32, unique_: u32, strips: u32, zipper: u32, vertices: u32, triangles: u32,
-    tri_skip: array<vec2<u32>, 8>,
+    tri_skip: array<vec2<u32>, SETUP_TRI_SKIPS>,
     tri_skips: u32,
     slot_skip: array<vec2<u32>, 4>,
     slot_skips: u32,
@@ -470,7 +450,7 @@ fn base_triangle(t: u32) -> vec3<u32> {
     return vec3<u32>(mesh_indices[3u * t], mesh_indices[3u * t + 1u], mesh_indices[3u * t + 2u]);
 }
 fn base_triangle_valid(w: vec3<u32>) -> bool {
-    let n = params[7];
+    let n = params[PARAM_MESH_VERTEX_COUNT];
     return w.x < n && w.y < n && w.z < n;
 }
 
@@ -516,14 +496,14 @@ fn edge_surface(a: Corner, b: Corner, s: f32, t: f32, surface: u32, alpha: f32) 
     let uv = vec2<f32>(s * a.uv.x + t * b.uv.x, s * a.uv.y + t * b.uv.y);
     var pos = flat_p;
     var n = flat_n;
-    if (surface == 1u) {
+    if (surface == SURFACE_PN) {
         let bab = pn_edge_point(a, b); let bba = pn_edge_point(b, a);
         let s2 = s * s; let t2 = t * t;
         let pn = (s2 * s) * a.position + (3.0 * s2 * t) * bab + (3.0 * s * t2) * bba + (t2 * t) * b.position;
         let nn = s2 * a.normal + t2 * b.normal + (s * t) * pn_edge_normal(a, b);
         pos = blend(flat_p, pn, alpha);
         n = blend(flat_n, nn, alpha);
-    } else if (surface == 2u) {
+    } else if (surface == SURFACE_PHONG) {
         let ph = (s * s) * a.position + (t * t) * b.position +
                  (s * t) * (phong_project(b.position, a) + phong_project(a.position, b));
         pos = blend(flat_p, ph, alpha);
@@ -536,7 +516,7 @@ fn interior_surface(c0: Corner, c1: Corner, c2: Corner, w0: f32, w1: f32, w2: f3
     let uv = vec2<f32>(w0 * c0.uv.x + w1 * c1.uv.x + w2 * c2.uv.x, w0 * c0.uv.y + w1 * c1.uv.y + w2 * c2.uv.y);
     var pos = flat_p;
     var n = flat_n;
-    if (surface == 1u) {
+    if (surface == SURFACE_PN) {
         let b210 = pn_edge_point(c0, c1); let b120 = pn_edge_point(c1, c0);
         let b021 = pn_edge_point(c1, c2); let b012 = pn_edge_point(c2, c1);
         let b102 = pn_edge_point(c2, c0); let b201 = pn_edge_point(c0, c2);
@@ -552,7 +532,7 @@ fn interior_surface(c0: Corner, c1: Corner, c2: Corner, w0: f32, w1: f32, w2: f3
                  (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
         pos = blend(flat_p, pn, alpha);
         n = blend(flat_n, nn, alpha);
-    } else if (surface == 2u) {
+    } else if (surface == SURFACE_PHONG) {
         let ph = (w0 * w0) * c0.position + (w1 * w1) * c1.position + (w2 * w2) * c2.position +
                  (w0 * w1) * (phong_project(c1.position, c0) + phong_project(c0.position, c1)) +
                  (w1 * w2) * (phong_project(c2.position, c1) + phong_project(c1.position, c2)) +
@@ -561,7 +541,7 @@ fn interior_surface(c0: Corner, c1: Corner, c2: Corner, w0: f32, w1: f32, w2: f3
     }
     return SurfacePoint(pos, normalize_or_zero(n), uv);
 }
-fn fixed_weight(w: u32) -> f32 { return f32(w) * (1.0 / 16777216.0); }
+fn fixed_weight(w: u32) -> f32 { return f32(w) * (1.0 / f32(FIXED_ONE)); }
 fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: u32, alpha: f32) -> SurfacePoint {
     var c = corners;
     var w = weights;
@@ -579,12 +559,19 @@ fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: 
 }
 
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
-const UNIFORM_ONE: u32 = 65534u;
-// Rounded to the nearest integer (halves up), clamped to [1, UNIFORM_MAX_FACTOR]; NaN gives 1.
+// uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
+// bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
+// on give UNIFORM_MAX_FACTOR, else the nearest integer, halves up (UNIFORM_ROUND_FROM_BITS = 1.5f and
+// F32_INFINITY_BITS are generated from that function's checks).
 fn uniform_factor(f: f32) -> u32 {
-    if (is_nan_bits(f) || !(f >= 1.5)) { return 1u; }
-    if (!(f < f32(UNIFORM_MAX_FACTOR) - 0.5)) { return UNIFORM_MAX_FACTOR; }
-    return u32(f + 0.5);
+    let bits = bitcast<u32>(f);
+    if (bits < UNIFORM_ROUND_FROM_BITS || bits > F32_INFINITY_BITS) { return 1u; }
+    let exponent = (bits >> 23u) - 127u; // f in [2^exponent, 2^(exponent + 1)), exponent >= 0
+    if (exponent >= 23u) { return UNIFORM_MAX_FACTOR; }
+    let mantissa = (bits & 0x7FFFFFu) | 0x800000u; // f = mantissa * 2^(exponent - 23)
+    let shift = 23u - exponent;
+    let rounded = (mantissa + (1u << (shift - 1u))) >> shift; // halves up, exact
+    return min(rounded, UNIFORM_MAX_FACTOR);
 }
 fn uniform_edge_parameter(i: u32, f: u32) -> u32 {
     let nearer = min(i, f - i);
@@ -593,7 +580,7 @@ fn uniform_edge_parameter(i: u32, f: u32) -> u32 {
 }
 fn uniform_pattern_index(f0: u32, f1: u32, f2: u32) -> u32 { return (f0 - 1u) * f0 * (f0 + 1u) / 6u + (f1 - 1u) * f1 / 2u + (f2 - 1u); }
 // A 65534-unit weight in units of 2^-24: nearest, never a tie, so mirror-exact.
-fn uniform_to_fixed(w: u32) -> u32 { return 256u * w + (512u * w + 32767u) / 65534u; }
+fn uniform_to_fixed(w: u32) -> u32 { return 256u * w + (512u * w + 32767u) / UNIFORM_ONE; }
 // The uniform setup words from the integer factors of base edges E0, E1, E2 (UniformPatch's constructor).
 // Returns the counts; words: pattern index, f0 | f1 << 8 | f2 << 16, corner sources | flip << 12.
 fn uniform_setup(f: array<u32, 3>, words: ptr<function, vec3<u32>>) -> vec2<u32> {
@@ -616,9 +603,9 @@ fn uniform_setup(f: array<u32, 3>, words: ptr<function, vec3<u32>>) -> vec2<u32>
 }
 // Vertex i as base weights (w1, w2), units of 2^-24.
 fn uniform_vertex(rec: u32, i: u32) -> vec2<u32> {
-    let index = patches[rec + SETUP];
-    let sorted = patches[rec + SETUP + 1u];
-    let corners = patches[rec + SETUP + 2u];
+    let index = patches[rec + SETUP + USETUP_PATTERN];
+    let sorted = patches[rec + SETUP + USETUP_SORTED];
+    let corners = patches[rec + SETUP + USETUP_CORNERS];
     let f0 = sorted & 255u; let f1 = (sorted >> 8u) & 255u; let f2 = sorted >> 16u;
     var c: vec2<u32>;
     if (i < f0) {
@@ -637,9 +624,9 @@ fn uniform_vertex(rec: u32, i: u32) -> vec2<u32> {
 }
 fn uniform_index_byte(b: u32) -> u32 { return (tables[UNIFORM_TRIANGLE + (b >> 2u)] >> ((b & 3u) * 8u)) & 255u; }
 fn uniform_triangle(rec: u32, p: u32) -> vec3<u32> {
-    let b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP]] >> 16u) + p);
+    let b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP + USETUP_PATTERN]] >> 16u) + p);
     let t = vec3<u32>(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
-    if ((patches[rec + SETUP + 2u] & 4096u) != 0u) { return t.xzy; }
+    if ((patches[rec + SETUP + USETUP_CORNERS] & 4096u) != 0u) { return t.xzy; }
     return t;
 }
 
@@ -649,16 +636,16 @@ fn store_uniform_record(rec: u32, factor: array<f32, 3>) {
     var f: array<u32, 3>;
     for (var k = 0u; k < 3u; k++) {
         f[k] = uniform_factor(factor[k]);
-        patches[rec + 1u + k] = f[k];
-        patches[rec + 11u + k] = bitcast<u32>(factor[k]);
+        patches[rec + REC_TOKEN + k] = f[k];
+        patches[rec + REC_FACTOR + k] = bitcast<u32>(factor[k]);
     }
     var words: vec3<u32>;
     let counts = uniform_setup(f, &words);
-    patches[rec + 7u] = counts.x;
-    patches[rec + 8u] = counts.y;
-    patches[rec + SETUP] = words.x;
-    patches[rec + SETUP + 1u] = words.y;
-    patches[rec + SETUP + 2u] = words.z;
+    patches[rec + REC_VERTEX_COUNT] = counts.x;
+    patches[rec + REC_TRIANGLE_COUNT] = counts.y;
+    patches[rec + SETUP + USETUP_PATTERN] = words.x;
+    patches[rec + SETUP + USETUP_SORTED] = words.y;
+    patches[rec + SETUP + USETUP_CORNERS] = words.z;
 }
 
 // ---- patch records (PatchRecord) ----
@@ -671,39 +658,39 @@ fn smallest_edge_rotation(lengths: array<f32, 3>) -> u32 {
     }
     return (smallest + 1u) % 3u;
 }
-// The setup block (patch_setup_block.hpp's word order): written once by the setup pass, read by every emit
+// The setup block (rt::setup_word's word order, runtime/include/ctess/runtime/cp/setup_block.hpp): written once by the setup pass, read by every emit
 // invocation instead of redoing patch_setup.
 fn store_setup_block(rec: u32, p: Patch) {
     let b = rec + SETUP;
-    patches[b] = p.type_ | select(0u, 4u, p.c0) | select(0u, 8u, p.c1) | select(0u, 16u, p.c2) |
+    patches[b + SETUP_FLAGS] = p.type_ | select(0u, 4u, p.c0) | select(0u, 8u, p.c1) | select(0u, 16u, p.c2) |
                  select(0u, 32u, p.copies) | (p.tri_skips << 8u) | (p.slot_skips << 12u);
     for (var k = 0u; k < 3u; k++) {
-        patches[b + 1u + k] = p.e[k].points | (p.e[k].segments << 16u);
-        patches[b + 4u + k] = p.e[k].half_step;
+        patches[b + SETUP_TOKEN_REC + k] = p.e[k].points | (p.e[k].segments << 16u);
+        patches[b + SETUP_HALF_STEP + k] = p.e[k].half_step;
     }
-    patches[b + 7u] = p.column;
-    patches[b + 8u] = select(0u, p.gap - GAP_WORD, p.type_ == 2u);
-    patches[b + 9u] = p.clamp_;
-    patches[b + 10u] = p.strips;
-    patches[b + 11u] = p.e1_offset;
-    patches[b + 12u] = p.unique_;
-    patches[b + 13u] = p.copy_bias;
-    for (var k = 0u; k < 2u; k++) { patches[b + 14u + k] = p.slot_skip[k].x | (p.slot_skip[k].y << 16u); }
-    for (var k = 0u; k < 8u; k++) {
-        patches[b + 16u + 2u * k] = p.tri_skip[k].x;
-        patches[b + 17u + 2u * k] = p.tri_skip[k].y;
+    patches[b + SETUP_COLUMN] = p.column;
+    patches[b + SETUP_GAP] = select(0u, p.gap - GAP_WORD, p.type_ == 2u);
+    patches[b + SETUP_CLAMP] = p.clamp_;
+    patches[b + SETUP_STRIPS] = p.strips;
+    patches[b + SETUP_E1_OFFSET] = p.e1_offset;
+    patches[b + SETUP_UNIQUE] = p.unique_;
+    patches[b + SETUP_COPY_BIAS] = p.copy_bias;
+    for (var k = 0u; k < SETUP_SLOT_SKIPS; k++) { patches[b + SETUP_SLOT_SKIP + k] = p.slot_skip[k].x | (p.slot_skip[k].y << 16u); }
+    for (var k = 0u; k < SETUP_TRI_SKIPS; k++) {
+        patches[b + SETUP_TRI_SKIP + 2u * k] = p.tri_skip[k].x;
+        patches[b + (SETUP_TRI_SKIP + 1u) + 2u * k] = p.tri_skip[k].y;
     }
 }
 fn record_patch(rec: u32) -> Patch {
     var p: Patch; // zero-initialised
     let b = rec + SETUP;
-    let flags = patches[b];
+    let flags = patches[b + SETUP_FLAGS];
     for (var k = 0u; k < 3u; k++) {
-        let tr = patches[b + 1u + k];
+        let tr = patches[b + SETUP_TOKEN_REC + k];
         p.e[k].points = tr & 0xFFFFu;
         p.e[k].segments = tr >> 16u;
-        p.e[k].half_step = patches[b + 4u + k];
-        p.e[k].t16 = select(patches[rec + 4u + k], 0u, patches[rec + 1u + k] == 0u);
+        p.e[k].half_step = patches[b + SETUP_HALF_STEP + k];
+        p.e[k].t16 = select(patches[rec + REC_T16 + k], 0u, patches[rec + REC_TOKEN + k] == 0u);
     }
     p.type_ = flags & 3u;
     p.c0 = (flags & 4u) != 0u;
@@ -715,24 +702,24 @@ fn record_patch(rec: u32) -> Patch {
     p.n0 = p.e[0].segments;
     p.n1 = p.e[1].segments;
     p.n2 = p.e[2].segments;
-    p.vertices = patches[rec + 7u];
-    p.triangles = patches[rec + 8u];
+    p.vertices = patches[rec + REC_VERTEX_COUNT];
+    p.triangles = patches[rec + REC_TRIANGLE_COUNT];
     if (p.type_ == 2u) {
-        p.column = patches[b + 7u];
+        p.column = patches[b + SETUP_COLUMN];
         load_column_record(&p);
-        p.gap = GAP_WORD + patches[b + 8u];
-        p.clamp_ = patches[b + 9u];
-        p.strips = patches[b + 10u];
+        p.gap = GAP_WORD + patches[b + SETUP_GAP];
+        p.clamp_ = patches[b + SETUP_CLAMP];
+        p.strips = patches[b + SETUP_STRIPS];
         p.zipper = p.n0 + p.n1 - 1u;
-        p.e1_offset = patches[b + 11u];
-        p.unique_ = patches[b + 12u];
-        p.copy_bias = patches[b + 13u];
+        p.e1_offset = patches[b + SETUP_E1_OFFSET];
+        p.unique_ = patches[b + SETUP_UNIQUE];
+        p.copy_bias = patches[b + SETUP_COPY_BIAS];
     }
     for (var k = 0u; k < p.slot_skips; k++) {
-        let w = patches[b + 14u + k];
+        let w = patches[b + SETUP_SLOT_SKIP + k];
         p.slot_skip[k] = vec2<u32>(w & 0xFFFFu, w >> 16u);
     }
-    for (var k = 0u; k < p.tri_skips; k++) { p.tri_skip[k] = vec2<u32>(patches[b + 16u + 2u * k], patches[b + 17u + 2u * k]); }
+    for (var k = 0u; k < p.tri_skips; k++) { p.tri_skip[k] = vec2<u32>(patches[b + SETUP_TRI_SKIP + 2u * k], patches[b + (SETUP_TRI_SKIP + 1u) + 2u * k]); }
     return p;
 }
 
@@ -743,8 +730,8 @@ fn setup_one_patch(t: u32) {
     let w = base_triangle(t);
     if (!base_triangle_valid(w)) { return; }
     var wv = array<u32, 3>(w.x, w.y, w.z);
-    let scale = bitcast<f32>(params[3]);
-    let eye = vec3<f32>(bitcast<f32>(params[4]), bitcast<f32>(params[5]), bitcast<f32>(params[6]));
+    let scale = bitcast<f32>(params[PARAM_FACTOR_SCALE]);
+    let eye = vec3<f32>(bitcast<f32>(params[PARAM_EYE]), bitcast<f32>(params[PARAM_EYE + 1u]), bitcast<f32>(params[PARAM_EYE + 2u]));
     var factor: array<f32, 3>;
     var length2: array<f32, 3>;
     for (var k = 0u; k < 3u; k++) {
@@ -762,46 +749,45 @@ fn setup_one_patch(t: u32) {
     var s: array<vec2<u32>, 3>;
     for (var k = 0u; k < 3u; k++) { s[k] = line_state(factor[(k + rot) % 3u]); }
     let p = patch_setup(s[0], s[1], s[2]);
-    patches[rec] = rot;
+    patches[rec + REC_ROTATION] = rot;
     for (var k = 0u; k < 3u; k++) {
-        patches[rec + 1u + k] = s[k].x;
-        patches[rec + 4u + k] = s[k].y;
-        patches[rec + 11u + k] = bitcast<u32>(factor[k]);
+        patches[rec + REC_TOKEN + k] = s[k].x;
+        patches[rec + REC_T16 + k] = s[k].y;
+        patches[rec + REC_FACTOR + k] = bitcast<u32>(factor[k]);
     }
-    patches[rec + 7u] = p.vertices;
-    patches[rec + 8u] = p.triangles;
+    patches[rec + REC_VERTEX_COUNT] = p.vertices;
+    patches[rec + REC_TRIANGLE_COUNT] = p.triangles;
     store_setup_block(rec, p);
 }
-// Grid-stride: a host may dispatch fewer workgroups than patches / 64 (at most 65,535 per dimension).
-@compute @workgroup_size(64)
+// Grid-stride: a host may dispatch fewer workgroups than patches / SETUP_GROUP (at most MAX_DISPATCH_WORKGROUPS).
+@compute @workgroup_size(SETUP_GROUP)
 fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
-    let stride = groups.x * GROUP;
+    let stride = groups.x * SETUP_GROUP;
     for (var t = gid.x; t < patch_count(); t += stride) { setup_one_patch(t); }
 }
 
-// Pass 2, one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
+// Pass 2, one workgroup of SCAN_GROUP = 128 (WebGPU compatibility mode allows at most 128 invocations): exclusive prefix sums of the counts; the totals follow the records.
 // Totals that do not fit in u32 (indices are u32) are written as TOTALS_OVERFLOW, both of them: hosts refuse them.
-const TOTALS_OVERFLOW: u32 = 0xFFFFFFFFu;
-var<workgroup> scan_sum: array<vec2<u32>, 128>;
+var<workgroup> scan_sum: array<vec2<u32>, SCAN_GROUP>;
 var<workgroup> scan_overflow: atomic<u32>;
-@compute @workgroup_size(128)
+@compute @workgroup_size(SCAN_GROUP)
 fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     let n = patch_count();
     let lane = lid.x;
     if (lane == 0u) { atomicStore(&scan_overflow, 0u); }
     var overflow = false;
-    let per = (n + 127u) / 128u;
+    let per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
     let begin = min(n, lane * per);
     let end = min(n, begin + per);
     var sum = vec2<u32>(0u);
     for (var t = begin; t < end; t++) {
-        let count = vec2<u32>(patches[t * PATCH_WORDS + 7u], patches[t * PATCH_WORDS + 8u]);
+        let count = vec2<u32>(patches[t * PATCH_WORDS + REC_VERTEX_COUNT], patches[t * PATCH_WORDS + REC_TRIANGLE_COUNT]);
         sum += count;
         overflow = overflow || sum.x < count.x || sum.y < count.y || sum.x == TOTALS_OVERFLOW || sum.y == TOTALS_OVERFLOW;
     }
     scan_sum[lane] = sum;
     workgroupBarrier();
-    for (var d = 1u; d < 128u; d <<= 1u) {
+    for (var d = 1u; d < SCAN_GROUP; d <<= 1u) {
         var add = vec2<u32>(0u);
         if (lane >= d) { add = scan_sum[lane - d]; }
         workgroupBarrier();
@@ -816,36 +802,36 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     var base = scan_sum[lane] - sum;
     for (var t = begin; t < end; t++) {
         let rec = t * PATCH_WORDS;
-        patches[rec + 9u] = base.x;
-        patches[rec + 10u] = base.y;
-        base += vec2<u32>(patches[rec + 7u], patches[rec + 8u]);
+        patches[rec + REC_FIRST_VERTEX] = base.x;
+        patches[rec + REC_FIRST_TRIANGLE] = base.y;
+        base += vec2<u32>(patches[rec + REC_VERTEX_COUNT], patches[rec + REC_TRIANGLE_COUNT]);
     }
-    if (lane == 127u) {
+    if (lane == SCAN_GROUP - 1u) {
         let too_large = atomicLoad(&scan_overflow) != 0u;
-        patches[n * PATCH_WORDS] = select(scan_sum[127].x, TOTALS_OVERFLOW, too_large);
-        patches[n * PATCH_WORDS + 1u] = select(scan_sum[127].y, TOTALS_OVERFLOW, too_large);
+        patches[n * PATCH_WORDS] = select(scan_sum[SCAN_GROUP - 1u].x, TOTALS_OVERFLOW, too_large);
+        patches[n * PATCH_WORDS + 1u] = select(scan_sum[SCAN_GROUP - 1u].y, TOTALS_OVERFLOW, too_large);
     }
 }
 
 // Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex.
-@compute @workgroup_size(64)
+@compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                        @builtin(local_invocation_id) lid: vec3<u32>) {
-    let end = min(params[9], patch_count());
-    let alpha = bitcast<f32>(params[2]);
-    let surface = params[1];
-    for (var t = params[8] + wid.x; t < end; t += groups.x) {
+    let end = min(params[PARAM_END_PATCH], patch_count());
+    let alpha = bitcast<f32>(params[PARAM_ALPHA]);
+    let surface = params[PARAM_SURFACE];
+    for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
-        let count = patches[rec + 7u];
+        let count = patches[rec + REC_VERTEX_COUNT];
         let w = base_triangle(t);
         if (count == 0u || !base_triangle_valid(w)) { continue; }
         let uniform_ = uniform_pattern();
         var p: Patch;
         if (!uniform_) { p = record_patch(rec); }
-        let rot = patches[rec];
-        let first = patches[rec + 9u];
+        let rot = patches[rec + REC_ROTATION];
+        let first = patches[rec + REC_FIRST_VERTEX];
         let c = array<Corner, 3>(mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
-        for (var i = lid.x; i < count; i += GROUP) {
+        for (var i = lid.x; i < count; i += EMIT_GROUP) {
             var d: vec2<u32>;
             if (uniform_) { d = uniform_vertex(rec, i); } else { d = patch_vertex(&p, i); }
             // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
@@ -854,35 +840,35 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
             for (var k = 0u; k < 3u; k++) { bw[(k + rot) % 3u] = pw[k]; }
             let sp = evaluate_surface(c, bw, surface, alpha);
             let o = (first + i) * VERTEX_WORDS;
-            out_vertices[o] = bw[1];
-            out_vertices[o + 1u] = bw[2];
-            out_vertices[o + 2u] = bitcast<u32>(sp.position.x);
-            out_vertices[o + 3u] = bitcast<u32>(sp.position.y);
-            out_vertices[o + 4u] = bitcast<u32>(sp.position.z);
-            out_vertices[o + 5u] = bitcast<u32>(sp.normal.x);
-            out_vertices[o + 6u] = bitcast<u32>(sp.normal.y);
-            out_vertices[o + 7u] = bitcast<u32>(sp.normal.z);
-            out_vertices[o + 8u] = bitcast<u32>(sp.uv.x);
-            out_vertices[o + 9u] = bitcast<u32>(sp.uv.y);
+            out_vertices[o + VERTEX_U] = bw[1];
+            out_vertices[o + VERTEX_V] = bw[2];
+            out_vertices[o + VERTEX_POSITION] = bitcast<u32>(sp.position.x);
+            out_vertices[o + (VERTEX_POSITION + 1u)] = bitcast<u32>(sp.position.y);
+            out_vertices[o + (VERTEX_POSITION + 2u)] = bitcast<u32>(sp.position.z);
+            out_vertices[o + VERTEX_NORMAL] = bitcast<u32>(sp.normal.x);
+            out_vertices[o + (VERTEX_NORMAL + 1u)] = bitcast<u32>(sp.normal.y);
+            out_vertices[o + (VERTEX_NORMAL + 2u)] = bitcast<u32>(sp.normal.z);
+            out_vertices[o + VERTEX_UV] = bitcast<u32>(sp.uv.x);
+            out_vertices[o + (VERTEX_UV + 1u)] = bitcast<u32>(sp.uv.y);
         }
     }
 }
 
 // Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices.
-@compute @workgroup_size(64)
+@compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                         @builtin(local_invocation_id) lid: vec3<u32>) {
-    let end = min(params[9], patch_count());
-    for (var t = params[8] + wid.x; t < end; t += groups.x) {
+    let end = min(params[PARAM_END_PATCH], patch_count());
+    for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
-        let count = patches[rec + 8u];
+        let count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) { continue; }
         let uniform_ = uniform_pattern();
         var p: Patch;
         if (!uniform_) { p = record_patch(rec); }
-        let vfirst = patches[rec + 9u];
-        let tfirst = patches[rec + 10u];
-        for (var i = lid.x; i < count; i += GROUP) {
+        let vfirst = patches[rec + REC_FIRST_VERTEX];
+        let tfirst = patches[rec + REC_FIRST_TRIANGLE];
+        for (var i = lid.x; i < count; i += EMIT_GROUP) {
             var tri: vec3<u32>;
             if (uniform_) { tri = uniform_triangle(rec, i); } else { tri = patch_triangle(&p, i); }
             tri += vec3<u32>(vfirst);
