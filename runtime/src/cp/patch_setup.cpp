@@ -19,6 +19,22 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
     const cp::LineState s[3] = {clamp(s0), clamp(s1), clamp(s2)};
     cw_mask_ = options.winding == Winding::cw ? ~0u : 0u;
     unsigned shape[3];
+    set_edges(tables, s, shape);
+    if (c0_ && c1_ && c2_) { // Type 0
+        type_ = 0;
+        vertices_ = 3;
+        triangles_ = 1;
+    } else if (s[0].token <= 1 && s[2].token <= 1) {
+        set_fan();
+    } else {
+        set_parallelogram(tables, shape, counts_only);
+    }
+}
+
+// Each edge's points, lerp and segments from its token's record; a T0 edge (token 0) takes shape 1's points
+// and collapses.
+void CpPatchSetup::set_edges(const CpTableSet& tables, const cp::LineState (&s)[3],
+                             unsigned (&shape)[3]) noexcept {
     for (unsigned k = 0; k < 3; ++k) {
         shape[k] = s[k].token == 0 ? 1u : s[k].token;
         const cp::tables::TokenRecord& rec = tables.tokens[shape[k] - 1];
@@ -32,39 +48,40 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
     n0_ = e_[0].segments;
     n1_ = e_[1].segments;
     n2_ = e_[2].segments;
-    if (c0_ && c1_ && c2_) { // Type 0
-        type_ = 0;
-        vertices_ = 3;
-        triangles_ = 1;
-        return;
-    }
-    if (s[0].token <= 1 && s[2].token <= 1) { // Type 1: n1 + 7 slots, n1 + 6 triangles before the collapse
-        type_ = 1;
-        std::uint32_t dropped_slots = 0;
-        auto drop_slots = [&](std::uint32_t begin, std::uint32_t end) {
-            slot_skip_[slot_skips_++] = {begin, end - begin};
-            dropped_slots += end - begin;
-        };
-        if (c0_) drop_slots(1, 3);
-        if (c1_) drop_slots(4, 6);
-        if (c2_) drop_slots(4 + n1_, c0_ ? 7 + n1_ : 6 + n1_);
-        auto drop = [&](bool when, std::uint32_t at) {
-            if (when) add_triangle_skip(at, at + 1);
-        };
-        drop(c0_ || c2_, 0);
-        drop(c0_ || c1_, 1);
-        drop(c1_ || c2_, 2);
-        drop(c0_ && c2_, 3);
-        drop(c0_ && c1_, 4);
-        drop(c1_ && c2_, n1_ + 3);
-        drop(c0_ && c2_, n1_ + 4);
-        drop(c0_ && c2_, n1_ + 5);
-        std::uint32_t dropped = 0;
-        for (unsigned k = 0; k < tri_skips_; ++k) dropped += tri_skip_[k].length;
-        vertices_ = n1_ + 7 - dropped_slots;
-        triangles_ = n1_ + 6 - dropped;
-        return;
-    }
+}
+
+// Type 1: n1 + 7 slots and n1 + 6 triangles before the collapse (docs/algorithm.md §2.8), T0 edges' slots
+// and triangles skipped.
+void CpPatchSetup::set_fan() noexcept {
+    type_ = 1;
+    std::uint32_t dropped_slots = 0;
+    auto drop_slots = [&](std::uint32_t begin, std::uint32_t end) {
+        slot_skip_[slot_skips_++] = {begin, end - begin};
+        dropped_slots += end - begin;
+    };
+    if (c0_) drop_slots(1, 3);
+    if (c1_) drop_slots(4, 6);
+    if (c2_) drop_slots(4 + n1_, c0_ ? 7 + n1_ : 6 + n1_);
+    auto drop = [&](bool when, std::uint32_t at) {
+        if (when) add_triangle_skip(at, at + 1);
+    };
+    drop(c0_ || c2_, 0);
+    drop(c0_ || c1_, 1);
+    drop(c1_ || c2_, 2);
+    drop(c0_ && c2_, 3);
+    drop(c0_ && c1_, 4);
+    drop(c1_ && c2_, n1_ + 3);
+    drop(c0_ && c2_, n1_ + 4);
+    drop(c0_ && c2_, n1_ + 5);
+    std::uint32_t dropped = 0;
+    for (unsigned k = 0; k < tri_skips_; ++k) dropped += tri_skip_[k].length;
+    vertices_ = n1_ + 7 - dropped_slots;
+    triangles_ = n1_ + 6 - dropped;
+}
+
+// Type 2: the column record of (e2, e0), the strips, the zipper and the e1 offset; the provoking copies.
+void CpPatchSetup::set_parallelogram(const CpTableSet& tables, const unsigned (&shape)[3],
+                                     bool counts_only) noexcept {
     type_ = 2;
     const unsigned shapes = tables.shapes;
     const CpColumnChunk& chunk = tables.column_chunks[tables.chunk_of_shape2[shape[2] - 1]];
@@ -84,10 +101,21 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
     e1_offset_ = c0_ ? n2_ : c2_ ? n0_ : ch + n0_ - head_;
     unique_ = e1_offset_ + (c1_ ? 2u : n1_ + 1);
     plain_strips_ = !c0_ && !c2_;
-    const bool copies = plain_strips_ && options.layout == Layout::provoking;
+    const bool copies = plain_strips_ && options_.layout == Layout::provoking;
     copy_mask_ = copies ? ~0u : 0u;
     copy_bias_ = unique_ + 1u - c_[1];
-    // Triangles the collapse drops (docs/algorithm.md §2.9), as runs of the raw emission order.
+    skip_collapsed_triangles(tables, shape);
+    std::uint32_t dropped = 0;
+    for (unsigned k = 0; k < tri_skips_; ++k) dropped += tri_skip_[k].length;
+    // Copies: every row but the top of columns 1..h-1 provokes a triangle of the strip before it too.
+    vertices_ = unique_ + (copies ? ch - c_[1] - (head_ - 1) : 0u);
+    triangles_ = strips_ + zipper_ - dropped;
+    plain_ = !c0_ && !c1_ && !c2_;
+    fast_strips_ = plain_strips_ && head_ != 0 ? strips_ : 0u;
+}
+
+// Triangles the collapse drops (docs/algorithm.md §2.9), as runs of the raw emission order.
+void CpPatchSetup::skip_collapsed_triangles(const CpTableSet& tables, const unsigned (&shape)[3]) noexcept {
     const std::uint32_t z = strips_;
     t1_fan_ = c1_ ? tables.t1_last_fan[shape[0] - 1] : 0u;
     if (c0_) {
@@ -118,13 +146,6 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
         add_triangle_skip(z, z + 1); // the fans (R_1, L, R_0) and (R_3, L, R_2) have v1 or v2 twice
         add_triangle_skip(z + t1_fan_, z + t1_fan_ + 1);
     }
-    std::uint32_t dropped = 0;
-    for (unsigned k = 0; k < tri_skips_; ++k) dropped += tri_skip_[k].length;
-    // Copies: every row but the top of columns 1..h-1 provokes a triangle of the strip before it too.
-    vertices_ = unique_ + (copies ? ch - c_[1] - (head_ - 1) : 0u);
-    triangles_ = strips_ + zipper_ - dropped;
-    plain_ = !c0_ && !c1_ && !c2_;
-    fast_strips_ = plain_strips_ && head_ != 0 ? strips_ : 0u;
 }
 
 Counts cp_counts(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,

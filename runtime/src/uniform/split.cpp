@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <span>
 
+#include <ctess/uniform/factor.hpp>
 #include <ctess/uniform/metric.hpp>
 #include <ctess/uniform/pattern.hpp>
 
@@ -392,62 +393,82 @@ struct UniformSplit::Impl {
     }
 
     // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
-    void weld_split(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges,
-                    const std::array<std::uint32_t, 3>& split) const noexcept {
+    // One split node of the shared layout: its pattern's vertices and interior edges numbered, and the
+    // EdgeRef of each pattern edge for the subpatches (§3.5, "The shared layout").
+    struct SplitNode {
+        const Impl& self;
+        const Sub& s;
+        const std::array<EdgeRef, 3>& edges;
+        const std::array<std::uint32_t, 3>& split;
+        const SplitPattern pattern;
+        const std::uint32_t boundary;
         // pattern vertex -> global; every entry below the pattern's count is written before it is read
         std::array<std::uint32_t, bounds.vertices> number;
-        const SplitPattern pattern = split_pattern(split);
-        const auto& point = pattern.point;
         // Distances (in final segments) of each split point along this node's edges.
         std::array<std::array<std::uint32_t, uniform::data_max_factor + 1>, 3> offset{};
-        for (int j = 0; j < 3; ++j) {
-            offset[j][split[j]] = edges[j].count;
-            for (std::uint32_t p = 0; p + 1 < split[j]; ++p)
-                offset[j][p + 1] =
-                    offset[j][p] + segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
-        }
-        // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
-        const std::uint32_t boundary = split[0] + split[1] + split[2], all = pattern.patch.counts().vertices;
-        for (std::uint32_t i = 0; i < all; ++i) {
-            int j = 0;
-            std::uint32_t step = 0;
-            number[i] = i >= boundary                      ? w.next + (i - boundary)
-                        : locate(point[i], split, j, step) ? edges[j].at(offset[j][step])
-                                                           : 0;
-        }
-        w.next += all - boundary;
-        // Interior edges, each owned by its half-edge from the lower to the higher pattern vertex, numbered
-        // in triangle order; sorted by (lower, higher) to look up from either side.
+        // Interior edges, each owned by its half-edge from the lower to the higher pattern vertex; the first
+        // owned_count used, sorted by (lower, higher) to look up from either side.
         struct Owned {
             std::uint32_t key, base;
         };
-        std::array<Owned, bounds.interior_edges> owned; // the first owned_count used
+        std::array<Owned, bounds.interior_edges> owned;
         std::uint32_t owned_count = 0;
-        auto along = [&](std::uint32_t a, std::uint32_t b, int& j, std::uint32_t& sa, std::uint32_t& sb) {
+
+        SplitNode(const Impl& impl, const Sub& sub, const std::array<EdgeRef, 3>& node_edges,
+                  const std::array<std::uint32_t, 3>& node_split) noexcept
+            : self(impl), s(sub), edges(node_edges), split(node_split),
+              pattern(impl.split_pattern(node_split)),
+              boundary(node_split[0] + node_split[1] + node_split[2]) {
+            for (int j = 0; j < 3; ++j) {
+                offset[j][split[j]] = edges[j].count;
+                for (std::uint32_t p = 0; p + 1 < split[j]; ++p)
+                    offset[j][p + 1] =
+                        offset[j][p] + self.segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
+            }
+        }
+        // Whether pattern edge a-b lies on this node's side j, and its endpoints' steps there.
+        bool along(std::uint32_t a, std::uint32_t b, int& j, std::uint32_t& sa, std::uint32_t& sb) const {
             if (a >= boundary || b >= boundary) return false;
             for (j = 0; j < 3; ++j) {
-                const int x = step_on(point[a], j, split[j]), y = step_on(point[b], j, split[j]);
+                const int x = step_on(pattern.point[a], j, split[j]),
+                          y = step_on(pattern.point[b], j, split[j]);
                 if (x >= 0 && y >= 0) return sa = std::uint32_t(x), sb = std::uint32_t(y), true;
             }
             return false;
-        };
-        auto edge_segments = [&](std::uint32_t a, std::uint32_t b) {
-            return segments(child_edge_factor(s, point[a], point[b]), s.depth + 1);
-        };
-        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.patch.triangle(t);
-            for (int e = 0; e < 3; ++e) {
-                const std::uint32_t a = tri[e], b = tri[(e + 1) % 3];
-                int j = 0;
-                std::uint32_t sa = 0, sb = 0;
-                if (a > b || along(a, b, j, sa, sb)) continue;
-                owned[owned_count++] = {(a << 16) | b, w.next};
-                w.next += edge_segments(a, b) - 1;
-            }
         }
-        std::sort(owned.begin(), owned.begin() + owned_count,
-                  [](const Owned& x, const Owned& y) { return x.key < y.key; });
-        auto edge_ref = [&](std::uint32_t a, std::uint32_t b) -> EdgeRef {
+        std::uint32_t edge_segments(std::uint32_t a, std::uint32_t b) const {
+            return self.segments(child_edge_factor(s, pattern.point[a], pattern.point[b]), s.depth + 1);
+        }
+        // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
+        void number_vertices(Welder& w) {
+            const std::uint32_t all = pattern.patch.counts().vertices;
+            for (std::uint32_t i = 0; i < all; ++i) {
+                int j = 0;
+                std::uint32_t step = 0;
+                number[i] = i >= boundary                              ? w.next + (i - boundary)
+                            : locate(pattern.point[i], split, j, step) ? edges[j].at(offset[j][step])
+                                                                       : 0;
+            }
+            w.next += all - boundary;
+        }
+        // The interior edges' points, numbered in triangle order.
+        void number_interior_edges(Welder& w) {
+            for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
+                const UniformTriangle tri = pattern.patch.triangle(t);
+                for (int e = 0; e < 3; ++e) {
+                    const std::uint32_t a = tri[e], b = tri[(e + 1) % 3];
+                    int j = 0;
+                    std::uint32_t sa = 0, sb = 0;
+                    if (a > b || along(a, b, j, sa, sb)) continue;
+                    owned[owned_count++] = {(a << 16) | b, w.next};
+                    w.next += edge_segments(a, b) - 1;
+                }
+            }
+            std::sort(owned.begin(), owned.begin() + owned_count,
+                      [](const Owned& x, const Owned& y) { return x.key < y.key; });
+        }
+        // Pattern edge a-b as seen from a: a piece of one of this node's edges, or an owned interior edge.
+        EdgeRef edge_ref(std::uint32_t a, std::uint32_t b) const {
             int j = 0;
             std::uint32_t sa = 0, sb = 0;
             if (along(a, b, j, sa, sb)) return edges[j].piece(offset[j][sa], offset[j][sb]);
@@ -456,11 +477,20 @@ struct UniformSplit::Impl {
                                               [](const Owned& x, std::uint32_t key) { return x.key < key; });
             const Line line{number[lo], number[hi], o->base, n};
             return a == lo ? EdgeRef{line, 0, n, true} : EdgeRef{line, n, n, false};
-        };
-        for (std::uint32_t t = 0; t < pattern.patch.counts().triangles; ++t) {
-            const UniformTriangle tri = pattern.patch.triangle(t);
-            weld_visit(w, child(s, pattern, tri),
-                       {edge_ref(tri[0], tri[1]), edge_ref(tri[1], tri[2]), edge_ref(tri[0], tri[2])});
+        }
+    };
+
+    // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
+    void weld_split(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges,
+                    const std::array<std::uint32_t, 3>& split) const noexcept {
+        SplitNode node(*this, s, edges, split);
+        node.number_vertices(w);
+        node.number_interior_edges(w);
+        for (std::uint32_t t = 0; t < node.pattern.patch.counts().triangles; ++t) {
+            const UniformTriangle tri = node.pattern.patch.triangle(t);
+            weld_visit(w, child(s, node.pattern, tri),
+                       {node.edge_ref(tri[0], tri[1]), node.edge_ref(tri[1], tri[2]),
+                        node.edge_ref(tri[0], tri[2])});
         }
     }
 };
@@ -472,11 +502,8 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
     tolerance_ = !(interior_tolerance > uniform_split_strict_tolerance)  ? uniform_split_strict_tolerance
                  : interior_tolerance > uniform_split_interior_tolerance ? uniform_split_interior_tolerance
                                                                          : interior_tolerance;
-    const float top = static_cast<float>(n * n);
-    for (int i = 0; i < 3; ++i) {
-        const float f = i == 0 ? f0 : i == 1 ? f1 : f2;
-        root_[i] = !(f >= 1.5f) ? 1.0 : !(f < top - 0.5f) ? double(n * n) : std::floor(double(f) + 0.5);
-    }
+    // The one rounding rule of uniform factors (uniform/factor.hpp), clamped to N^2 here.
+    for (int i = 0; i < 3; ++i) root_[i] = uniform::round_factor(i == 0 ? f0 : i == 1 ? f1 : f2, n * n);
     const Impl impl{tables_, options_, root_, tolerance_};
     Impl::Counter c;
     impl.walk(c);

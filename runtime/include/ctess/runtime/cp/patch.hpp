@@ -206,6 +206,12 @@ class CpPatchSetup {
     void add_triangle_skip(std::uint32_t begin, std::uint32_t end) noexcept {
         if (end > begin) tri_skip_[tri_skips_++] = {begin, end - begin};
     }
+    // The constructor's steps (runtime/src/cp/patch_setup.cpp; docs/algorithm.md §4): the three edges, then
+    // the pattern of the type they give.
+    void set_edges(const CpTableSet& tables, const cp::LineState (&s)[3], unsigned (&shape)[3]) noexcept;
+    void set_fan() noexcept; // Type 1
+    void set_parallelogram(const CpTableSet& tables, const unsigned (&shape)[3], bool counts_only) noexcept;
+    void skip_collapsed_triangles(const CpTableSet& tables, const unsigned (&shape)[3]) noexcept;
 
     Edge e_[3]{};
     const std::uint16_t* c_ = nullptr;   // column starts C_0..C_{h+1}

@@ -1,10 +1,11 @@
-// Uniform-density splitting above the table (docs/algorithm.md §3.5, seed 001): a patch whose factors exceed
-// the table's maximum N is split with the table's own pattern for the split factors, and each subpatch is
-// diced (or split once more) with the table.
+// Uniform-density splitting above the table (docs/algorithm.md §3.5; Karis 2026, docs/references.md): a patch
+// whose factors exceed the table's maximum N is split with the table's own pattern for the split factors, and
+// each subpatch is diced (or split once more) with the table.
 //
 // * Factors: NaN, -inf, zero and negatives give 1; each factor is rounded to the nearest integer (halves up)
 //   and clamped to [1, N^2] (+inf and huge values give N^2), which two levels of splitting always reach.
-// * SplitFactor S = min(ceil(T / N), N) per edge (seed 001: min(TessFactor / MaxDiceFactor, MaxSplitFactor),
+// * SplitFactor S = min(ceil(T / N), N) per edge (Karis 2026: min(TessFactor / MaxDiceFactor,
+// MaxSplitFactor),
 //   rounded up so that each sub-edge's factor T / S is at most N).
 // * A subpatch edge's factor is the intrinsic length of that edge in the metric of its parent (the parent's
 //   factors as side lengths): on a parent edge that is T_i times the edge's parameter span, i.e. a function
@@ -39,10 +40,9 @@
 // -ffp-contract=off -fno-fast-math (ctess::uniform_core): in header code the constructor's count and emit()'s
 // walk were compiled with the caller's flags in different inlining contexts, and under -ffast-math they could
 // decide an edge differently (§3.5; docs/api.md, "Crack-free evaluation"). Every walk keeps its split
-// pattern's points on the stack per split level (two levels at most); the shared layout's emit() also keeps
-// one pattern-sized set of arrays per level and one for the leaf: with g++ 12 -O2 about 1.5 KB per level of
-// a walk (4.6 KB in all) and about 13.3 KB for the shared layout's emit() (5.6 KB per split level, 2.1 KB
-// for the leaf).
+// pattern's points on the stack per split level (two levels at most) and one leaf-sized buffer; the shared
+// layout's emit() also keeps one pattern-sized set of arrays per level: the stack is bounded by the largest
+// stored pattern, whatever the factors (measured in docs/algorithm.md §3.5).
 #pragma once
 #include <algorithm>
 #include <array>
