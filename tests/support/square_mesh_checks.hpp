@@ -14,6 +14,8 @@
 #include <string>
 #include <utility>
 
+#include <ctess/analysis/signed_area.hpp>
+
 namespace ctess::test {
 
 struct SquarePoint {
@@ -27,14 +29,14 @@ inline std::string square_mesh_violation(std::span<const SquarePoint> params,
         if (v.p < 0 || v.q < 0 || v.p > one || v.q > one) return "vertex outside the square";
         if (!distinct.insert({v.p, v.q}).second) return "two vertices share a parameter";
     }
-    std::int64_t area_sum = 0;
+    analysis::int128 area_sum = 0;
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
     for (std::size_t t = 0; t + 3 <= triangles.size(); t += 3) {
         const std::uint32_t i[3] = {triangles[t], triangles[t + 1], triangles[t + 2]};
         for (std::uint32_t k : i)
             if (k >= params.size()) return "index out of range";
         const SquarePoint a = params[i[0]], b = params[i[1]], c = params[i[2]];
-        const std::int64_t area2 = (b.p - a.p) * (c.q - a.q) - (b.q - a.q) * (c.p - a.p);
+        const auto area2 = analysis::signed_area2(a, b, c);
         if (area2 <= 0) return "a triangle is not counter-clockwise with positive area";
         area_sum += area2;
         for (int e = 0; e < 3; ++e)
