@@ -7,7 +7,9 @@
 // Generators are rows of one table (`generators` below): adding one is a function that fills a Pattern, an
 // emit function and one row. Every generator works in its own domain coordinates, converted
 // to barycentric weights (w0, w1, w2); lengths and angles use the domain's own metric, the equilateral
-// triangle with unit edges. Exit status 0, or 1 with a message.
+// triangle with unit edges. Each section of report.md is one function (`..._section` below); the factor sets,
+// the movement metrics and the signed area come from the analysis library (ctess/analysis/). Exit status 0,
+// or 1 with a message.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -497,7 +499,8 @@ std::string triangles_section(const std::filesystem::path& dir, const Inputs& in
         in.uniform_max);
 }
 
-// Movement along sweeps (movement.svg); `movement` gets one row per sweep, one entry per generator.
+// Movement along sweeps (movement.svg), measured by the analysis library; `movement` gets one row per sweep,
+// one entry per generator.
 struct Sweep {
     const char* name;
     Factors from, to;
@@ -574,7 +577,7 @@ std::string movement_section(const std::filesystem::path& dir, std::vector<std::
     }
     write(dir / "movement.svg", line_plot("Edge-point movement, equal factors 2 → 16", "factor",
                                           "cumulative path (edge = 1)", move_series));
-    return moves;
+    return moves + "\n![movement](movement.svg)\n\n";
 }
 
 // Emission speed over the report's factor sets, relative to OpenSubdiv and to CP (speed.svg); `rates` gets
@@ -607,7 +610,7 @@ std::string speed_section(const std::filesystem::path& dir, const Inputs& in, st
     }
     write(dir / "speed.svg",
           bar_plot("Emission speed relative to OpenSubdiv (triangles per second)", speed_bars));
-    return speed;
+    return speed + "\n![speed](speed.svg)\n";
 }
 
 // The headline: one row per generator, every ratio from this run.
@@ -660,8 +663,7 @@ int main(int argc, char** argv) {
         const std::string head = headline_section(means, movement, rates);
         // The summaries first, the per-set table last.
         write(dir / "report.md", intro_section(machine, in) + head + "\n" + summary + triangles + moves +
-                                     "\n![movement](movement.svg)\n\n" + speed + "\n![speed](speed.svg)\n" +
-                                     "\n" + per_set);
+                                     speed + "\n" + per_set);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ctess_report: %s\n", e.what());
         return 1;
