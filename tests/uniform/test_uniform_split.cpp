@@ -115,8 +115,8 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
     // fuzz_uniform).
     const auto cases =
         with_random({{193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}}, 2026, 60, 1, 256);
-    const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
-    auto on_root_edge = [one](DomainPoint a, DomainPoint b) {
+    constexpr std::uint64_t one = ctess::rt::uniform_split_fixed_one;
+    auto on_root_edge = [](DomainPoint a, DomainPoint b) {
         return (a.v == 0 && b.v == 0) || (a.u == 0 && b.u == 0) ||
                (std::uint64_t{a.u} + a.v == one && std::uint64_t{b.u} + b.v == one);
     };
