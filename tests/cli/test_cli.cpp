@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "support/cli_run.hpp"
-#include "support/square_mesh_checks.hpp"
+#include <ctess/analysis/square_mesh_checks.hpp>
 
 namespace {
 
@@ -305,11 +305,11 @@ TEST_CASE("surface JSON is a conforming triangulation of the square with unit no
         REQUIRE(triangles.size() / 3 == static_cast<std::size_t>(json_number(r.out, "triangle_count")));
         REQUIRE(vertices.size() == 3 * params.size() / 2);
         REQUIRE(normals.size() == vertices.size());
-        std::vector<ctess::test::SquarePoint> sq;
+        std::vector<ctess::analysis::SquarePoint> sq;
         for (std::size_t i = 0; i < params.size(); i += 2)
             sq.push_back({static_cast<std::int64_t>(params[i]), static_cast<std::int64_t>(params[i + 1])});
         const std::vector<std::uint32_t> tri(triangles.begin(), triangles.end());
-        CHECK(ctess::test::square_mesh_violation(sq, tri, 65536) == "");
+        CHECK(ctess::analysis::square_mesh_violation(sq, tri, 65536) == "");
         for (std::size_t i = 0; i < normals.size(); i += 3) {
             const double len2 =
                 normals[i] * normals[i] + normals[i + 1] * normals[i + 1] + normals[i + 2] * normals[i + 2];

@@ -2,8 +2,8 @@
 // 2/3 ratio of triforce (N^2) against D3D11's picture-frame rings (1.5 N^2) at equal powers of two.
 #include <catch2/catch.hpp>
 
-#include "efficiency.hpp"
-
+#include <ctess/analysis/efficiency.hpp>
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/cp/pattern.hpp>
 
 #include <cstdint>
@@ -12,8 +12,8 @@
 TEST_CASE("mean CP / D3D11 fractional_even ratio meets the targets", "[cp_efficiency]") {
     for (unsigned max : {64u, 256u}) {
         for (std::uint32_t seed : {2026u, 7u, 123456u}) {
-            const auto rows = ctess::cli::efficiency_rows(max, 40, seed);
-            const auto s = ctess::cli::summarize(rows);
+            const auto rows = ctess::analysis::efficiency_rows(max, 40, seed);
+            const auto s = ctess::analysis::summarize(rows);
             INFO("max " << max << " seed " << seed);
             REQUIRE(s.random_count == 40);
             CHECK(s.mean_ratio_max <= 0.35);
@@ -24,9 +24,10 @@ TEST_CASE("mean CP / D3D11 fractional_even ratio meets the targets", "[cp_effici
 }
 
 TEST_CASE("efficiency rows count CP's zero-area triangles as the pattern has them", "[cp_efficiency]") {
-    // The CLI's counts against the procedural pattern, tessellated and measured here: exact integer areas.
+    // The analysis library's counts against the procedural pattern, tessellated and measured here: exact
+    // integer areas.
     std::size_t degenerate_rows = 0;
-    for (const auto& r : ctess::cli::efficiency_rows(64, 40, 2026)) {
+    for (const auto& r : ctess::analysis::efficiency_rows(64, 40, 2026)) {
         ctess::cp::PatternOptions opt;
         opt.layout = ctess::Layout::shared;
         const auto n = ctess::cp::pattern_counts(r.factors[0], r.factors[1], r.factors[2], opt);
@@ -35,9 +36,7 @@ TEST_CASE("efficiency rows count CP's zero-area triangles as the pattern has the
         ctess::cp::tessellate(v, t, r.factors[0], r.factors[1], r.factors[2], opt);
         std::uint32_t zero_area = 0;
         for (std::size_t k = 0; k < t.size(); k += 3) {
-            const ctess::DomainPoint a = v[t[k]], b = v[t[k + 1]], c = v[t[k + 2]];
-            const std::int64_t cross = (std::int64_t{b.u} - a.u) * (std::int64_t{c.v} - a.v) -
-                                       (std::int64_t{b.v} - a.v) * (std::int64_t{c.u} - a.u);
+            const auto cross = ctess::analysis::signed_area2(v[t[k]], v[t[k + 1]], v[t[k + 2]]);
             zero_area += cross == 0;
             CHECK(cross >= 0); // counter-clockwise or degenerate, never folded
         }
@@ -55,12 +54,12 @@ TEST_CASE("efficiency orients with the library's rule: factors 5,2,2 become 2,5,
     const auto oriented = ctess::cp::pattern_counts(2, 5, 2, opt).triangles;
     const auto unoriented = ctess::cp::pattern_counts(5, 2, 2, opt).triangles;
     REQUIRE(oriented != unoriented);
-    REQUIRE(ctess::cli::efficiency_row({5, 2, 2}, 64).cp_rotated_triangles == oriented);
+    REQUIRE(ctess::analysis::efficiency_row({5, 2, 2}, 64).cp_rotated_triangles == oriented);
 }
 
 TEST_CASE("equal powers of two: CP is exactly 2/3 of D3D11 fractional_even", "[cp_efficiency]") {
     unsigned checked = 0;
-    for (const auto& r : ctess::cli::efficiency_rows(64, 1, 1)) {
+    for (const auto& r : ctess::analysis::efficiency_rows(64, 1, 1)) {
         if (r.group != "equal") continue;
         const float f = r.factors[0];
         if (f != 4 && f != 8 && f != 16 && f != 32 && f != 64) continue;

@@ -4,6 +4,7 @@
 // on every edge and on the diagonal.
 #include <catch2/catch.hpp>
 
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/cp/quad.hpp>
 
 #include <array>
@@ -122,13 +123,11 @@ TEST_CASE("a shared-layout CP quad covers the unit square once and keeps one dia
         for (const DomainPoint& p : m.vertices) on_diagonal += std::uint64_t{p.u} + p.v == cp::fixed_one;
         const cp::LineState diagonal = cp::line_state(f[0], max_tess_factor);
         REQUIRE(on_diagonal == cp::token_info(diagonal.token).segments + 1u);
-        std::int64_t doubled_area = 0;
+        ctess::analysis::int128 doubled_area = 0;
         for (std::size_t k = 0; k < m.indices.size(); k += 3) {
             for (unsigned j = 0; j < 3; ++j) REQUIRE(m.indices[k + j] < m.vertices.size());
-            const DomainPoint p = m.vertices[m.indices[k]], q = m.vertices[m.indices[k + 1]],
-                              r = m.vertices[m.indices[k + 2]];
-            const std::int64_t cross = (std::int64_t{q.u} - p.u) * (std::int64_t{r.v} - p.v) -
-                                       (std::int64_t{q.v} - p.v) * (std::int64_t{r.u} - p.u);
+            const auto cross = ctess::analysis::signed_area2(
+                m.vertices[m.indices[k]], m.vertices[m.indices[k + 1]], m.vertices[m.indices[k + 2]]);
             REQUIRE(cross >= 0);
             doubled_area += cross;
         }

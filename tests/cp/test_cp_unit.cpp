@@ -1,6 +1,7 @@
 // Unit tests of the CP triangle pattern's pieces: column counts, gap merge, Type-1 point P, counts against
 // the independent prototype's count tables, provoking layout, quads, orientation, bad input, constant
 // evaluation. (The exhaustive coverage/pop/triforce suite is tests/cp/test_cp_pattern_*.cpp.)
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/cp/orientation.hpp>
 #include <ctess/cp/pattern.hpp>
 #include <ctess/cp/quad.hpp>
@@ -49,15 +50,11 @@ Mesh build(float f0, float f1, float f2, const PatternOptions& opt) {
     return build(line_state(f0, mf), line_state(f1, mf), line_state(f2, mf), opt);
 }
 
-// Twice the signed area, exact: coordinates are below 2^25, products below 2^50.
-std::int64_t cross(DomainPoint a, DomainPoint b, DomainPoint c) {
-    const std::int64_t bu = std::int64_t{b.u} - a.u, bv = std::int64_t{b.v} - a.v;
-    const std::int64_t cu = std::int64_t{c.u} - a.u, cv = std::int64_t{c.v} - a.v;
-    return bu * cv - bv * cu;
-}
+using ctess::analysis::int128;
+using ctess::analysis::signed_area2;
 
 struct Validity {
-    std::int64_t area2 = 0; // sum of 2*area in units of 2^-48: fixed_one^2 for the whole domain
+    int128 area2 = 0; // sum of 2*area in units of 2^-48: fixed_one^2 for the whole domain
     unsigned inverted = 0;
     unsigned degenerate = 0;
 };
@@ -65,8 +62,8 @@ struct Validity {
 Validity validity(const Mesh& m) {
     Validity v;
     for (std::size_t t = 0; t < m.counts.triangles; ++t) {
-        const std::int64_t c = cross(m.vertices[m.indices[3 * t]], m.vertices[m.indices[3 * t + 1]],
-                                     m.vertices[m.indices[3 * t + 2]]);
+        const int128 c = signed_area2(m.vertices[m.indices[3 * t]], m.vertices[m.indices[3 * t + 1]],
+                                      m.vertices[m.indices[3 * t + 2]]);
         v.area2 += c;
         if (c < 0) ++v.inverted;
         if (c == 0) ++v.degenerate;
@@ -634,7 +631,7 @@ TEST_CASE("quads: split along q1-q3, diagonal forced to q0q1's factor, watertigh
         const std::array<float, 4> q = {factor(rng), factor(rng), factor(rng),
                                         it % 3 == 0 ? 1.0f : factor(rng)};
         const QuadSplit split = split_quad(q);
-        std::int64_t area2 = 0;
+        int128 area2 = 0;
         unsigned inverted = 0;
         std::array<std::set<std::uint32_t>, 2> diagonal; // u of the points on the diagonal u + v = 1
         std::array<std::set<std::uint32_t>, 4> edges;    // parameter of the points on each quad edge
@@ -642,9 +639,9 @@ TEST_CASE("quads: split along q1-q3, diagonal forced to q0q1's factor, watertigh
             const auto& ft = split.triangles[t].factors;
             const Mesh m = build(ft[0], ft[1], ft[2], options(64));
             for (std::size_t k = 0; k < m.counts.triangles; ++k) {
-                const std::int64_t c = cross(quad_point(t, m.vertices[m.indices[3 * k]]),
-                                             quad_point(t, m.vertices[m.indices[3 * k + 1]]),
-                                             quad_point(t, m.vertices[m.indices[3 * k + 2]]));
+                const int128 c = signed_area2(quad_point(t, m.vertices[m.indices[3 * k]]),
+                                              quad_point(t, m.vertices[m.indices[3 * k + 1]]),
+                                              quad_point(t, m.vertices[m.indices[3 * k + 2]]));
                 area2 += c;
                 inverted += c < 0;
             }
@@ -699,8 +696,9 @@ TEST_CASE("orientation: smallest edge on e2, winding kept, deterministic ties", 
         const DomainPoint corners[3] = {{0, 0}, {fixed_one, 0}, {0, fixed_one}};
         for (unsigned k = 0; k < 3; ++k) CHECK(to_base_point(r, corners[k]) == corners[base_vertex(r, k)]);
         const DomainPoint p{1000, 2000}, q{5000, 100}, t{300, 9000};
-        REQUIRE(cross(p, q, t) > 0);
-        CHECK(cross(to_base_point(r, p), to_base_point(r, q), to_base_point(r, t)) == cross(p, q, t));
+        REQUIRE(signed_area2(p, q, t) > 0);
+        CHECK(signed_area2(to_base_point(r, p), to_base_point(r, q), to_base_point(r, t)) ==
+              signed_area2(p, q, t));
     }
 }
 
@@ -714,12 +712,9 @@ constexpr Counts constexpr_mesh_area_ok() {
     opt.max_factor = 64;
     opt.layout = Layout::shared;
     const Counts c = tessellate(v, idx, 16.0f, 8.0f, 4.0f, opt);
-    std::int64_t area2 = 0;
-    for (std::uint32_t t = 0; t < c.triangles; ++t) {
-        const DomainPoint a = v[idx[3 * t]], b = v[idx[3 * t + 1]], d = v[idx[3 * t + 2]];
-        area2 += (std::int64_t{b.u} - a.u) * (std::int64_t{d.v} - a.v) -
-                 (std::int64_t{b.v} - a.v) * (std::int64_t{d.u} - a.u);
-    }
+    int128 area2 = 0;
+    for (std::uint32_t t = 0; t < c.triangles; ++t)
+        area2 += signed_area2(v[idx[3 * t]], v[idx[3 * t + 1]], v[idx[3 * t + 2]]);
     return area2 == std::int64_t{fixed_one} * fixed_one ? c : Counts{};
 }
 constexpr bool constexpr_provoking_unique() {

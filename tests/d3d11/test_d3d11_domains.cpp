@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/cp/pattern.hpp>
 #include <ctess/d3d11/tessellator.hpp>
 
@@ -216,13 +217,6 @@ struct FactorSource {
     }
 };
 
-// Twice the signed area of a triangle, in (1/65536)^2.
-std::int64_t doubled_area(const Point& a, const Point& b, const Point& c) {
-    const auto x = [](const Point& p) { return static_cast<std::int64_t>(p.u); };
-    const auto y = [](const Point& p) { return static_cast<std::int64_t>(p.v); };
-    return (x(b) - x(a)) * (y(c) - y(a)) - (x(c) - x(a)) * (y(b) - y(a));
-}
-
 // The triangles tile the domain: every index is a point, the signed areas sum exactly to the domain's area,
 // and no triangle is inverted beyond a sliver. With this area sign TRIANGLE_CW triangles in (u, v) are
 // positive (the minimum triangle (0,1), (0,0), (1,0) is). Zero area is allowed at coincident points (R4
@@ -232,10 +226,10 @@ std::int64_t doubled_area(const Point& a, const Point& b, const Point& c) {
 // an inverted triangle may have at most 16 units of base times the full height: doubled area >= -16 * 65536.
 void require_tiles(const Mesh& m, std::int64_t domain_doubled_area) {
     for (const std::uint32_t i : m.indices) REQUIRE(i < m.counts.vertices);
-    std::int64_t sum = 0;
+    ctess::analysis::int128 sum = 0; // doubled areas in (1/65536)^2 (ctess::analysis::signed_area2)
     for (std::size_t k = 0; k + 2 < m.indices.size(); k += 3) {
-        const std::int64_t a =
-            doubled_area(m.points[m.indices[k]], m.points[m.indices[k + 1]], m.points[m.indices[k + 2]]);
+        const auto a = ctess::analysis::signed_area2(m.points[m.indices[k]], m.points[m.indices[k + 1]],
+                                                     m.points[m.indices[k + 2]]);
         sum += a;
         REQUIRE(a >= -16 * 65536);
     }

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/runtime/uniform/split.hpp>
 
 #include "fuzz_input.hpp"
@@ -22,13 +23,6 @@ using namespace ctess;
 
 namespace {
 
-template <class Point>
-__int128 doubled_area(const Point& a, const Point& b, const Point& c) {
-    const __int128 bx = __int128(b.u) - a.u, by = __int128(b.v) - a.v;
-    const __int128 cx = __int128(c.u) - a.u, cy = __int128(c.v) - a.v;
-    return bx * cy - by * cx;
-}
-
 // Indices in range, points in the triangle of side `one`, orientation and exact coverage.
 void check_mesh(const std::vector<DomainPoint>& v, const std::vector<std::uint32_t>& idx, std::uint64_t one,
                 Winding winding) {
@@ -36,7 +30,7 @@ void check_mesh(const std::vector<DomainPoint>& v, const std::vector<std::uint32
     __int128 total = 0;
     for (std::size_t k = 0; k < idx.size(); k += 3) {
         for (unsigned j = 0; j < 3; ++j) CTESS_FUZZ_CHECK(idx[k + j] < v.size());
-        const __int128 a = doubled_area(v[idx[k]], v[idx[k + 1]], v[idx[k + 2]]);
+        const __int128 a = analysis::signed_area2(v[idx[k]], v[idx[k + 1]], v[idx[k + 2]]);
         CTESS_FUZZ_CHECK(winding == Winding::ccw ? a > 0 : a < 0);
         total += a;
     }

@@ -14,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-#include "support/square_mesh_checks.hpp"
+#include <ctess/analysis/square_mesh_checks.hpp>
 
 using namespace ctess;
 using namespace ctess::rt;
@@ -40,9 +40,9 @@ struct Result {
         return out;
     }
     std::string violation() const {
-        std::vector<test::SquarePoint> sq;
+        std::vector<analysis::SquarePoint> sq;
         for (std::uint32_t i = 0; i < counts.vertices; ++i) sq.push_back({params[i].p, params[i].q});
-        return test::square_mesh_violation(sq, triangles, fixed_one);
+        return analysis::square_mesh_violation(sq, triangles, fixed_one);
     }
 };
 
@@ -183,9 +183,9 @@ TEST_CASE("random splits keep the bintree conforming and the base-neighbour inva
         }
         std::vector<std::uint32_t> tris(3 * tree.counts().triangles);
         REQUIRE(tree.emit_triangles(tris));
-        std::vector<test::SquarePoint> sq;
+        std::vector<analysis::SquarePoint> sq;
         for (std::uint32_t i = 0; i < tree.vertex_count(); ++i) sq.push_back({params[i].p, params[i].q});
-        REQUIRE(test::square_mesh_violation(sq, tris, fixed_one) == "");
+        REQUIRE(analysis::square_mesh_violation(sq, tris, fixed_one) == "");
     }
 }
 

@@ -2,6 +2,7 @@
 // up to 64 x 64, the triangle-list conversion, grid evaluation, and bad sizes.
 #include <catch2/catch.hpp>
 
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/surface/grid_eval.hpp>
 #include <ctess/surface/grid_strip.hpp>
 
@@ -19,11 +20,6 @@ struct GridPoint {
 
 GridPoint grid_point(std::uint32_t index, std::uint32_t u_segments) {
     return {index % (u_segments + 1), index / (u_segments + 1)};
-}
-
-// Twice the signed area in grid units (positive = counter-clockwise with v up).
-std::int64_t area2(GridPoint a, GridPoint b, GridPoint c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
 } // namespace
@@ -61,7 +57,8 @@ TEST_CASE("every cell of every grid up to 64 x 64 is covered by two strip triang
                 const std::uint32_t i1 = (k & 1u) ? strip[k] : strip[k + 1];
                 const std::uint32_t i2 = strip[k + 2];
                 const GridPoint a = grid_point(i0, U), b = grid_point(i1, U), c = grid_point(i2, U);
-                const std::int64_t area = area2(a, b, c);
+                // Twice the signed area in grid units (positive = counter-clockwise with v up).
+                const auto area = ctess::analysis::signed_area2(a, b, c);
                 REQUIRE((area == 0) == strip_triangle_is_turnaround(k, U));
                 if (area == 0) {
                     ++degenerate;

@@ -1,6 +1,7 @@
 // Uniform-density splitting above the table (docs/algorithm.md §3.5): exact coverage without inverted or
 // zero-area triangles, bounded depth, counts equal to what emit writes, crack-free neighbours at any depth
 // (shared-edge positions equal bit for bit), the patch itself below N, and bad input clamped.
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/runtime/uniform/split.hpp>
 #include <ctess/uniform/metric.hpp>
 
@@ -22,15 +23,9 @@ using ctess::rt::UniformSplit;
 
 namespace {
 
-__extension__ using int128 = __int128;
+using ctess::analysis::int128;
 
 using ctess::test::emit_all;
-
-int128 area2(SplitPoint a, SplitPoint b, SplitPoint c) {
-    const int128 bu = int128{b.u} - a.u, bv = int128{b.v} - a.v, cu = int128{c.u} - a.u,
-                 cv = int128{c.v} - a.v;
-    return bu * cv - bv * cu;
-}
 
 // The default interior dice tolerance (1.433 N) and the strict one (N), §3.5: the same invariants hold.
 constexpr std::array<double, 2> tolerances{ctess::rt::uniform_split_interior_tolerance,
@@ -85,8 +80,8 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
         const auto e = emit_all(s);
         int128 sum = 0;
         for (std::size_t t = 0; t < e.indices.size(); t += 3) {
-            const int128 a =
-                area2(e.vertices[e.indices[t]], e.vertices[e.indices[t + 1]], e.vertices[e.indices[t + 2]]);
+            const int128 a = ctess::analysis::signed_area2(
+                e.vertices[e.indices[t]], e.vertices[e.indices[t + 1]], e.vertices[e.indices[t + 2]]);
             REQUIRE(a > 0);
             sum += a;
         }
@@ -119,8 +114,8 @@ TEST_CASE("uniform split: no T-junction inside the patch, whichever subpatches d
     // fuzz_uniform).
     const auto cases =
         with_random({{193, 160, 254}, {222, 193, 192}, {93, 231, 142}, {256, 256, 210}}, 2026, 60, 1, 256);
-    const std::uint64_t one = ctess::rt::uniform_split_fixed_one;
-    auto on_root_edge = [one](SplitPoint a, SplitPoint b) {
+    constexpr std::uint64_t one = ctess::rt::uniform_split_fixed_one;
+    auto on_root_edge = [](SplitPoint a, SplitPoint b) {
         return (a.v == 0 && b.v == 0) || (a.u == 0 && b.u == 0) ||
                (std::uint64_t{a.u} + a.v == one && std::uint64_t{b.u} + b.v == one);
     };

@@ -2,13 +2,15 @@
 // uniform-density table against D3D11 integer and CP.
 #include "cli_args.hpp"
 #include "commands.hpp"
-#include "efficiency.hpp"
-#include "efficiency_uniform.hpp"
 #include "file_output.hpp"
+
+#include <ctess/analysis/efficiency.hpp>
+#include <ctess/analysis/efficiency_uniform.hpp>
 
 namespace ctess::cli {
 
 int run_efficiency(int argc, char** argv) {
+    using namespace ctess::analysis;
     const Args args(argc, argv, 2, {"max", "random", "seed", "format", "out", "family"});
     const unsigned max = max_factor_from(args);
     const unsigned random = parse_unsigned(args.get_or("random", "40"), "--random", 1, 100000);

@@ -2,6 +2,7 @@
 
 #include "cli_args.hpp"
 
+#include <ctess/analysis/signed_area.hpp>
 #include <ctess/cp/pattern.hpp>
 #include <ctess/cp/quad.hpp>
 #include <ctess/d3d11/tessellator.hpp>
@@ -121,15 +122,11 @@ Mesh tessellate(const PatternRequest& request) {
 }
 
 std::int64_t doubled_area(const Mesh& mesh, std::size_t t) {
-    const MeshPoint& a = mesh.vertices[mesh.indices[3 * t]];
-    const MeshPoint& b = mesh.vertices[mesh.indices[3 * t + 1]];
-    const MeshPoint& c = mesh.vertices[mesh.indices[3 * t + 2]];
-    const std::int64_t bx = std::int64_t{b.u} - a.u, by = std::int64_t{b.v} - a.v;
-    const std::int64_t cx = std::int64_t{c.u} - a.u, cy = std::int64_t{c.v} - a.v;
-    // 128-bit products: split uniform patches use fixed_one = 65534^2, whose squares exceed 64 bits; the
+    // Exact in 128 bits: split uniform patches use fixed_one = 65534^2, whose squares exceed 64 bits; the
     // result saturates (sign and zero kept).
-    __extension__ using wide = __int128;
-    const wide area = wide{bx} * cy - wide{by} * cx;
+    const analysis::int128 area =
+        analysis::signed_area2(mesh.vertices[mesh.indices[3 * t]], mesh.vertices[mesh.indices[3 * t + 1]],
+                               mesh.vertices[mesh.indices[3 * t + 2]]);
     constexpr std::int64_t top = std::numeric_limits<std::int64_t>::max();
     return area > top ? top : area < -top ? -top : static_cast<std::int64_t>(area);
 }

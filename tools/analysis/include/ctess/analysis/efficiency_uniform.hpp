@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace ctess::cli {
+namespace ctess::analysis {
 
 struct UniformEfficiencyRow {
     std::array<std::uint32_t, 3> factors{};
@@ -44,4 +44,4 @@ std::string uniform_efficiency_markdown(const std::vector<UniformEfficiencyRow>&
 std::string uniform_efficiency_json(const std::vector<UniformEfficiencyRow>& rows,
                                     const std::vector<UniformSplitSummary>& split);
 
-} // namespace ctess::cli
+} // namespace ctess::analysis

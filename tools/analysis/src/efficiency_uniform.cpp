@@ -1,4 +1,4 @@
-#include "efficiency_uniform.hpp"
+#include <ctess/analysis/efficiency_uniform.hpp>
 
 #include <ctess/cp/pattern.hpp>
 #include <ctess/d3d11/tessellator.hpp>
@@ -11,7 +11,7 @@
 
 #include <fmt/core.h>
 
-namespace ctess::cli {
+namespace ctess::analysis {
 
 namespace {
 
@@ -216,4 +216,4 @@ std::string uniform_efficiency_json(const std::vector<UniformEfficiencyRow>& row
     return out;
 }
 
-} // namespace ctess::cli
+} // namespace ctess::analysis

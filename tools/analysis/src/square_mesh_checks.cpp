@@ -1,40 +1,27 @@
-// Exact integer checks on a triangulation of the parameter square [0, one]^2 (adaptive surfaces): returns
-// the first violated property as text, or "" when the mesh is conforming.
-//
-// * every triangle is counter-clockwise with positive area;
-// * the doubled areas sum to exactly 2 * one^2 (the square covered once, with one winding);
-// * every edge inside the square is used by exactly two triangles, in opposite directions, and every edge on
-//   the boundary by exactly one (so no T-junction: a hanging vertex would leave a long edge used once);
-// * no two vertices share a parameter.
-#pragma once
-#include <cstdint>
+#include <ctess/analysis/signed_area.hpp>
+#include <ctess/analysis/square_mesh_checks.hpp>
+
 #include <map>
 #include <set>
-#include <span>
-#include <string>
 #include <utility>
 
-namespace ctess::test {
+namespace ctess::analysis {
 
-struct SquarePoint {
-    std::int64_t p, q;
-};
-
-inline std::string square_mesh_violation(std::span<const SquarePoint> params,
-                                         std::span<const std::uint32_t> triangles, std::int64_t one) {
+std::string square_mesh_violation(std::span<const SquarePoint> params,
+                                  std::span<const std::uint32_t> triangles, std::int64_t one) {
     std::set<std::pair<std::int64_t, std::int64_t>> distinct;
     for (const SquarePoint& v : params) {
         if (v.p < 0 || v.q < 0 || v.p > one || v.q > one) return "vertex outside the square";
         if (!distinct.insert({v.p, v.q}).second) return "two vertices share a parameter";
     }
-    std::int64_t area_sum = 0;
+    int128 area_sum = 0;
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
     for (std::size_t t = 0; t + 3 <= triangles.size(); t += 3) {
         const std::uint32_t i[3] = {triangles[t], triangles[t + 1], triangles[t + 2]};
         for (std::uint32_t k : i)
             if (k >= params.size()) return "index out of range";
         const SquarePoint a = params[i[0]], b = params[i[1]], c = params[i[2]];
-        const std::int64_t area2 = (b.p - a.p) * (c.q - a.q) - (b.q - a.q) * (c.p - a.p);
+        const auto area2 = signed_area2(a, b, c);
         if (area2 <= 0) return "a triangle is not counter-clockwise with positive area";
         area_sum += area2;
         for (int e = 0; e < 3; ++e)
@@ -53,4 +40,4 @@ inline std::string square_mesh_violation(std::span<const SquarePoint> params,
     return "";
 }
 
-} // namespace ctess::test
+} // namespace ctess::analysis

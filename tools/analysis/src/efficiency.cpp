@@ -1,6 +1,5 @@
-#include "efficiency.hpp"
-
-#include "mesh.hpp"
+#include <ctess/analysis/efficiency.hpp>
+#include <ctess/analysis/signed_area.hpp>
 
 #include <ctess/cp/orientation.hpp>
 #include <ctess/cp/pattern.hpp>
@@ -11,7 +10,7 @@
 
 #include <fmt/core.h>
 
-namespace ctess::cli {
+namespace ctess::analysis {
 
 namespace {
 
@@ -20,20 +19,58 @@ std::uint32_t d3d_even_triangles(const std::array<float, 3>& f, float inside) {
     return d3d11::tessellate_tri({}, {}, {f[0], f[1], f[2], inside}, opt).triangles;
 }
 
+// CP's pattern for the factors as given (counter-clockwise, shared layout): its triangles and how many of
+// them have zero area.
+struct CpCount {
+    std::uint32_t triangles = 0, zero_area = 0;
+};
+CpCount cp_count(const std::array<float, 3>& f, unsigned max) {
+    cp::PatternOptions opt;
+    opt.max_factor = max;
+    opt.layout = Layout::shared;
+    opt.winding = Winding::ccw;
+    const Counts n = cp::pattern_counts(f[0], f[1], f[2], opt);
+    std::vector<DomainPoint> v(n.vertices);
+    std::vector<std::uint32_t> idx(n.index_count());
+    cp::tessellate(v, idx, f[0], f[1], f[2], opt);
+    CpCount c{n.triangles, 0};
+    for (std::size_t k = 0; k < idx.size(); k += 3)
+        c.zero_area += signed_area2(v[idx[k]], v[idx[k + 1]], v[idx[k + 2]]) == 0;
+    return c;
+}
+
 } // namespace
+
+std::vector<FactorSet> efficiency_factor_sets(unsigned random_count, std::uint32_t seed) {
+    std::vector<FactorSet> sets;
+    for (float f : {2.0f, 4.0f, 5.0f, 8.0f, 10.3f, 16.0f, 24.0f, 32.0f, 48.0f, 64.0f})
+        sets.push_back({"equal", {f, f, f}});
+    const std::array<std::array<float, 3>, 8> two_high = {{{64, 64, 2},
+                                                           {64, 2, 64},
+                                                           {2, 64, 64},
+                                                           {32, 32, 8},
+                                                           {8, 32, 32},
+                                                           {48, 40, 3},
+                                                           {20, 24, 1.5f},
+                                                           {16, 16, 4}}};
+    for (const auto& f : two_high) sets.push_back({"two high, one low", f});
+    std::mt19937 rng(seed);
+    for (unsigned i = 0; i < random_count; ++i) {
+        std::array<float, 3> f{};
+        // 2 + 62 * k / 2^24 with a 24-bit k: the same triples on every standard library.
+        for (float& x : f) x = 2.0f + 62.0f * static_cast<float>(rng() >> 8) / 16777216.0f;
+        sets.push_back({"random", f});
+    }
+    return sets;
+}
 
 EfficiencyRow efficiency_row(const std::array<float, 3>& f, unsigned max, const std::string& group) {
     EfficiencyRow row;
     row.group = group;
     row.factors = f;
-    PatternRequest request;
-    request.factors = {f[0], f[1], f[2]};
-    request.ccw = true;
-    request.max_factor = max;
-    request.provoking_layout = false;
-    const Mesh mesh = tessellate(request);
-    row.cp_triangles = static_cast<std::uint32_t>(mesh.primitive_count());
-    row.cp_nondegenerate = static_cast<std::uint32_t>(mesh.primitive_count() - degenerate_triangles(mesh));
+    const CpCount cp_as_given = cp_count(f, max);
+    row.cp_triangles = cp_as_given.triangles;
+    row.cp_nondegenerate = cp_as_given.triangles - cp_as_given.zero_area;
     cp::PatternOptions opt;
     opt.max_factor = max;
     // The orientation rule (docs/algorithm.md §2.13) with the factors as the measure: the smallest on e2.
@@ -46,24 +83,8 @@ EfficiencyRow efficiency_row(const std::array<float, 3>& f, unsigned max, const 
 
 std::vector<EfficiencyRow> efficiency_rows(unsigned max, unsigned random_count, std::uint32_t seed) {
     std::vector<EfficiencyRow> rows;
-    for (float f : {2.0f, 4.0f, 5.0f, 8.0f, 10.3f, 16.0f, 24.0f, 32.0f, 48.0f, 64.0f})
-        rows.push_back(efficiency_row({f, f, f}, max, "equal"));
-    const std::array<std::array<float, 3>, 8> two_high = {{{64, 64, 2},
-                                                           {64, 2, 64},
-                                                           {2, 64, 64},
-                                                           {32, 32, 8},
-                                                           {8, 32, 32},
-                                                           {48, 40, 3},
-                                                           {20, 24, 1.5f},
-                                                           {16, 16, 4}}};
-    for (const auto& f : two_high) rows.push_back(efficiency_row(f, max, "two high, one low"));
-    std::mt19937 rng(seed);
-    for (unsigned i = 0; i < random_count; ++i) {
-        std::array<float, 3> f{};
-        // 2 + 62 * k / 2^24 with a 24-bit k: the same triples on every standard library.
-        for (float& x : f) x = 2.0f + 62.0f * static_cast<float>(rng() >> 8) / 16777216.0f;
-        rows.push_back(efficiency_row(f, max, "random"));
-    }
+    for (const FactorSet& set : efficiency_factor_sets(random_count, seed))
+        rows.push_back(efficiency_row(set.factors, max, set.group));
     return rows;
 }
 
@@ -133,4 +154,4 @@ std::string efficiency_json(const std::vector<EfficiencyRow>& rows, const Effici
     return out;
 }
 
-} // namespace ctess::cli
+} // namespace ctess::analysis
