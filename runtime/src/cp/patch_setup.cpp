@@ -7,34 +7,11 @@
 
 namespace ctess::rt {
 
-CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
-                           PatchOptions options, bool counts_only) noexcept
-    : options_(options) {
-    // The two table sets' maxima as constants, so that the token count folds (no log2 loop per call).
-    auto clamp = [max = tables.max_factor](cp::LineState state) {
-        return max == 64    ? cp::clamp_line_state(state, 64)
-               : max == 256 ? cp::clamp_line_state(state, 256)
-                            : cp::clamp_line_state(state, max);
-    };
-    const cp::LineState s[3] = {clamp(s0), clamp(s1), clamp(s2)};
-    cw_mask_ = options.winding == Winding::cw ? ~0u : 0u;
-    unsigned shape[3];
-    set_edges(tables, s, shape);
-    if (c0_ && c1_ && c2_) { // Type 0
-        type_ = 0;
-        vertices_ = 3;
-        triangles_ = 1;
-    } else if (s[0].token <= 1 && s[2].token <= 1) {
-        set_fan();
-    } else {
-        set_parallelogram(tables, shape, counts_only);
-    }
-}
-
+// The constructor's steps, inline: each is called once, and the embedded build keeps one function.
 // Each edge's points, lerp and segments from its token's record; a T0 edge (token 0) takes shape 1's points
 // and collapses.
-void CpPatchSetup::set_edges(const CpTableSet& tables, const cp::LineState (&s)[3],
-                             unsigned (&shape)[3]) noexcept {
+inline void CpPatchSetup::set_edges(const CpTableSet& tables, const cp::LineState (&s)[3],
+                                    unsigned (&shape)[3]) noexcept {
     for (unsigned k = 0; k < 3; ++k) {
         shape[k] = s[k].token == 0 ? 1u : s[k].token;
         const cp::tables::TokenRecord& rec = tables.tokens[shape[k] - 1];
@@ -52,7 +29,7 @@ void CpPatchSetup::set_edges(const CpTableSet& tables, const cp::LineState (&s)[
 
 // Type 1: n1 + 7 slots and n1 + 6 triangles before the collapse (docs/algorithm.md §2.8), T0 edges' slots
 // and triangles skipped.
-void CpPatchSetup::set_fan() noexcept {
+inline void CpPatchSetup::set_fan() noexcept {
     type_ = 1;
     std::uint32_t dropped_slots = 0;
     auto drop_slots = [&](std::uint32_t begin, std::uint32_t end) {
@@ -79,9 +56,44 @@ void CpPatchSetup::set_fan() noexcept {
     triangles_ = n1_ + 6 - dropped;
 }
 
+// Triangles the collapse drops (docs/algorithm.md §2.9), as runs of the raw emission order.
+inline void CpPatchSetup::skip_collapsed_triangles(const CpTableSet& tables,
+                                                   const unsigned (&shape)[3]) noexcept {
+    const std::uint32_t z = strips_;
+    t1_fan_ = c1_ ? tables.t1_last_fan[shape[0] - 1] : 0u;
+    if (c0_) {
+        add_triangle_skip(0, 2 * n2_ - 2); // strip 0: A0's column merges with column 0
+        if (c1_) {
+            add_triangle_skip(z, z + 2);
+            add_triangle_skip(z + 3, z + 5);
+        } else {
+            add_triangle_skip(z, z + 1);
+            add_triangle_skip(z + n1_, z + n1_ + 1);
+        }
+    } else if (c2_) {
+        const std::uint32_t r1 = c_[2] - c_[1];
+        add_triangle_skip(0, r1); // of the strips only strip 0's last triangle (v0, u1, v2) keeps its area
+        add_triangle_skip(r1 + 1, strips_);
+        if (c1_) {
+            add_triangle_skip(z, z + 1);
+            if (t1_fan_ == zipper_ - 1) {
+                add_triangle_skip(z + n0_, z + n0_ + 2);
+            } else {
+                add_triangle_skip(z + t1_fan_, z + t1_fan_ + 1);
+                add_triangle_skip(z + zipper_ - 1, z + zipper_);
+            }
+        } else {
+            add_triangle_skip(z + zipper_ - 1, z + zipper_); // the last zipper triangle has v2 twice
+        }
+    } else if (c1_) {
+        add_triangle_skip(z, z + 1); // the fans (R_1, L, R_0) and (R_3, L, R_2) have v1 or v2 twice
+        add_triangle_skip(z + t1_fan_, z + t1_fan_ + 1);
+    }
+}
+
 // Type 2: the column record of (e2, e0), the strips, the zipper and the e1 offset; the provoking copies.
-void CpPatchSetup::set_parallelogram(const CpTableSet& tables, const unsigned (&shape)[3],
-                                     bool counts_only) noexcept {
+inline void CpPatchSetup::set_parallelogram(const CpTableSet& tables, const unsigned (&shape)[3],
+                                            bool counts_only) noexcept {
     type_ = 2;
     const unsigned shapes = tables.shapes;
     const CpColumnChunk& chunk = tables.column_chunks[tables.chunk_of_shape2[shape[2] - 1]];
@@ -114,37 +126,27 @@ void CpPatchSetup::set_parallelogram(const CpTableSet& tables, const unsigned (&
     fast_strips_ = plain_strips_ && head_ != 0 ? strips_ : 0u;
 }
 
-// Triangles the collapse drops (docs/algorithm.md §2.9), as runs of the raw emission order.
-void CpPatchSetup::skip_collapsed_triangles(const CpTableSet& tables, const unsigned (&shape)[3]) noexcept {
-    const std::uint32_t z = strips_;
-    t1_fan_ = c1_ ? tables.t1_last_fan[shape[0] - 1] : 0u;
-    if (c0_) {
-        add_triangle_skip(0, 2 * n2_ - 2); // strip 0: A0's column merges with column 0
-        if (c1_) {
-            add_triangle_skip(z, z + 2);
-            add_triangle_skip(z + 3, z + 5);
-        } else {
-            add_triangle_skip(z, z + 1);
-            add_triangle_skip(z + n1_, z + n1_ + 1);
-        }
-    } else if (c2_) {
-        const std::uint32_t r1 = c_[2] - c_[1];
-        add_triangle_skip(0, r1); // of the strips only strip 0's last triangle (v0, u1, v2) keeps its area
-        add_triangle_skip(r1 + 1, strips_);
-        if (c1_) {
-            add_triangle_skip(z, z + 1);
-            if (t1_fan_ == zipper_ - 1) {
-                add_triangle_skip(z + n0_, z + n0_ + 2);
-            } else {
-                add_triangle_skip(z + t1_fan_, z + t1_fan_ + 1);
-                add_triangle_skip(z + zipper_ - 1, z + zipper_);
-            }
-        } else {
-            add_triangle_skip(z + zipper_ - 1, z + zipper_); // the last zipper triangle has v2 twice
-        }
-    } else if (c1_) {
-        add_triangle_skip(z, z + 1); // the fans (R_1, L, R_0) and (R_3, L, R_2) have v1 or v2 twice
-        add_triangle_skip(z + t1_fan_, z + t1_fan_ + 1);
+CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
+                           PatchOptions options, bool counts_only) noexcept
+    : options_(options) {
+    // The two table sets' maxima as constants, so that the token count folds (no log2 loop per call).
+    auto clamp = [max = tables.max_factor](cp::LineState state) {
+        return max == 64    ? cp::clamp_line_state(state, 64)
+               : max == 256 ? cp::clamp_line_state(state, 256)
+                            : cp::clamp_line_state(state, max);
+    };
+    const cp::LineState s[3] = {clamp(s0), clamp(s1), clamp(s2)};
+    cw_mask_ = options.winding == Winding::cw ? ~0u : 0u;
+    unsigned shape[3];
+    set_edges(tables, s, shape);
+    if (c0_ && c1_ && c2_) { // Type 0
+        type_ = 0;
+        vertices_ = 3;
+        triangles_ = 1;
+    } else if (s[0].token <= 1 && s[2].token <= 1) {
+        set_fan();
+    } else {
+        set_parallelogram(tables, shape, counts_only);
     }
 }
 
