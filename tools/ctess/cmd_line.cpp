@@ -1,6 +1,7 @@
 // ctess line: the points of one edge for a mode and factor.
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "json_escape.hpp"
 
 #include "line_modes.hpp"
 #include <ctess/core/config.hpp>
@@ -45,7 +46,7 @@ int run_line(int argc, char** argv) {
         for (unsigned i = 0; i < n; ++i) pts += fmt::format("{}{}", i ? ", " : "", p[i]);
         fmt::print("{{\"mode\": \"{}\", \"factor\": {}, \"max_tess_factor\": {}, \"fixed_one\": {}, "
                    "\"points\": [{}]}}\n",
-                   line_mode_name(mode), f, max, one, pts);
+                   json_escape(line_mode_name(mode)), f, max, one, pts);
         return 0;
     }
     fmt::print("mode {}  factor {:g}  ", line_mode_name(mode), f);

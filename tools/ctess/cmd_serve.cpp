@@ -4,13 +4,16 @@
 // docs/viewer.md).
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "json_escape.hpp"
 #include "mesh.hpp"
 #include "mesh_formats.hpp"
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <string_view>
 
 #include <fmt/core.h>
 
@@ -34,6 +37,42 @@ std::string pattern_json(const httplib::Request& req) {
     return mesh_to_json(tessellate(r), r);
 }
 
+// A loopback name with an optional port: `127.0.0.1`, `localhost` or `[::1]`. Any other Host (or Origin) is
+// refused, so a DNS-rebound page on another name cannot read the server's answers.
+bool is_loopback_authority(std::string_view a) {
+    for (const std::string_view name : {"127.0.0.1", "localhost", "[::1]"}) {
+        if (a.substr(0, name.size()) != name) continue;
+        const std::string_view rest = a.substr(name.size());
+        if (rest.empty()) return true;
+        if (rest[0] != ':' || rest.size() < 2 || rest.size() > 6) return false;
+        return rest.substr(1).find_first_not_of("0123456789") == std::string_view::npos;
+    }
+    return false;
+}
+
+bool is_loopback_origin(std::string_view origin) {
+    constexpr std::string_view scheme = "http://";
+    return origin.substr(0, scheme.size()) == scheme && is_loopback_authority(origin.substr(scheme.size()));
+}
+
+// A decoded path with NUL (the file would be found by the name before it, its type taken from the name after
+// it) or a `..` segment is refused before the file handler sees it.
+bool is_safe_path(std::string_view path) {
+    if (path.find('\0') != std::string_view::npos) return false;
+    for (std::size_t at = 0; at <= path.size();) {
+        const std::size_t end = std::min(path.find('/', at), path.size());
+        if (path.substr(at, end - at) == "..") return false;
+        at = end + 1;
+    }
+    return true;
+}
+
+httplib::Server::HandlerResponse refuse(httplib::Response& res, int status, const char* why) {
+    res.status = status;
+    res.set_content(why, "text/plain");
+    return httplib::Server::HandlerResponse::Handled;
+}
+
 } // namespace
 
 int run_serve(int argc, char** argv) {
@@ -54,12 +93,32 @@ int run_serve(int argc, char** argv) {
         throw std::runtime_error("--viewer: cannot serve '" + viewer + "' (not a directory)");
     server.set_file_extension_and_mimetype_mapping("wgsl", "text/plain");
     server.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
+    server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+        // httplib parsed Range before routing and applies it to any body (a refusal's too): a generated
+        // answer ignores it, and a file takes at most one range, so many overlapping ranges cannot multiply
+        // the response. The request is httplib's own non-const object; clearing its parsed ranges is the only
+        // hook 0.11 gives.
+        auto& ranges = const_cast<httplib::Request&>(req).ranges;
+        const bool many_ranges = ranges.size() > 1 && req.path.rfind("/api/", 0) != 0;
+        if (many_ranges || req.path.rfind("/api/", 0) == 0 ||
+            !is_loopback_authority(req.get_header_value("Host")))
+            ranges.clear();
+        if (!is_loopback_authority(req.get_header_value("Host")))
+            return refuse(res, 403, "ctess serve: Host must be 127.0.0.1, localhost or [::1]\n");
+        if (req.method != "GET" && req.method != "HEAD" && req.has_header("Origin") &&
+            !is_loopback_origin(req.get_header_value("Origin")))
+            return refuse(res, 403, "ctess serve: Origin must be a loopback http origin\n");
+        if (!is_safe_path(req.path)) return refuse(res, 400, "ctess serve: bad path\n");
+        if (many_ranges) return refuse(res, 416, "ctess serve: at most one byte range\n");
+        return httplib::Server::HandlerResponse::Unhandled;
+    });
     server.Get("/api/pattern", [](const httplib::Request& req, httplib::Response& res) {
         try {
             res.set_content(pattern_json(req), "application/json");
         } catch (const std::exception& e) {
             res.status = 400;
-            res.set_content(fmt::format("{{\"error\": \"{}\"}}\n", e.what()), "application/json");
+            res.set_content(fmt::format("{{\"error\": \"{}\"}}\n", json_escape(e.what())),
+                            "application/json");
         }
     });
 

@@ -1,4 +1,5 @@
 #include "mesh_formats.hpp"
+#include "json_escape.hpp"
 
 #include "svg_writer.hpp"
 
@@ -17,7 +18,8 @@ std::string factors_text(const std::vector<float>& factors) {
 
 std::string mesh_to_json(const Mesh& mesh, const PatternRequest& r) {
     std::string out = "{\n";
-    out += fmt::format("  \"mode\": \"{}\",\n  \"domain\": \"{}\",\n", r.mode, r.domain);
+    out += fmt::format("  \"mode\": \"{}\",\n  \"domain\": \"{}\",\n", json_escape(r.mode),
+                       json_escape(r.domain));
     out += "  \"factors\": [";
     for (std::size_t i = 0; i < r.factors.size(); ++i)
         out += fmt::format("{}{}", i ? ", " : "", r.factors[i]);

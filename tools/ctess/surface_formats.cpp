@@ -1,5 +1,6 @@
 #include "surface_formats.hpp"
 
+#include "json_escape.hpp"
 #include "svg_writer.hpp"
 
 #include <ctess/surface/grid_strip.hpp>
@@ -37,7 +38,7 @@ std::string surface_to_json(const SurfaceMesh& mesh, const SurfaceRequest& r) {
     std::string out = "{\n";
     out += fmt::format("  \"name\": \"{}\",\n  \"angle\": {},\n  \"distance\": {},\n  \"min_level\": {},\n"
                        "  \"max_level\": {},\n",
-                       r.name, o.max_angle_deg, o.max_distance, o.min_level, o.max_level);
+                       json_escape(r.name), o.max_angle_deg, o.max_distance, o.min_level, o.max_level);
     out += fmt::format("  \"fixed_one\": {},\n", adaptive::fixed_one);
     out += fmt::format("  \"vertex_count\": {},\n  \"triangle_count\": {},\n", mesh.params.size(),
                        mesh.triangles.size() / 3);
@@ -195,9 +196,10 @@ std::string surface_stats_json(const SurfaceMesh& mesh, const SurfaceRequest& r,
         "\"vertices\": {}, \"triangles\": {}, \"max_chord_error\": {:.6g}, "
         "\"uniform_grid\": {{\"segments\": {}, \"triangles\": {}, \"max_chord_error\": {:.6g}, "
         "\"reached\": {}}}, \"triangle_ratio\": {:.4f}}}\n",
-        r.name, r.options.max_angle_deg, r.options.max_distance, r.options.min_level, r.options.max_level,
-        mesh.params.size(), triangles, mesh.chord_error, u.segments, u.triangles, u.chord_error,
-        u.reached ? "true" : "false", u.triangles ? static_cast<double>(triangles) / u.triangles : 0.0);
+        json_escape(r.name), r.options.max_angle_deg, r.options.max_distance, r.options.min_level,
+        r.options.max_level, mesh.params.size(), triangles, mesh.chord_error, u.segments, u.triangles,
+        u.chord_error, u.reached ? "true" : "false",
+        u.triangles ? static_cast<double>(triangles) / u.triangles : 0.0);
 }
 
 std::string strip_to_json(std::uint32_t u_segments, std::uint32_t v_segments,
