@@ -3,13 +3,25 @@
 // leaves a half-written file behind.
 #include <catch2/catch.hpp>
 
+#include <arpa/inet.h>
+#include <cctype>
+#include <csignal>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <netinet/in.h>
+#include <poll.h>
 #include <string>
+#include <string_view>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
+#include "json_escape.hpp"
 #include "support/cli_run.hpp"
 
 namespace {
@@ -126,4 +138,267 @@ TEST_CASE("ctess <command> --help prints that command's usage", "[cli]") {
     const Run unknown = ctess_cli("frobnicate --help");
     CHECK(unknown.exit_code == 2);
     CHECK(contains(unknown.out, "unknown command"));
+}
+
+// --- `ctess serve` on loopback: the server is started on a free port and stopped by each test ---
+
+namespace {
+
+// `ctess serve --port 0`, stopped (SIGTERM) when this goes out of scope; port is 0 if it did not start.
+struct Server {
+    pid_t pid = -1;
+    int port = 0;
+    std::string shaders = temp_path("serve_shaders");
+
+    Server() {
+        std::filesystem::create_directories(shaders);
+        int fds[2];
+        REQUIRE(::pipe(fds) == 0);
+        pid = ::fork();
+        REQUIRE(pid >= 0);
+        if (pid == 0) {
+            ::dup2(fds[1], 1);
+            ::close(fds[0]);
+            ::close(fds[1]);
+            ::execl(CTESS_CLI, "ctess", "serve", "--port", "0", "--shaders", shaders.c_str(), nullptr);
+            ::_exit(127);
+        }
+        ::close(fds[1]);
+        // The first line names the bound port; wait at most 10 s for it.
+        std::string line;
+        pollfd p{fds[0], POLLIN, 0};
+        while (line.find('\n') == std::string::npos && ::poll(&p, 1, 10'000) > 0) {
+            char buf[256];
+            const ssize_t n = ::read(fds[0], buf, sizeof buf);
+            if (n <= 0) break;
+            line.append(buf, static_cast<std::size_t>(n));
+        }
+        ::close(fds[0]);
+        const std::size_t at = line.find("127.0.0.1:");
+        if (at != std::string::npos) port = std::atoi(line.c_str() + at + 10);
+    }
+    ~Server() {
+        if (pid > 0) {
+            ::kill(pid, SIGTERM);
+            ::waitpid(pid, nullptr, 0);
+        }
+        std::filesystem::remove_all(shaders);
+    }
+    Server(const Server&) = delete;
+    Server& operator=(const Server&) = delete;
+};
+
+struct Reply {
+    int status = 0;
+    std::string head, body;
+};
+
+// One raw HTTP/1.1 request to 127.0.0.1:port (Connection: close), reading at most `limit` bytes, each read
+// bounded by a 10 s timeout.
+Reply http(int port, const std::string& request, std::size_t limit = 64u << 20) {
+    const int s = ::socket(AF_INET, SOCK_STREAM, 0);
+    REQUIRE(s >= 0);
+    timeval tv{10, 0};
+    ::setsockopt(s, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    ::setsockopt(s, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<std::uint16_t>(port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    REQUIRE(::connect(s, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+    for (std::size_t sent = 0; sent < request.size();) {
+        const ssize_t n = ::send(s, request.data() + sent, request.size() - sent, MSG_NOSIGNAL);
+        REQUIRE(n > 0);
+        sent += static_cast<std::size_t>(n);
+    }
+    std::string all;
+    char buf[65536];
+    ssize_t n = 0;
+    while (all.size() < limit && (n = ::recv(s, buf, sizeof buf, 0)) > 0)
+        all.append(buf, static_cast<std::size_t>(n));
+    ::close(s);
+    Reply r;
+    const std::size_t end = all.find("\r\n\r\n");
+    r.head = all.substr(0, end);
+    if (end != std::string::npos) r.body = all.substr(end + 4);
+    if (all.rfind("HTTP/1.1 ", 0) == 0) r.status = std::atoi(all.c_str() + 9);
+    return r;
+}
+
+std::string get(const std::string& target, const std::string& host, const std::string& extra = "") {
+    return "GET " + target + " HTTP/1.1\r\nHost: " + host + "\r\n" + extra + "Connection: close\r\n\r\n";
+}
+
+// A strict JSON check (RFC 8259 grammar, strings with only the escapes JSON allows and no raw control
+// characters) that also lists the top-level object's keys.
+struct JsonCheck {
+    std::string_view s;
+    std::size_t i = 0;
+    std::vector<std::string> keys;
+
+    explicit JsonCheck(std::string_view text) : s(text) {}
+
+    void ws() {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\n' || s[i] == '\r' || s[i] == '\t')) ++i;
+    }
+    bool lit(std::string_view w) {
+        if (s.substr(i, w.size()) != w) return false;
+        i += w.size();
+        return true;
+    }
+    bool string(std::string* out) {
+        if (!lit("\"")) return false;
+        while (i < s.size() && s[i] != '"') {
+            const unsigned char c = static_cast<unsigned char>(s[i]);
+            if (c < 0x20) return false;
+            if (c == '\\') {
+                if (++i >= s.size()) return false;
+                if (s[i] == 'u') {
+                    for (int k = 1; k <= 4; ++k)
+                        if (i + k >= s.size() || !std::isxdigit(static_cast<unsigned char>(s[i + k])))
+                            return false;
+                    i += 4;
+                } else if (std::string_view("\"\\/bfnrt").find(s[i]) == std::string_view::npos) {
+                    return false;
+                }
+            }
+            if (out) *out += s[i];
+            ++i;
+        }
+        return lit("\"");
+    }
+    bool value(int depth) {
+        ws();
+        if (i >= s.size()) return false;
+        if (s[i] == '{' || s[i] == '[') {
+            const char close = s[i] == '{' ? '}' : ']';
+            ++i;
+            ws();
+            if (lit(std::string_view(&close, 1))) return true;
+            do {
+                ws();
+                if (close == '}') {
+                    std::string key;
+                    if (!string(&key)) return false;
+                    if (depth == 0) keys.push_back(key);
+                    ws();
+                    if (!lit(":")) return false;
+                }
+                if (!value(depth + 1)) return false;
+                ws();
+            } while (lit(","));
+            return lit(std::string_view(&close, 1));
+        }
+        if (s[i] == '"') return string(nullptr);
+        if (lit("true") || lit("false") || lit("null")) return true;
+        const std::size_t start = i;
+        while (i < s.size() && std::string_view("+-.eE0123456789").find(s[i]) != std::string_view::npos) ++i;
+        return i > start;
+    }
+    bool document() {
+        if (!value(0)) return false;
+        ws();
+        return i == s.size();
+    }
+};
+
+} // namespace
+
+TEST_CASE("json_escape escapes quotes, backslashes and controls, and replaces invalid UTF-8",
+          "[cli][serve]") {
+    using ctess::cli::json_escape;
+    CHECK(json_escape("plain") == "plain");
+    CHECK(json_escape("a\"b\\c") == "a\\\"b\\\\c");
+    CHECK(json_escape(std::string("\n\t\x01\x7f", 4)) == "\\u000a\\u0009\\u0001\\u007f");
+    CHECK(json_escape(std::string("\0", 1)) == "\\u0000");
+    CHECK(json_escape("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80") ==
+          "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80");
+    CHECK(json_escape("\xff") == "\\ufffd");
+    CHECK(json_escape("\xc3") == "\\ufffd");                                  // truncated
+    CHECK(json_escape("\xc0\xaf") == "\\ufffd\\ufffd");                       // overlong
+    CHECK(json_escape("\xed\xa0\x80") == "\\ufffd\\ufffd\\ufffd");            // surrogate
+    CHECK(json_escape("\xf4\x90\x80\x80") == "\\ufffd\\ufffd\\ufffd\\ufffd"); // past U+10FFFF
+}
+
+TEST_CASE("serve: a hostile /api/pattern query gives valid JSON with only the error key", "[cli][serve]") {
+    const Server server;
+    REQUIRE(server.port > 0);
+    const std::string host = "127.0.0.1:" + std::to_string(server.port);
+    for (const char* mode : {"x%22,%22vertex_count%22:1,%22e%22:%22", "a%5C", "a%0Ab%00c", "%FF%C3%28",
+                             "%22%7D%7B%22x%22:%22"}) {
+        INFO("mode=" << mode);
+        const Reply r =
+            http(server.port, get(std::string("/api/pattern?mode=") + mode + "&factors=4,4,4", host));
+        CHECK(r.status == 400);
+        JsonCheck json{r.body};
+        CHECK(json.document());
+        CHECK(json.keys == std::vector<std::string>{"error"});
+    }
+    const Reply ok = http(server.port, get("/api/pattern?mode=cp&factors=4,4,4", host));
+    CHECK(ok.status == 200);
+    CHECK(JsonCheck{ok.body}.document());
+}
+
+TEST_CASE("serve: only loopback Host values are answered", "[cli][serve]") {
+    const Server server;
+    REQUIRE(server.port > 0);
+    const std::string port = std::to_string(server.port);
+    for (const std::string& host :
+         std::vector<std::string>{"evil.example", "evil.example:" + port, "127.0.0.1.evil.example",
+                                  "localhost.evil.example:" + port, "127.0.0.1:" + port + "@evil", ""}) {
+        INFO("Host: " << host);
+        CHECK(http(server.port, get("/", host)).status == 403);
+    }
+    for (const std::string& host :
+         std::vector<std::string>{"127.0.0.1:" + port, "127.0.0.1", "localhost:" + port, "[::1]:" + port}) {
+        INFO("Host: " << host);
+        CHECK(http(server.port, get("/", host)).status == 200);
+    }
+    // A non-GET request with a foreign Origin is refused even with a loopback Host.
+    const std::string post =
+        "POST /api/pattern HTTP/1.1\r\nHost: 127.0.0.1:" + port +
+        "\r\nOrigin: http://evil.example\r\nContent-Length: 0\r\nConnection: close\r\n\r\n";
+    CHECK(http(server.port, post).status == 403);
+}
+
+TEST_CASE("serve: paths with NUL or .. are refused before a file is looked up", "[cli][serve]") {
+    const Server server;
+    REQUIRE(server.port > 0);
+    const std::string host = "127.0.0.1:" + std::to_string(server.port);
+    const Reply js = http(server.port, get("/viewer.js", host));
+    CHECK(js.status == 200);
+    CHECK(contains(js.head, "Content-Type: text/javascript"));
+    for (const char* path :
+         {"/viewer.js%00.html", "/viewer.js%00", "/../CMakeLists.txt", "/shaders/%2E%2E/x"}) {
+        INFO(path);
+        const Reply r = http(server.port, get(path, host));
+        CHECK((r.status == 400 || r.status == 404));
+        CHECK(!contains(r.head, "text/html"));
+    }
+}
+
+TEST_CASE("serve: many byte ranges cannot multiply a response", "[cli][serve]") {
+    const Server server;
+    REQUIRE(server.port > 0);
+    const std::string host = "127.0.0.1:" + std::to_string(server.port);
+    std::string ranges = "Range: bytes=0-10";
+    for (int k = 1; k < 700; ++k) ranges += ",0-10";
+    ranges += "\r\n";
+    const std::string api = "/api/pattern?mode=uniform&factors=256,256,256";
+    const Reply whole = http(server.port, get(api, host));
+    REQUIRE(whole.status == 200);
+    // Read at most a little past the whole answer: the old server sent about 700 copies.
+    const Reply many = http(server.port, get(api, host, ranges), 2 * whole.body.size() + 65536);
+    CHECK(many.status == 200);
+    CHECK(many.body.size() <= whole.body.size());
+    const Reply one = http(server.port, get(api, host, "Range: bytes=0-10\r\n"));
+    CHECK(one.status == 200); // generated answers ignore Range
+    CHECK(one.body == whole.body);
+    // A static file takes one range; more than one is refused.
+    const Reply file_one = http(server.port, get("/viewer.js", host, "Range: bytes=0-10\r\n"));
+    CHECK(file_one.status == 206);
+    CHECK(file_one.body.size() == 11);
+    const Reply file_many = http(server.port, get("/viewer.js", host, ranges), 1 << 20);
+    CHECK(file_many.status == 416);
+    CHECK(file_many.body.size() < 200);
 }
