@@ -5,10 +5,12 @@
 
 #include <ctess/runtime/surface/adaptive.hpp>
 #include <ctess/runtime/surface/chord_error.hpp>
+#include <ctess/runtime/surface/eval.hpp>
 #include <ctess/runtime/surface/parametric.hpp>
 #include <ctess/surface/conforming_bintree.hpp>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -358,4 +360,29 @@ TEST_CASE("the chord error of a grid on z = u^2 is h^2 / 4, the worst edge midpo
         CHECK(grid_chord_error(Plane{}, n, n) < 1e-6f);
     }
     CHECK(grid_chord_error(Parabola{}, 0, 3) == 0.0f);
+}
+
+TEST_CASE("evaluate_quad_surface: a corner shared by two quads has the same bits, zeros included",
+          "[surface][quad]") {
+    // V's -0.0 x is reached as 1 * -0 + 0 * 1 on quad A (V is q0) and as 0 * -1 + 1 * -0 on quad B (V is q1):
+    // +0 and -0 without canonicalisation.
+    const SurfaceCorner v{{-0.0f, 1.0f, 0.0f}, {-0.0f, 0.0f, 1.0f}, {-0.0f, 0.5f}, 5};
+    const SurfaceCorner p{{1.0f, 1.0f, 0.0f}, {1.0f, 0.0f, 1.0f}, {1.0f, 0.5f}, 6};
+    const SurfaceCorner s{{-1.0f, 1.0f, 0.0f}, {-1.0f, 0.0f, 1.0f}, {-1.0f, 0.5f}, 4};
+    const SurfaceCorner top{{0.0f, 2.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 1.0f}, 9};
+    const SurfaceCorner quad_a[4] = {v, p, top, top};
+    const SurfaceCorner quad_b[4] = {s, v, top, top};
+    const SurfacePoint a = evaluate_quad_surface(quad_a, 0, 0);
+    const SurfacePoint b = evaluate_quad_surface(quad_b, cp::fixed_one, 0);
+    const auto bits = [](const SurfacePoint& x) {
+        return std::array<std::uint32_t, 8>{
+            std::bit_cast<std::uint32_t>(x.position.x), std::bit_cast<std::uint32_t>(x.position.y),
+            std::bit_cast<std::uint32_t>(x.position.z), std::bit_cast<std::uint32_t>(x.normal.x),
+            std::bit_cast<std::uint32_t>(x.normal.y),   std::bit_cast<std::uint32_t>(x.normal.z),
+            std::bit_cast<std::uint32_t>(x.uv[0]),      std::bit_cast<std::uint32_t>(x.uv[1])};
+    };
+    CHECK(bits(a) == bits(b));
+    CHECK(std::bit_cast<std::uint32_t>(a.position.x) == 0u); // +0.0, not -0.0
+    CHECK(std::bit_cast<std::uint32_t>(b.normal.x) == 0u);
+    CHECK(std::bit_cast<std::uint32_t>(b.uv[0]) == 0u);
 }

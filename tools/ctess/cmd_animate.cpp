@@ -80,17 +80,25 @@ int run_animate(int argc, char** argv) {
     const unsigned frames = parse_unsigned(args.get("frames"), "--frames", 2, 1000);
     const std::string dir = args.get("out");
 
+    auto frame_svg = [&](const std::string& caption) {
+        return mesh_to_svg(tessellate(r), r, SvgOptions{args.has("provoking"), caption});
+    };
     auto frame_at = [&](unsigned i, std::string& caption) {
         const double s = double(i) / (frames - 1);
         for (std::size_t k = 0; k < from.size(); ++k)
             r.factors[k] = static_cast<float>(from[k] + (double(to[k]) - from[k]) * s);
         caption = fmt::format("frame {} of {}: factors ({})", i + 1, frames, factors_text(r.factors));
-        return mesh_to_svg(tessellate(r), r, SvgOptions{args.has("provoking"), caption});
+        return frame_svg(caption);
     };
-    // Counts grow with every factor, so the larger of the two end frames bounds every frame's size.
+    // Counts grow with every factor, and each factor moves linearly, so the frame of every factor's larger
+    // end bounds every frame's size; a middle frame can mix the ends (1,1,256 to 256,256,1) and exceed both.
     std::string caption;
-    const std::uint64_t largest_frame =
-        std::max(frame_at(0, caption).size(), frame_at(frames - 1, caption).size());
+    for (std::size_t k = 0; k < from.size(); ++k) r.factors[k] = std::max(from[k], to[k]);
+    const std::uint64_t bounding_frame =
+        frame_svg(fmt::format("frame {} of {}: factors ({})", frames, frames, factors_text(r.factors)))
+            .size();
+    const std::uint64_t largest_frame = std::max({bounding_frame, std::uint64_t{frame_at(0, caption).size()},
+                                                  std::uint64_t{frame_at(frames - 1, caption).size()}});
     if (largest_frame * frames > max_animation_bytes)
         throw UsageError(fmt::format(
             "{} frames of up to {:.1f} MB would write about {:.1f} MB; the limit is {} MiB: "

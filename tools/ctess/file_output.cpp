@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -56,20 +57,37 @@ void write_text(const std::string& path, const std::string& text) {
         if (const int error = write_and_close(fd, text)) fail("write", path, error);
         return;
     }
-    // The temporary is created with the final file's default mode (0666 less the umask) and a unique name
-    // in the same directory, so the rename stays within one file system.
+    // A symbolic link is written through: the rename replaces the file it points to, not the link.
+    std::string target = path;
+    struct stat entry {};
+    if (::lstat(path.c_str(), &entry) == 0 && S_ISLNK(entry.st_mode)) {
+        char* resolved = ::realpath(path.c_str(), nullptr);
+        if (resolved == nullptr) fail("resolve the symbolic link", path, errno);
+        target = resolved;
+        std::free(resolved);
+    }
+    // The temporary has a unique name in the target's directory, so the rename stays within one file system.
+    // It takes the replaced file's permission bits, or the default mode (0666 less the umask) for a new file.
+    struct stat existing {};
+    const bool replacing = ::stat(target.c_str(), &existing) == 0;
     std::string temp;
     int fd = -1;
     for (unsigned attempt = 0; fd < 0; ++attempt) {
-        temp = fmt::format("{}.tmp-{}-{}", path, ::getpid(), attempt);
+        temp = fmt::format("{}.tmp-{}-{}", target, ::getpid(), attempt);
         fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd < 0 && (errno != EEXIST || attempt == 100)) fail("write", path, errno);
+    }
+    if (replacing && ::fchmod(fd, existing.st_mode & 07777) != 0) {
+        const int error = errno;
+        ::close(fd);
+        ::unlink(temp.c_str());
+        fail("write", path, error);
     }
     if (const int error = write_and_close(fd, text)) {
         ::unlink(temp.c_str());
         fail("write", path, error);
     }
-    if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    if (std::rename(temp.c_str(), target.c_str()) != 0) {
         const int error = errno;
         ::unlink(temp.c_str());
         fail("write", path, error);

@@ -22,6 +22,12 @@ std::string options_text(const SurfaceRequest& r) {
                        o.min_level, o.max_level);
 }
 
+// JSON has no inf or NaN: a non-finite value (--distance inf, --angle inf) is written as null.
+std::string json_number(float v, bool six_digits = false) {
+    if (!std::isfinite(v)) return "null";
+    return six_digits ? fmt::format("{:.6g}", v) : fmt::format("{}", v);
+}
+
 std::string vec3_list(const std::vector<rt::SurfaceVertex>& v, bool normals) {
     std::string out;
     for (std::size_t i = 0; i < v.size(); ++i) {
@@ -38,7 +44,8 @@ std::string surface_to_json(const SurfaceMesh& mesh, const SurfaceRequest& r) {
     std::string out = "{\n";
     out += fmt::format("  \"name\": \"{}\",\n  \"angle\": {},\n  \"distance\": {},\n  \"min_level\": {},\n"
                        "  \"max_level\": {},\n",
-                       json_escape(r.name), o.max_angle_deg, o.max_distance, o.min_level, o.max_level);
+                       json_escape(r.name), json_number(o.max_angle_deg), json_number(o.max_distance),
+                       o.min_level, o.max_level);
     out += fmt::format("  \"fixed_one\": {},\n", adaptive::fixed_one);
     out += fmt::format("  \"vertex_count\": {},\n  \"triangle_count\": {},\n", mesh.params.size(),
                        mesh.triangles.size() / 3);
@@ -193,13 +200,13 @@ std::string surface_stats_json(const SurfaceMesh& mesh, const SurfaceRequest& r,
     const std::size_t triangles = mesh.triangles.size() / 3;
     return fmt::format(
         "{{\"name\": \"{}\", \"angle\": {}, \"distance\": {}, \"min_level\": {}, \"max_level\": {}, "
-        "\"vertices\": {}, \"triangles\": {}, \"max_chord_error\": {:.6g}, "
-        "\"uniform_grid\": {{\"segments\": {}, \"triangles\": {}, \"max_chord_error\": {:.6g}, "
+        "\"vertices\": {}, \"triangles\": {}, \"max_chord_error\": {}, "
+        "\"uniform_grid\": {{\"segments\": {}, \"triangles\": {}, \"max_chord_error\": {}, "
         "\"reached\": {}}}, \"triangle_ratio\": {:.4f}}}\n",
-        json_escape(r.name), r.options.max_angle_deg, r.options.max_distance, r.options.min_level,
-        r.options.max_level, mesh.params.size(), triangles, mesh.chord_error, u.segments, u.triangles,
-        u.chord_error, u.reached ? "true" : "false",
-        u.triangles ? static_cast<double>(triangles) / u.triangles : 0.0);
+        json_escape(r.name), json_number(r.options.max_angle_deg), json_number(r.options.max_distance),
+        r.options.min_level, r.options.max_level, mesh.params.size(), triangles,
+        json_number(mesh.chord_error, true), u.segments, u.triangles, json_number(u.chord_error, true),
+        u.reached ? "true" : "false", u.triangles ? static_cast<double>(triangles) / u.triangles : 0.0);
 }
 
 std::string strip_to_json(std::uint32_t u_segments, std::uint32_t v_segments,

@@ -119,6 +119,20 @@ SurfacePoint evaluate_surface(const SurfaceCorner (&c)[3], const std::uint32_t (
                                   detail::fixed_weight(w[2]), opt);
 }
 
+namespace {
+
+// x + 0.0f turns -0.0 into +0.0 and keeps every other value: a shared corner is reached from different edges
+// on two quads (1 * -0 + 0 * y on one, 0 * z + 1 * -0 on the other), whose zeros can differ in sign.
+SurfacePoint without_negative_zero(SurfacePoint p) {
+    p.position = {p.position.x + 0.0f, p.position.y + 0.0f, p.position.z + 0.0f};
+    p.normal = {p.normal.x + 0.0f, p.normal.y + 0.0f, p.normal.z + 0.0f};
+    p.uv[0] += 0.0f;
+    p.uv[1] += 0.0f;
+    return p;
+}
+
+} // namespace
+
 SurfacePoint evaluate_quad_surface(const SurfaceCorner (&q)[4], std::uint32_t s, std::uint32_t t) noexcept {
     const std::uint32_t one = cp::fixed_one;
     s = s < one ? s : one;
@@ -134,8 +148,8 @@ SurfacePoint evaluate_quad_surface(const SurfaceCorner (&q)[4], std::uint32_t s,
         const SurfaceCorner& a = from_first ? from : to;
         const SurfaceCorner& b = from_first ? to : from;
         const std::uint32_t tb = from_first ? r[k] : one - r[k]; // measured from a
-        return detail::edge_point(a, b, detail::fixed_weight(one - tb), detail::fixed_weight(tb),
-                                  SurfaceOptions{});
+        return without_negative_zero(detail::edge_point(a, b, detail::fixed_weight(one - tb),
+                                                        detail::fixed_weight(tb), SurfaceOptions{}));
     }
     const float fs = detail::fixed_weight(s), ft = detail::fixed_weight(t);
     const float gs = detail::fixed_weight(one - s), gt = detail::fixed_weight(one - t);
@@ -148,7 +162,7 @@ SurfacePoint evaluate_quad_surface(const SurfaceCorner (&q)[4], std::uint32_t s,
         uv[0] += w[k] * q[k].uv[0];
         uv[1] += w[k] * q[k].uv[1];
     }
-    return {p, normalize_or_zero(n), {uv[0], uv[1]}};
+    return without_negative_zero({p, normalize_or_zero(n), {uv[0], uv[1]}});
 }
 
 } // namespace ctess::rt
