@@ -401,65 +401,65 @@ TEST_CASE("serve: many byte ranges cannot multiply a response", "[cli][serve]") 
     const Reply file_many = http(server.port, get("/viewer.js", host, ranges), 1 << 20);
     CHECK(file_many.status == 416);
     CHECK(file_many.body.size() < 200);
+}
 
-    TEST_CASE("surface writes a non-finite --angle or --distance as JSON null", "[cli][limits]") {
-        for (const char* option : {"--angle inf", "--distance inf"}) {
-            for (const char* format : {"json", "stats"}) {
-                INFO(option << " --format " << format);
-                const Run r = ctess_cli(std::string("surface --name sphere --max-level 6 ") + option +
-                                        " --format " + format);
-                CHECK(r.exit_code == 0);
-                CHECK_FALSE(contains(r.out, "inf"));
-                CHECK_FALSE(contains(r.out, "nan"));
-                CHECK(contains(r.out, option[2] == 'a' ? "\"angle\": null" : "\"distance\": null"));
-            }
+TEST_CASE("surface writes a non-finite --angle or --distance as JSON null", "[cli][limits]") {
+    for (const char* option : {"--angle inf", "--distance inf"}) {
+        for (const char* format : {"json", "stats"}) {
+            INFO(option << " --format " << format);
+            const Run r = ctess_cli(std::string("surface --name sphere --max-level 6 ") + option +
+                                    " --format " + format);
+            CHECK(r.exit_code == 0);
+            CHECK_FALSE(contains(r.out, "inf"));
+            CHECK_FALSE(contains(r.out, "nan"));
+            CHECK(contains(r.out, option[2] == 'a' ? "\"angle\": null" : "\"distance\": null"));
         }
-        CHECK(contains(ctess_cli("surface --name sphere --max-level 6").out, "\"distance\": 0.05,"));
     }
+    CHECK(contains(ctess_cli("surface --name sphere --max-level 6").out, "\"distance\": 0.05,"));
+}
 
-    TEST_CASE("--out writes through a symbolic link and keeps the replaced file's permissions",
-              "[cli][limits]") {
-        namespace fs = std::filesystem;
-        const fs::path dir = fs::path(CTESS_TEST_BINARY_DIR) / ("cli_out_" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-        const fs::path target = dir / "target.json";
-        const fs::path link = dir / "link.json";
-        { std::ofstream(target) << "previous\n"; }
-        fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
-        fs::create_symlink("target.json", link);
-        REQUIRE(ctess_cli("pattern --factors 4,4,4 --out " + link.string()).exit_code == 0);
-        CHECK(fs::is_symlink(link));
-        CHECK(fs::read_symlink(link) == "target.json");
-        CHECK(contains(read_file(target.string()), "\"triangle_count\""));
-        CHECK((fs::status(target).permissions() & fs::perms::all) ==
-              (fs::perms::owner_read | fs::perms::owner_write));
-        // A plain file keeps its bits too; a new file gets the default mode.
-        fs::permissions(target, fs::perms::owner_all | fs::perms::group_read, fs::perm_options::replace);
-        REQUIRE(ctess_cli("pattern --factors 3,3,3 --out " + target.string()).exit_code == 0);
-        CHECK((fs::status(target).permissions() & fs::perms::all) ==
-              (fs::perms::owner_all | fs::perms::group_read));
-        // A dangling link is refused and left alone.
-        const fs::path dangling = dir / "dangling.json";
-        fs::create_symlink("missing/x.json", dangling);
-        const Run r = ctess_cli("pattern --factors 4,4,4 --out " + dangling.string());
-        CHECK(r.exit_code == 1);
-        CHECK(contains(r.out, "cannot resolve the symbolic link '" + dangling.string() + "'"));
-        CHECK(fs::is_symlink(dangling));
-        CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 3);
-        fs::remove_all(dir);
-    }
+TEST_CASE("--out writes through a symbolic link and keeps the replaced file's permissions", "[cli][limits]") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(CTESS_TEST_BINARY_DIR) / ("cli_out_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path target = dir / "target.json";
+    const fs::path link = dir / "link.json";
+    { std::ofstream(target) << "previous\n"; }
+    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
+    fs::create_symlink("target.json", link);
+    REQUIRE(ctess_cli("pattern --factors 4,4,4 --out " + link.string()).exit_code == 0);
+    CHECK(fs::is_symlink(link));
+    CHECK(fs::read_symlink(link) == "target.json");
+    CHECK(contains(read_file(target.string()), "\"triangle_count\""));
+    CHECK((fs::status(target).permissions() & fs::perms::all) ==
+          (fs::perms::owner_read | fs::perms::owner_write));
+    // A plain file keeps its bits too; a new file gets the default mode.
+    fs::permissions(target, fs::perms::owner_all | fs::perms::group_read, fs::perm_options::replace);
+    REQUIRE(ctess_cli("pattern --factors 3,3,3 --out " + target.string()).exit_code == 0);
+    CHECK((fs::status(target).permissions() & fs::perms::all) ==
+          (fs::perms::owner_all | fs::perms::group_read));
+    // A dangling link is refused and left alone.
+    const fs::path dangling = dir / "dangling.json";
+    fs::create_symlink("missing/x.json", dangling);
+    const Run r = ctess_cli("pattern --factors 4,4,4 --out " + dangling.string());
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.out, "cannot resolve the symbolic link '" + dangling.string() + "'"));
+    CHECK(fs::is_symlink(dangling));
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 3);
+    fs::remove_all(dir);
+}
 
-    TEST_CASE("animate bounds every frame, not only the two ends", "[cli][limits]") {
-        const std::string dir = temp_path("anim_middle");
-        const Run big =
-            ctess_cli("animate --mode cp --max 256 --from 1,1,256 --to 256,256,1 --frames 1000 --out " + dir);
-        CHECK(big.exit_code == 2);
-        CHECK(contains(big.out, "the limit is 512 MiB"));
-        CHECK_FALSE(std::filesystem::exists(dir));
-        const Run small = ctess_cli("animate --mode cp --from 1,1,4 --to 4,4,1 --frames 3 --out " + dir);
-        CHECK(small.exit_code == 0);
-        CHECK(std::filesystem::exists(dir + "/frame_002.svg"));
-        CHECK(std::filesystem::exists(dir + "/index.html"));
-        std::filesystem::remove_all(dir);
-    }
+TEST_CASE("animate bounds every frame, not only the two ends", "[cli][limits]") {
+    const std::string dir = temp_path("anim_middle");
+    const Run big =
+        ctess_cli("animate --mode cp --max 256 --from 1,1,256 --to 256,256,1 --frames 1000 --out " + dir);
+    CHECK(big.exit_code == 2);
+    CHECK(contains(big.out, "the limit is 512 MiB"));
+    CHECK_FALSE(std::filesystem::exists(dir));
+    const Run small = ctess_cli("animate --mode cp --from 1,1,4 --to 4,4,1 --frames 3 --out " + dir);
+    CHECK(small.exit_code == 0);
+    CHECK(std::filesystem::exists(dir + "/frame_002.svg"));
+    CHECK(std::filesystem::exists(dir + "/index.html"));
+    std::filesystem::remove_all(dir);
+}
