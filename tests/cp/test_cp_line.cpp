@@ -47,7 +47,7 @@ static_assert(cp::line_state(2.0f, 64) == cp::LineState{1, 65536});
 static_assert(first_interior_point_at(1.5f) == cp::fixed_one / 4);
 static_assert(cp::point_position({256, 128}, 65536) == cp::fixed_one / 2);
 
-TEST_CASE("token count and factor ranges follow spec 1.2", "[cp_line]") {
+TEST_CASE("token count and factor ranges follow docs/algorithm.md §1.1", "[cp_line]") {
     for (unsigned max : {64u, 256u}) {
         const unsigned n = cp::token_count(max);
         CHECK(n == (max == 64 ? 17u : 25u));
@@ -82,7 +82,7 @@ TEST_CASE("token boundaries map to the right token and lerp", "[cp_line]") {
     }
 }
 
-TEST_CASE("positions match the examples of spec 1.2", "[cp_line]") {
+TEST_CASE("positions match the examples of docs/algorithm.md §1.2", "[cp_line]") {
     using V = std::vector<std::uint32_t>;
     CHECK(points(1.5f, 256) == V{0, at(.25), at(.75), at(1)});
     CHECK(points(2.0f, 256) == V{0, at(.5), at(.5), at(1)});
@@ -169,7 +169,7 @@ TEST_CASE("points never jump: continuity within and across tokens", "[cp_line]")
     }
 }
 
-TEST_CASE("the end segment is the largest and never grows with f (spec 5.8)", "[cp_line]") {
+TEST_CASE("the end segment is the largest and never grows with f (docs/algorithm.md §1.2)", "[cp_line]") {
     std::uint32_t last_end = cp::fixed_one;
     for (std::uint32_t f16 = 2u << 16; f16 <= (256u << 16); f16 += 1024) { // steps of 1/64
         const auto p = points(cp::line_state_fixed(f16, 256));

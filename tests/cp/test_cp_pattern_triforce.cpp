@@ -74,7 +74,7 @@ TEST_CASE("cp triforce: equal powers of two are exactly the uniform triforce gri
         }
 }
 
-TEST_CASE("cp triforce: the equal-factor table of cp_resolution §7.3", "[cp_pattern][triforce]") {
+TEST_CASE("cp triforce: equal-factor counts (docs/algorithm.md §2.14)", "[cp_pattern][triforce]") {
     struct Row {
         float f;
         std::uint32_t vertices_b, triangles_b, degenerate_b, vertices_a, triangles_a, degenerate_a;

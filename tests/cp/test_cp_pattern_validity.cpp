@@ -51,8 +51,7 @@ static_assert(fills_triforce_4());
 constexpr bool fills_from_states() {
     std::array<DomainPoint, 3> v{};
     std::array<std::uint32_t, 3> i{};
-    const Counts c =
-        cp::tessellate(v, i, state(0, 0), state(0, 0), state(0, 0), flat_options(64));
+    const Counts c = cp::tessellate(v, i, state(0, 0), state(0, 0), state(0, 0), flat_options(64));
     return c == Counts{3, 1} && v[i[0]] == DomainPoint{0, 0} && v[i[1]] == DomainPoint{cp::fixed_one, 0} &&
            v[i[2]] == DomainPoint{0, cp::fixed_one};
 }
@@ -236,8 +235,7 @@ TEST_CASE("cp pattern: max_pattern_counts bounds every pattern under every optio
                 for (unsigned b = first; b < tokens; ++b)
                     for (unsigned c = first; c < tokens; ++c)
                         for (std::uint32_t t : {cp::lerp_one}) {
-                            const Counts n =
-                                cp::tessellate({}, {}, state(a, t), state(b, t), state(c, t), o);
+                            const Counts n = cp::tessellate({}, {}, state(a, t), state(b, t), state(c, t), o);
                             worst.vertices = std::max(worst.vertices, n.vertices);
                             worst.triangles = std::max(worst.triangles, n.triangles);
                             if (n.vertices > cap.vertices || n.triangles > cap.triangles)
@@ -253,7 +251,7 @@ TEST_CASE("cp pattern: max_pattern_counts bounds every pattern under every optio
     }
 }
 
-TEST_CASE("cp pattern: type selection from tokens alone (cp_resolution §2)", "[cp_pattern]") {
+TEST_CASE("cp pattern: type selection from tokens alone (docs/algorithm.md §2.2)", "[cp_pattern]") {
     for (unsigned a = 0; a < 25; ++a)
         for (unsigned b = 0; b < 25; ++b)
             for (unsigned c = 0; c < 25; ++c) {
@@ -383,7 +381,7 @@ TEST_CASE("cp pattern: non-default options tile exactly and keep the surface", "
     }
 }
 
-TEST_CASE("cp pattern: unequal-factor counts of cp_resolution §7.4", "[cp_pattern]") {
+TEST_CASE("cp pattern: unequal-factor counts (docs/algorithm.md §2.14)", "[cp_pattern]") {
     struct Row {
         float f0, f1, f2;
         cp::PatternType type;
@@ -424,7 +422,7 @@ TEST_CASE("cp pattern: unequal-factor counts of cp_resolution §7.4", "[cp_patte
         }
 }
 
-TEST_CASE("cp pattern: T0 collapse examples of cp_resolution §5", "[cp_pattern]") {
+TEST_CASE("cp pattern: T0 collapse examples (docs/algorithm.md §2.9)", "[cp_pattern]") {
     cp::PatternOptions o = flat_options(64);
     o.collapse_t0 = false;
     CHECK(cp::pattern_counts(64, 1, 1, o).triangles == 130);

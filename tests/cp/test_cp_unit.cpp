@@ -95,7 +95,7 @@ Tracks tracks_of(unsigned token) {
 
 // --- counts: the independent prototype's tables, equal and unequal factors (docs/algorithm.md §2.14) -------
 
-TEST_CASE("equal factors: counts of cp_resolution 7.3, both rules, max 64 and 256", "[cp][counts]") {
+TEST_CASE("equal factors: counts of both rules, max 64 and 256 (docs/algorithm.md §2.14)", "[cp][counts]") {
     struct Row {
         float f;
         Counts b;
@@ -139,7 +139,8 @@ TEST_CASE("equal factors: counts of cp_resolution 7.3, both rules, max 64 and 25
     }
 }
 
-TEST_CASE("equal tokens: rule (b) emits N^2 - d_T, rule (a) N^2 (cp_resolution 7.3)", "[cp][counts]") {
+TEST_CASE("equal tokens: rule (b) emits N^2 - d_T, rule (a) N^2 (docs/algorithm.md §2.4, §2.14)",
+          "[cp][counts]") {
     // d_T for T2..T24 from the table of §7.3 (0 for the octave-final tokens).
     const unsigned d[25] = {0,  0,  0,  6, 0,  6,  10,  18, 0,  10,  18,  34, 0,
                             18, 34, 66, 0, 34, 66, 130, 0,  66, 130, 258, 0};
@@ -156,7 +157,7 @@ TEST_CASE("equal tokens: rule (b) emits N^2 - d_T, rule (a) N^2 (cp_resolution 7
     }
 }
 
-TEST_CASE("unequal factors: counts of cp_resolution 7.4", "[cp][counts]") {
+TEST_CASE("unequal factors: counts (docs/algorithm.md §2.14)", "[cp][counts]") {
     struct Row {
         float f0, f1, f2;
         PatternType type;
@@ -195,7 +196,8 @@ TEST_CASE("unequal factors: counts of cp_resolution 7.4", "[cp][counts]") {
     CHECK(pattern_counts(1, 1, 64, options(64, ColumnRule::minimal, false)).triangles == 194);
 }
 
-TEST_CASE("Type 2 counts follow the closed form of cp_resolution 4.7 without the collapse", "[cp][counts]") {
+TEST_CASE("Type 2 counts follow the closed form of docs/algorithm.md §2.14 without the collapse",
+          "[cp][counts]") {
     std::mt19937 rng(42);
     for (unsigned max_factor : {64u, 256u}) {
         const unsigned tokens = token_count(max_factor);

@@ -45,8 +45,8 @@ constexpr bool tri_minimum_ok = [] {
     std::array<Point, 3> p{};
     std::array<std::uint32_t, 3> i{};
     const Counts c = tessellate_tri(p, i, {1, 1, 1, 1}, {Partitioning::integer, Winding::ccw});
-    return c == Counts{3, 1} && p[0] == Point{0, 65536} && p[1] == Point{0, 0} &&
-           p[2] == Point{65536, 0} && i == std::array<std::uint32_t, 3>{0, 2, 1};
+    return c == Counts{3, 1} && p[0] == Point{0, 65536} && p[1] == Point{0, 0} && p[2] == Point{65536, 0} &&
+           i == std::array<std::uint32_t, 3>{0, 2, 1};
 }();
 static_assert(tri_minimum_ok);
 constexpr bool quad_2x2_ok = [] {
@@ -54,8 +54,8 @@ constexpr bool quad_2x2_ok = [] {
     std::array<std::uint32_t, 24> i{};
     const Counts c = tessellate_quad(p, i, {2, 2, 2, 2, 2, 2}, {Partitioning::integer, Winding::cw});
     // Outer ring clockwise from (0, 1), then the centre.
-    return c == Counts{9, 8} && p[0] == Point{0, 65536} && p[1] == Point{0, 32768} &&
-           p[2] == Point{0, 0} && p[4] == Point{65536, 0} && p[8] == Point{32768, 32768};
+    return c == Counts{9, 8} && p[0] == Point{0, 65536} && p[1] == Point{0, 32768} && p[2] == Point{0, 0} &&
+           p[4] == Point{65536, 0} && p[8] == Point{32768, 32768};
 }();
 static_assert(quad_2x2_ok);
 constexpr bool isoline_ok = [] {
@@ -268,7 +268,7 @@ TEST_CASE("d3d11 domains: the two done-when numbers", "[d3d11][domains]") {
     REQUIRE(odd.indices.size() == 37 * 3);
 }
 
-TEST_CASE("d3d11 domains: spec 4.6 uniform triangle table", "[d3d11][domains]") {
+TEST_CASE("d3d11 domains: uniform triangle counts (docs/algorithm.md §5.5)", "[d3d11][domains]") {
     struct Row {
         Partitioning mode;
         std::array<Counts, 10> expect; // {points, triangles}
@@ -340,7 +340,7 @@ TEST_CASE("d3d11 domains: spec 4.6 uniform triangle table", "[d3d11][domains]") 
     }
 }
 
-TEST_CASE("d3d11 domains: spec 4.6 non-uniform triangle table", "[d3d11][domains]") {
+TEST_CASE("d3d11 domains: non-uniform triangle counts (docs/algorithm.md §5.5)", "[d3d11][domains]") {
     const std::array<float, 4> a = {2.5f, 3.7f, 5.1f, 4.2f};
     const std::array<float, 4> b = {7.3f, 1.0f, 20.0f, 9.9f};
     const auto counts = [](Partitioning m, const std::array<float, 4>& f) {
@@ -356,7 +356,8 @@ TEST_CASE("d3d11 domains: spec 4.6 non-uniform triangle table", "[d3d11][domains
     REQUIRE(counts(Partitioning::pow2, b) == Counts{90, 149});
 }
 
-TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (spec 4.6)", "[d3d11][domains]") {
+TEST_CASE("d3d11 domains: closed-form counts over a factor sweep (docs/algorithm.md §5.5)",
+          "[d3d11][domains]") {
     FactorSource src;
     for (const Partitioning m : all_modes) {
         for (int n = 0; n < 3000; ++n) {

@@ -87,7 +87,7 @@ std::vector<float> dense_sweep() {
 
 } // namespace
 
-TEST_CASE("d3d11 line: spec 4.3 verified 1-D vectors", "[d3d11][line]") {
+TEST_CASE("d3d11 line: verified 1-D vectors (docs/algorithm.md §5.2)", "[d3d11][line]") {
     using V = std::vector<std::uint32_t>;
     const auto even = Partitioning::fractional_even;
     const auto odd = Partitioning::fractional_odd;
@@ -105,7 +105,7 @@ TEST_CASE("d3d11 line: spec 4.3 verified 1-D vectors", "[d3d11][line]") {
     REQUIRE(points_of(odd, 4.0f) == V{0, 17476, 24030, 41506, 48060, 65536});
 }
 
-TEST_CASE("d3d11 line: coincident points just above an integer (spec 4.3)", "[d3d11][line]") {
+TEST_CASE("d3d11 line: coincident points just above an integer (docs/algorithm.md §5.2)", "[d3d11][line]") {
     // Even 4 + 2^-16 already has 6 segments and 0.25 twice; odd 3 + 2^-16 has 5 and 1/3 twice.
     const auto e = points_of(Partitioning::fractional_even, 4.0f + 1.0f / 65536.0f);
     REQUIRE(e.size() == 7);
@@ -135,7 +135,8 @@ TEST_CASE("d3d11 line: reference constant tables", "[d3d11][line]") {
     for (std::uint32_t i = 0; i < 33; ++i) REQUIRE(ruler_final_position(i) == ruler[i]);
 }
 
-TEST_CASE("d3d11 line: point count is the rounded segment count + 1 (spec 4.6)", "[d3d11][line]") {
+TEST_CASE("d3d11 line: point count is the rounded segment count + 1 (docs/algorithm.md §5.5)",
+          "[d3d11][line]") {
     for (const Partitioning mode : all_modes) {
         for (const float f : dense_sweep()) {
             INFO("mode " << static_cast<int>(mode) << " f " << f);
@@ -226,7 +227,7 @@ TEST_CASE("d3d11 line: fractional modes are continuous, integer mode jumps", "[d
     REQUIRE(integer_worst > bound(coarse));
 }
 
-TEST_CASE("d3d11 line: bad factors cull or clamp (spec 4.2)", "[d3d11][line]") {
+TEST_CASE("d3d11 line: bad factors cull or clamp (docs/algorithm.md §5.1)", "[d3d11][line]") {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
     const float denorm = std::numeric_limits<float>::denorm_min();
