@@ -583,7 +583,7 @@ TEST_CASE("cli: huge uniform factors clamp to N^2 and split, with bounded output
     CHECK(svg.out.size() < 20'000'000); // 16.6 MB at N = 16, the largest uniform output
 }
 
-TEST_CASE("cli: uniform 11,9,6 JSON vertices are the CP line boundary points (docs/algorithm.md §1.2) and "
+TEST_CASE("cli: uniform 11,9,6 JSON vertices are the quantised boundary points (docs/algorithm.md §3.2) and "
           "the pattern data",
           "[cli][uniform]") {
     const Run r = ctess_cli("pattern --mode uniform --factors 11,9,6 --format json");
