@@ -27,17 +27,16 @@ void check_domain(fuzz::Input& in, Partitioning partitioning, MostCounts most, u
     std::array<float, N> factors{};
     for (float& f : factors) f = in.float_bits();
     const TessOptions cw{partitioning, Winding::cw}, ccw{partitioning, Winding::ccw};
-    const auto counts =
-        tessellate(std::span<DomainPoint>{}, std::span<std::uint32_t>{}, factors, cw); // count only
+    const auto counts = tessellate(std::span<Point>{}, std::span<std::uint32_t>{}, factors, cw); // count only
     const std::uint32_t index_count = counts.index_count();
     CTESS_FUZZ_CHECK(counts.vertices <= most.vertices && index_count <= most.index_count());
     CTESS_FUZZ_CHECK(index_count % per_primitive == 0);
-    std::vector<DomainPoint> points(most.vertices), points_ccw(most.vertices);
+    std::vector<Point> points(most.vertices), points_ccw(most.vertices);
     std::vector<std::uint32_t> indices(most.index_count()), indices_ccw(most.index_count());
     CTESS_FUZZ_CHECK(tessellate(points, indices, factors, cw) == counts);
     CTESS_FUZZ_CHECK(tessellate(points_ccw, indices_ccw, factors, ccw) == counts);
     for (std::uint32_t i = 0; i < counts.vertices; ++i) {
-        const DomainPoint p = points[i];
+        const Point p = points[i];
         CTESS_FUZZ_CHECK(p.u <= one && p.v <= one);
         if (triangle_domain) CTESS_FUZZ_CHECK(p.u + p.v <= one);
         CTESS_FUZZ_CHECK(points_ccw[i] == p);

@@ -24,9 +24,10 @@ using namespace ctess;
 namespace {
 
 // Indices in range, points in the triangle of side `one`, orientation and exact coverage.
-void check_mesh(const std::vector<DomainPoint>& v, const std::vector<std::uint32_t>& idx, std::uint64_t one,
+template <class Point>
+void check_mesh(const std::vector<Point>& v, const std::vector<std::uint32_t>& idx, std::uint64_t one,
                 Winding winding) {
-    for (const DomainPoint& p : v) CTESS_FUZZ_CHECK(std::uint64_t{p.u} + p.v <= one);
+    for (const Point& p : v) CTESS_FUZZ_CHECK(std::uint64_t{p.u} + p.v <= one);
     __int128 total = 0;
     for (std::size_t k = 0; k < idx.size(); k += 3) {
         for (unsigned j = 0; j < 3; ++j) CTESS_FUZZ_CHECK(idx[k + j] < v.size());
@@ -39,33 +40,33 @@ void check_mesh(const std::vector<DomainPoint>& v, const std::vector<std::uint32
 }
 
 // The shared layout of a split patch against the provoking layout of the same factors, welded here.
-void check_split_weld(const rt::UniformSplit& split, const std::vector<DomainPoint>& v,
+void check_split_weld(const rt::UniformSplit& split, const std::vector<uniform::SplitPoint>& v,
                       const std::vector<std::uint32_t>& idx, const rt::UniformTableSet& tables,
                       const float* f, Winding winding) {
     using Position = std::pair<std::uint32_t, std::uint32_t>;
     const std::uint64_t one = rt::uniform_split_fixed_one;
     std::set<Position> positions;
     std::uint64_t boundary = 0;
-    for (const DomainPoint& p : v) {
+    for (const uniform::SplitPoint& p : v) {
         CTESS_FUZZ_CHECK(positions.insert({p.u, p.v}).second);
         boundary += p.u == 0 || p.v == 0 || std::uint64_t{p.u} + p.v == one;
     }
     CTESS_FUZZ_CHECK(split.counts().vertices == 1 + (split.counts().triangles + boundary) / 2);
     const rt::UniformSplit provoking(tables, f[0], f[1], f[2], PatchOptions{Layout::provoking, winding});
-    std::vector<DomainPoint> pv(provoking.counts().vertices);
+    std::vector<uniform::SplitPoint> pv(provoking.counts().vertices);
     std::vector<std::uint32_t> pi(provoking.counts().index_count());
     CTESS_FUZZ_CHECK(provoking.emit(pv, pi) && pi.size() == idx.size());
     std::set<Position> welded;
     for (std::size_t k = 0; k < pi.size(); ++k) {
-        const DomainPoint a = pv[pi[k]], b = v[idx[k]];
+        const uniform::SplitPoint a = pv[pi[k]], b = v[idx[k]];
         CTESS_FUZZ_CHECK(a == b);
         welded.insert({a.u, a.v});
     }
     CTESS_FUZZ_CHECK(welded == positions);
-    std::vector<DomainPoint> short_v(v.size() - 1, DomainPoint{7, 7});
+    std::vector<uniform::SplitPoint> short_v(v.size() - 1, uniform::SplitPoint{7, 7});
     std::vector<std::uint32_t> short_i(idx.size(), 7u);
     CTESS_FUZZ_CHECK(!split.emit(short_v, short_i));
-    for (const DomainPoint& p : short_v) CTESS_FUZZ_CHECK(p == (DomainPoint{7, 7}));
+    for (const uniform::SplitPoint& p : short_v) CTESS_FUZZ_CHECK(p == (uniform::SplitPoint{7, 7}));
     for (const std::uint32_t i : short_i) CTESS_FUZZ_CHECK(i == 7u);
 }
 
@@ -83,7 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const rt::UniformSplit split(tables, f[0], f[1], f[2], options);
         CTESS_FUZZ_CHECK(split.depth() <= 2);
         const Counts n = split.counts();
-        std::vector<DomainPoint> v(n.vertices);
+        std::vector<uniform::SplitPoint> v(n.vertices);
         std::vector<std::uint32_t> idx(n.index_count());
         CTESS_FUZZ_CHECK(split.emit(v, idx));
         check_mesh(v, idx, rt::uniform_split_fixed_one, options.winding);
@@ -93,10 +94,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     const rt::UniformPatch patch(tables, f[0], f[1], f[2], options);
     const Counts n = patch.counts();
-    std::vector<DomainPoint> v(n.vertices + 1, DomainPoint{7, 7});
+    std::vector<uniform::Point> v(n.vertices + 1, uniform::Point{7, 7});
     std::vector<std::uint32_t> idx(n.index_count() + 1, 7u);
     CTESS_FUZZ_CHECK(patch.emit(std::span(v.data(), n.vertices), std::span(idx.data(), n.index_count())));
-    CTESS_FUZZ_CHECK(v.back() == (DomainPoint{7, 7}) && idx.back() == 7u);
+    CTESS_FUZZ_CHECK(v.back() == (uniform::Point{7, 7}) && idx.back() == 7u);
     v.pop_back();
     idx.pop_back();
     for (std::uint32_t i = 0; i < n.vertices; ++i) CTESS_FUZZ_CHECK(patch.vertex(i) == v[i]);
@@ -108,7 +109,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     // Edge k (e0: v = 0, e1: u + v = 1, e2: u = 0) has uniform_factor(f_k) segments: that many + 1 positions.
     std::set<std::pair<std::uint32_t, std::uint32_t>> on_edge[3];
-    for (const DomainPoint& p : v) {
+    for (const uniform::Point& p : v) {
         if (p.v == 0) on_edge[0].insert({p.u, p.v});
         if (p.u + p.v == uniform::fixed_one) on_edge[1].insert({p.u, p.v});
         if (p.u == 0) on_edge[2].insert({p.u, p.v});
@@ -118,13 +119,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     // Out of range: zeros. A short span: false, nothing written.
     const std::uint32_t far = n.vertices + in.u32() % 1000u;
-    CTESS_FUZZ_CHECK(patch.vertex(far) == DomainPoint{});
+    CTESS_FUZZ_CHECK(patch.vertex(far) == uniform::Point{});
     const auto none = patch.triangle(n.triangles + in.u32() % 1000u);
     CTESS_FUZZ_CHECK(none[0] == 0 && none[1] == 0 && none[2] == 0);
-    std::vector<DomainPoint> short_v(n.vertices - 1, DomainPoint{7, 7});
+    std::vector<uniform::Point> short_v(n.vertices - 1, uniform::Point{7, 7});
     std::vector<std::uint32_t> short_i(n.index_count(), 7u);
     CTESS_FUZZ_CHECK(!patch.emit(short_v, short_i));
-    for (const DomainPoint& p : short_v) CTESS_FUZZ_CHECK(p == (DomainPoint{7, 7}));
+    for (const uniform::Point& p : short_v) CTESS_FUZZ_CHECK(p == (uniform::Point{7, 7}));
     for (const std::uint32_t i : short_i) CTESS_FUZZ_CHECK(i == 7u);
     return 0;
 }
