@@ -34,8 +34,8 @@ struct ProceduralPatch {
     void generate(const benchmark::State& state) {
         float f0 = bench::factor(state, 0);
         benchmark::DoNotOptimize(f0);
-        // The fill alone (the buffers were sized from the counts above): the generator's own cost, without the
-        // counting pass the span overload adds.
+        // The fill alone (the buffers were sized from the counts above): the generator's own cost, without
+        // the counting pass the span overload adds.
         cp::detail::tessellate_into(vertices.data(), indices.data(), f0, bench::factor(state, 1),
                                     bench::factor(state, 2), options);
     }

@@ -136,7 +136,6 @@ TEST_CASE("a shared-layout CP quad covers the unit square once and keeps one dia
 }
 
 // Equal factors 4: two triforce halves of 15 vertices and 16 triangles sharing a diagonal of 5 points.
-static_assert(cp::tessellate_quad({}, {}, {4, 4, 4, 4}, {{Layout::shared}}) ==
-              Counts{25, 32});
+static_assert(cp::tessellate_quad({}, {}, {4, 4, 4, 4}, {{Layout::shared}}) == Counts{25, 32});
 static_assert(cp::tessellate_quad({}, {}, {4, 4, 4, 4}) ==
               Counts{2 * cp::pattern_counts(4, 4, 4).vertices, 32});

@@ -87,10 +87,9 @@ TEST_CASE("mesh pipeline: records, prefix sums and emitted patches match CpPatch
         std::vector<std::uint32_t> pi(3 * std::size_t{most.triangles});
         for (std::uint32_t p = 0; p < mesh.triangle_count; ++p) {
             const cp::PatternOptions opt{{}, max_factor};
-            const Counts n =
-                cp::tessellate(pv, pi, cp::LineState{rec[p].token[0], rec[p].t16[0]},
-                               cp::LineState{rec[p].token[1], rec[p].t16[1]},
-                               cp::LineState{rec[p].token[2], rec[p].t16[2]}, opt);
+            const Counts n = cp::tessellate(pv, pi, cp::LineState{rec[p].token[0], rec[p].t16[0]},
+                                            cp::LineState{rec[p].token[1], rec[p].t16[1]},
+                                            cp::LineState{rec[p].token[2], rec[p].t16[2]}, opt);
             REQUIRE(n.vertices == rec[p].vertex_count);
             REQUIRE(n.triangles == rec[p].triangle_count);
             const cp::Rotation rot{static_cast<std::uint8_t>(rec[p].rotation)};

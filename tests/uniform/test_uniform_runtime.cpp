@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <set>
@@ -20,9 +20,9 @@
 #include "support/mesh_checks.hpp"
 
 namespace uf = ctess::uniform;
-using ctess::uniform::Point;
 using ctess::rt::UniformPatch;
 using ctess::rt::UniformTableSet;
+using ctess::uniform::Point;
 
 namespace {
 
@@ -175,8 +175,7 @@ TEST_CASE("uniform runtime: the provoking layout is the shared one with a unique
                             // positions [0, V) are the shared layout's
                             REQUIRE(std::equal(s.vertices.begin(), s.vertices.end(), e.vertices.begin()));
                             std::set<std::uint64_t> distinct;
-                            for (const Point d : s.vertices)
-                                distinct.insert(ctess::test::position_key(d));
+                            for (const Point d : s.vertices) distinct.insert(ctess::test::position_key(d));
                             std::vector<int> provokes(v + fewest, 0);
                             for (std::uint32_t p = 0; p < t; ++p) {
                                 const std::uint32_t* si = &s.indices[3 * p];

@@ -18,8 +18,8 @@
 
 #include "support/emit_all.hpp"
 
-using ctess::uniform::SplitPoint;
 using ctess::rt::UniformSplit;
+using ctess::uniform::SplitPoint;
 
 namespace {
 
@@ -291,7 +291,7 @@ TEST_CASE("uniform split: final edge lengths against the table's own bound, defa
                         const auto tri = leaf.patch.triangle(t);
                         for (int e = 0; e < 3; ++e) {
                             const ctess::uniform::Point a = leaf.patch.vertex(tri[e]),
-                                              b = leaf.patch.vertex(tri[(e + 1) % 3]);
+                                                        b = leaf.patch.vertex(tri[(e + 1) % 3]);
                             const double du = (double(b.u) - a.u) / ctess::uniform::fixed_one,
                                          dv = (double(b.v) - a.v) / ctess::uniform::fixed_one;
                             pattern_longest =

@@ -16,12 +16,12 @@
 
 #include "support/emit_all.hpp"
 
-using ctess::uniform::SplitPoint;
 using ctess::Layout;
 using ctess::PatchOptions;
 using ctess::Winding;
 using ctess::rt::UniformSplit;
 using ctess::test::emit_all;
+using ctess::uniform::SplitPoint;
 
 namespace {
 

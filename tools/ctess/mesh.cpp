@@ -41,7 +41,7 @@ float max_of(const std::vector<float>& v, std::size_t n) {
 }
 
 template <class Point, class Tessellate>
-void fill(Mesh& mesh, Tessellate&& tessellate) { // counts, then fill
+void fill(Mesh& mesh, Tessellate&& tessellate) {                                    // counts, then fill
     const auto counts = tessellate(std::span<Point>{}, std::span<std::uint32_t>{}); // or IsolineCounts
     std::vector<Point> points(counts.vertices);
     mesh.indices.resize(counts.index_count());
@@ -54,8 +54,9 @@ Mesh tessellate_d3d11(const PatternRequest& r) {
     Mesh mesh;
     const auto& f = r.factors;
     auto run = [&](auto fn, const auto& factors) {
-        fill<d3d11::Point>(
-            mesh, [&](std::span<d3d11::Point> v, std::span<std::uint32_t> i) { return fn(v, i, factors, opt); });
+        fill<d3d11::Point>(mesh, [&](std::span<d3d11::Point> v, std::span<std::uint32_t> i) {
+            return fn(v, i, factors, opt);
+        });
     };
     if (r.domain == "tri") {
         if (f.size() != 3 && f.size() != 4)

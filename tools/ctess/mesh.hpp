@@ -4,8 +4,8 @@
 
 #include <array>
 #include <cstdint>
-#include <string>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace ctess::cli {

@@ -19,8 +19,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <stdexcept>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -167,9 +167,7 @@ std::uint32_t d3d11_emit(const Factors& f) {
     static std::vector<ctess::d3d11::Point> v(ctess::d3d11::max_tri_counts.vertices);
     static std::vector<std::uint32_t> i(ctess::d3d11::max_tri_counts.index_count());
     const ctess::d3d11::TessOptions opt{P, ctess::Winding::ccw};
-    return ctess::d3d11::tessellate_tri(v, i, {f[0], f[1], f[2], (f[0] + f[1] + f[2]) / 3.0f},
-                                        opt)
-        .triangles;
+    return ctess::d3d11::tessellate_tri(v, i, {f[0], f[1], f[2], (f[0] + f[1] + f[2]) / 3.0f}, opt).triangles;
 }
 std::uint32_t osd_emit(const Factors& f) {
     static const Bfr::Parameterization param{OpenSubdiv::Sdc::SCHEME_LOOP, 3};

@@ -51,7 +51,7 @@ inline constexpr bool exactly_convertible = To::one % From::one == 0;
 
 // p in the unit To, exactly (To::one a multiple of From::one; a coordinate in [0, From::one] cannot wrap).
 template <class To, class From>
-    requires exactly_convertible<From, To>
+requires exactly_convertible<From, To>
 constexpr FixedPoint<To> exact_convert(FixedPoint<From> p) noexcept {
     constexpr std::uint32_t scale = To::one / From::one;
     return {p.u * scale, p.v * scale};

@@ -2,8 +2,8 @@
 // (docs/algorithm.md §2.12). Quad corners q0, q1, q2, q3 are counter-clockwise; edge k runs q_k -> q_{k+1}.
 #pragma once
 #include <array>
-#include <span>
 #include <cstdint>
+#include <span>
 
 #include "line.hpp"
 #include "pattern.hpp"
@@ -62,8 +62,8 @@ constexpr std::uint32_t e1_block_start(const DomainPoint* v, std::uint32_t n) {
 } // namespace detail
 
 // A whole CP quad (docs/algorithm.md §2.12): the two halves of split_quad, their points mapped into the
-// quad's unit square by quad_point, counts first (empty spans), then fill, outputs first; nothing is written when a span is short. Triangle A's
-// vertices and triangles come first, then B's.
+// quad's unit square by quad_point, counts first (empty spans), then fill, outputs first; nothing is written
+// when a span is short. Triangle A's vertices and triangles come first, then B's.
 // * Layout::shared welds the diagonal: B's diagonal points are A's (same positions bit for bit, as both
 // halves
 //   have the diagonal's factor on e1 and CP lines are mirror-exact), so B contributes only its other

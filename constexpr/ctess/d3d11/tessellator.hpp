@@ -78,8 +78,8 @@ constexpr std::uint32_t edge_param_index(bool reversed, std::uint32_t first, std
 
 // factors: {Ueq0, Veq0, Weq0, inside}.
 namespace detail {
-constexpr Counts tessellate_tri_into(Point* points, std::uint32_t* indices, const std::array<float, 4>& factors,
-    const TessOptions& options) {
+constexpr Counts tessellate_tri_into(Point* points, std::uint32_t* indices,
+                                     const std::array<float, 4>& factors, const TessOptions& options) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 3; ++e)
         if (culls(factors[e])) return {};
@@ -202,8 +202,8 @@ constexpr Counts tessellate_tri_into(Point* points, std::uint32_t* indices, cons
 
 // factors: {Ueq0, Veq0, Ueq1, Veq1, insideU, insideV}.
 namespace detail {
-constexpr Counts tessellate_quad_into(Point* points, std::uint32_t* indices, const std::array<float, 6>& factors,
-    const TessOptions& options) {
+constexpr Counts tessellate_quad_into(Point* points, std::uint32_t* indices,
+                                      const std::array<float, 6>& factors, const TessOptions& options) {
     const Partitioning mode = options.partitioning;
     for (unsigned e = 0; e < 4; ++e)
         if (culls(factors[e])) return {};
@@ -375,8 +375,9 @@ constexpr Counts tessellate_quad_into(Point* points, std::uint32_t* indices, con
 // factors: {density, detail}. Density is always integer (rounded up, [1, 64]); lines sit at v = 0 .. < 1
 // (none at v = 1); detail follows the partitioning. Segments connect consecutive points of each line.
 namespace detail {
-constexpr IsolineCounts tessellate_isoline_into(Point* points, std::uint32_t* indices, const std::array<float, 2>& factors,
-    const TessOptions& options) {
+constexpr IsolineCounts tessellate_isoline_into(Point* points, std::uint32_t* indices,
+                                                const std::array<float, 2>& factors,
+                                                const TessOptions& options) {
     if (culls(factors[0]) || culls(factors[1])) return {};
     const FixedFactor density = process_edge_factor(Partitioning::integer, factors[0]);
     const FixedFactor detail_f = process_edge_factor(options.partitioning, factors[1]);
@@ -424,7 +425,8 @@ constexpr Counts tessellate_quad(std::span<Point> points, std::span<std::uint32_
 }
 // Isoline factors: {density, detail}; 2 indices per segment.
 constexpr IsolineCounts tessellate_isoline(std::span<Point> points, std::span<std::uint32_t> indices,
-                                           const std::array<float, 2>& factors, const TessOptions& options = {}) {
+                                           const std::array<float, 2>& factors,
+                                           const TessOptions& options = {}) {
     const IsolineCounts n = detail::tessellate_isoline_into(nullptr, nullptr, factors, options);
     if (n.vertices > points.size() || n.index_count() > indices.size()) return n;
     return detail::tessellate_isoline_into(points.data(), indices.data(), factors, options);

@@ -3,9 +3,10 @@
 // record (docs/shaders.md, "Patch records"). An emit invocation then reads these words and one column record
 // instead of redoing the setup (token records, column record, clamp, strip count, collapse skips).
 //
-// This is the CPU twin of the shaders' patch_setup (shaders/ctess_mesh.comp.glsl, shaders/ctess_mesh.wgsl): the
-// state of CpPatchSetup's constructor (the collapse skips of docs/algorithm.md §2.9 included), written out as
-// table indices rather than pointers, so that the block does not depend on where a blob puts its sections.
+// This is the CPU twin of the shaders' patch_setup (shaders/ctess_mesh.comp.glsl, shaders/ctess_mesh.wgsl):
+// the state of CpPatchSetup's constructor (the collapse skips of docs/algorithm.md §2.9 included), written
+// out as table indices rather than pointers, so that the block does not depend on where a blob puts its
+// sections.
 #pragma once
 #include <cstdint>
 
