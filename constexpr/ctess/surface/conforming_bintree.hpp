@@ -27,11 +27,12 @@
 #include <span>
 
 #include <ctess/core/counts.hpp>
+#include <ctess/core/fixed_point.hpp>
 
 namespace ctess::adaptive {
 
 inline constexpr unsigned max_level_limit = 32;
-inline constexpr std::uint32_t fixed_one = 1u << 16;
+inline constexpr std::uint32_t fixed_one = units::bintree::one; // the parameter square's 1.0 (2^16)
 inline constexpr std::uint32_t no_node = 0xffffffffu;
 
 struct ParamPoint {
