@@ -14,6 +14,13 @@ install(TARGETS ctess_constexpr ctess_runtime_core ctess_uniform_core ctess_runt
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT ctessTargets NAMESPACE ctess:: DESTINATION ${CTESS_INSTALL_CMAKEDIR})
 
+# The `ctess` CLI (docs/cli.md) and the viewer it serves; `ctess serve` looks for the viewer and the shaders
+# beside its own prefix (../share/ctess) before the build tree's.
+if(TARGET ctess)
+  install(TARGETS ctess RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/viewer/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ctess/viewer)
+endif()
+
 if(CTESS_BUILD_SHADERS)
   install(FILES ${CTESS_GENERATED_SHADERS} DESTINATION ${CTESS_INSTALL_SHADERDIR})
 endif()
