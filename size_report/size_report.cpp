@@ -180,6 +180,10 @@ struct Flash {
     bool available = false;
     std::size_t tables = 0, runtime = 0, program = 0;
     std::size_t verify = 0; // verify_tables' code and nibble table (arm_verify_probe.cpp)
+    // The runnable image that tests/embedded runs under QEMU (m4_run.cpp: CpPatch, UniformPatch,
+    // UniformSplit, verify_tables, newlib's printf): flash = text + data, RAM = data + bss (mostly its output
+    // buffers).
+    std::size_t run_flash = 0, run_ram = 0;
 };
 
 // text + rodata of the Cortex-M4 objects: the tables, the runtime (probe and the CpPatch sources), and the
@@ -219,6 +223,15 @@ Flash flash([[maybe_unused]] unsigned max_factor) {
     if (nl != std::string::npos && std::sscanf(berkeley.c_str() + nl + 1, "%llu %llu", &text, &data) == 2) {
         f.program = text;
         f.available = f.tables > 0;
+    }
+    unsigned long long bss = 0;
+    const std::string run_elf = max_factor == 64 ? CTESS_ARM_RUN_ELF_64 : CTESS_ARM_RUN_ELF_256;
+    const std::string run_berkeley = run(fmt::format("'{}' '{}'", CTESS_ARM_SIZE, run_elf));
+    const std::size_t run_nl = run_berkeley.find('\n');
+    if (run_nl != std::string::npos &&
+        std::sscanf(run_berkeley.c_str() + run_nl + 1, "%llu %llu %llu", &text, &data, &bss) == 3) {
+        f.run_flash = text + data;
+        f.run_ram = data + bss;
     }
 #endif
     return f;
@@ -278,8 +291,8 @@ int main(int argc, char** argv) {
             if (f.available)
                 report += fmt::format(
                     ", \"cortex_m4_flash\": {{\"tables\": {}, \"runtime\": {}, \"program_text\": {}, "
-                    "\"verify_tables\": {}}}",
-                    f.tables, f.runtime, f.program, f.verify);
+                    "\"verify_tables\": {}, \"run_image_flash\": {}, \"run_image_ram\": {}}}",
+                    f.tables, f.runtime, f.program, f.verify, f.run_flash, f.run_ram);
             if (c.family == "cp")
                 report += fmt::format(
                     ", \"verify_tables\": {{\"ok\": {}, \"microseconds\": {:.1f}, \"data_bytes\": {}}}",
@@ -299,8 +312,9 @@ int main(int argc, char** argv) {
             } else if (f.available)
                 report += fmt::format(
                     "  Cortex-M4 (-Os, thumb, no exceptions/RTTI), text + rodata: tables {} B, runtime "
-                    "{} B; linked bare-metal program text {} B\n",
-                    f.tables, f.runtime, f.program);
+                    "{} B; linked bare-metal program text {} B\n"
+                    "  Cortex-M4 runnable image (m4_run, QEMU mps2-an386): flash {} B, RAM {} B\n",
+                    f.tables, f.runtime, f.program, f.run_flash, f.run_ram);
             else
                 report += "  Cortex-M4 footprint: not built (install gcc-arm-none-eabi, "
                           "libstdc++-arm-none-eabi-newlib)\n";
