@@ -650,3 +650,32 @@ TEST_CASE("Surface evaluation (algorithm.md §6.3): NaN and infinity give no UB 
     CHECK(bits(evaluate_quad_surface(good, one / 3, one / 5, unknown).position) ==
           bits(evaluate_quad_surface(good, one / 3, one / 5).position));
 }
+
+TEST_CASE("Quad surfaces (algorithm.md §6.2): the interior meets every edge (the bicubic net's boundary is "
+          "the edge "
+          "curve)",
+          "[surface][quad]") {
+    // A curved, non-planar quad; the edge points come from edge_point, the inside from the control net, so a
+    // misplaced net point shows as a jump between an edge point and its neighbour one 2^-24 step inside.
+    const SurfaceCorner q[4] = {{{0.0f, 0.0f, 0.0f}, unit({-0.3f, -0.3f, 1.0f}), {0, 0}, 5},
+                                {{1.1f, 0.1f, 0.2f}, unit({0.4f, -0.2f, 1.0f}), {1, 0}, 2},
+                                {{0.9f, 1.2f, -0.1f}, unit({0.2f, 0.5f, 1.0f}), {1, 1}, 7},
+                                {{-0.1f, 0.8f, 0.3f}, unit({-0.5f, 0.1f, 1.0f}), {0, 1}, 1}};
+    for (const Surface s : {Surface::pn_triangles, Surface::phong, Surface::pn_aen}) {
+        CAPTURE(static_cast<unsigned>(s));
+        float worst_position = 0.0f, worst_normal = 0.0f;
+        for (std::uint32_t r = 1; r < one; r += 65521) {
+            // Edge k's point (s, t) and the point one step towards the inside.
+            const std::uint32_t edge[4][2] = {{r, 0}, {one, r}, {r, one}, {0, r}};
+            const std::uint32_t inside[4][2] = {{r, 1}, {one - 1, r}, {r, one - 1}, {1, r}};
+            for (unsigned k = 0; k < 4; ++k) {
+                const SurfacePoint a = evaluate_quad_surface(q, edge[k][0], edge[k][1], options(s, 1.0f));
+                const SurfacePoint b = evaluate_quad_surface(q, inside[k][0], inside[k][1], options(s, 1.0f));
+                worst_position = std::fmax(worst_position, length(a.position - b.position));
+                worst_normal = std::fmax(worst_normal, length(a.normal - b.normal));
+            }
+        }
+        CHECK(worst_position < 2e-6f);
+        CHECK(worst_normal < 2e-6f);
+    }
+}
