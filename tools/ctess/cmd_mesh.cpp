@@ -1,0 +1,214 @@
+// ctess mesh: a model file in (glTF 2.0 or OBJ: triangles, quads, n-gons), the mesh pipeline over every face at
+// the chosen factors and surface, one welded indexed mesh out (OBJ, PLY or binary glTF), written to a temporary
+// file and renamed (docs/cli.md, "ctess mesh"). The library does the work: ctess::models loads and finds the
+// adjacency, the pipeline (setup_welded, emit_welded_mesh) tessellates and welds; this file parses options,
+// times the stages and writes.
+#include "cli_args.hpp"
+#include "commands.hpp"
+#include "file_output.hpp"
+#include "json_escape.hpp"
+#include "model_formats.hpp"
+
+#include <ctess/runtime/cp/table_set.hpp>
+#include <ctess/runtime/models/adjacency.hpp>
+#include <ctess/runtime/models/model.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
+#include <ctess/runtime/uniform/table_set.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+namespace ctess::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string extension_of(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    const auto slash = path.find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+rt::Vec3 parse_vec3(const std::string& text, const std::string& what) {
+    const std::vector<float> v = parse_float_list(text, what, 3, 3);
+    for (const float f : v)
+        if (!std::isfinite(f)) throw UsageError(what + " needs finite numbers");
+    return {v[0], v[1], v[2]};
+}
+
+float positive_finite(const Args& args, const std::string& key) {
+    const float f = parse_float(args.get(key), "--" + key);
+    if (!std::isfinite(f) || f <= 0) throw UsageError("--" + key + " must be a finite number > 0");
+    return f;
+}
+
+// The factor options: exactly one of --factor, --edge-length, --dice-rate (with the camera's options).
+rt::DiceOptions dice_options_from(const Args& args) {
+    const int modes = args.has("factor") + args.has("edge-length") + args.has("dice-rate");
+    if (modes != 1) throw UsageError("give exactly one of --factor, --edge-length and --dice-rate");
+    const bool camera_options = args.has("camera") || args.has("fov") || args.has("resolution");
+    if (camera_options && !args.has("dice-rate"))
+        throw UsageError("--camera, --fov and --resolution go with --dice-rate");
+    rt::DiceOptions dice;
+    if (args.has("factor")) {
+        dice.mode = rt::FactorMode::constant;
+        dice.constant_factor = positive_finite(args, "factor");
+    } else if (args.has("edge-length")) {
+        dice.mode = rt::FactorMode::edge_length;
+        dice.target_edge_length = positive_finite(args, "edge-length");
+    } else {
+        dice.mode = rt::FactorMode::camera;
+        dice.dice_rate = positive_finite(args, "dice-rate");
+        if (!args.has("camera")) throw UsageError("--dice-rate needs --camera X,Y,Z");
+        dice.eye = parse_vec3(args.get("camera"), "--camera");
+        const float fov = args.has("fov") ? positive_finite(args, "fov") : 60.0f;
+        if (fov >= 180) throw UsageError("--fov must be below 180 degrees");
+        const std::vector<float> res = parse_float_list(args.get_or("resolution", "1920,1080"), "--resolution", 2, 2);
+        if (!(res[0] >= 1 && res[1] >= 1 && res[0] <= 65536 && res[1] <= 65536))
+            throw UsageError("--resolution needs W,H between 1 and 65536");
+        // Pixels per world unit at distance 1 (tess_factor.hpp): the vertical resolution over 2 tan(fov / 2).
+        const double half = fov * std::numbers::pi / 360.0;
+        dice.projection_scale = static_cast<float>(res[1] / (2.0 * std::tan(half)));
+    }
+    return dice;
+}
+
+rt::Surface surface_from(const std::string& name) {
+    if (name == "flat") return rt::Surface::flat;
+    if (name == "pn") return rt::Surface::pn_triangles;
+    if (name == "pn-aen") return rt::Surface::pn_aen;
+    return rt::Surface::phong;
+}
+
+struct StageSeconds {
+    double load = 0, adjacency = 0, setup = 0, emit = 0, write = 0;
+};
+
+// Open edges of a triangle mesh by exact position (every output edge must be in two triangles).
+std::size_t open_edges_by_position(const OutputMesh& mesh) {
+    models::Model m;
+    m.vertices = mesh.vertices;
+    m.triangles = mesh.triangles;
+    return models::open_edge_count(m, models::build_adjacency(m).position_ids);
+}
+
+} // namespace
+
+int run_mesh(int argc, char** argv) {
+    const Args args(argc, argv, 2,
+                    {"in", "out", "pattern", "max", "factor", "edge-length", "dice-rate", "camera", "fov",
+                     "resolution", "surface", "quad-rule"},
+                    {"stats", "keep-degenerate"});
+    const std::string in = args.get("in");
+    const std::string out = args.get_or("out", "");
+    const bool stats = args.has("stats");
+    if (out.empty() && !stats) throw UsageError("give --out FILE (.obj, .ply or .glb), --stats, or both");
+    const std::string format = out.empty() ? "" : extension_of(out);
+    if (!out.empty() && format != "obj" && format != "ply" && format != "glb")
+        throw UsageError("--out must end in .obj, .ply or .glb");
+    const std::string pattern = choice(args.get_or("pattern", "cp"), {"cp", "uniform"}, "--pattern");
+    if (pattern == "uniform" && args.has("max")) throw UsageError("--max applies to --pattern cp only");
+    const unsigned max = max_factor_from(args);
+    rt::PipelineOptions options;
+    options.dice = dice_options_from(args);
+    options.pattern = pattern == "cp" ? rt::Pattern::cp : rt::Pattern::uniform;
+    options.surface.surface =
+        surface_from(choice(args.get_or("surface", "flat"), {"flat", "pn", "pn-aen", "phong"}, "--surface"));
+    options.quad_rule = choice(args.get_or("quad-rule", "longer-pair"), {"longer-pair", "as-labelled"},
+                               "--quad-rule") == "longer-pair"
+                            ? rt::QuadRule::longer_pair
+                            : rt::QuadRule::as_labelled;
+    options.weld.keep_degenerate = args.has("keep-degenerate");
+
+    StageSeconds seconds;
+    auto start = Clock::now();
+    models::LoadResult loaded = models::load_model(in);
+    if (!loaded) throw std::runtime_error(loaded.error.message);
+    const models::Model& model = *loaded.model;
+    seconds.load = seconds_since(start);
+
+    start = Clock::now();
+    const models::Adjacency adjacency = models::build_adjacency(model);
+    const std::size_t input_open_edges = models::open_edge_count(model, adjacency.position_ids);
+    seconds.adjacency = seconds_since(start);
+
+    rt::MeshView view;
+    view.vertices = model.vertices.data();
+    view.vertex_count = static_cast<std::uint32_t>(model.vertex_count());
+    view.indices = model.triangles.data();
+    view.triangle_count = static_cast<std::uint32_t>(model.triangle_count());
+    view.quad_indices = model.quads.data();
+    view.quad_count = static_cast<std::uint32_t>(model.quad_count());
+
+    const rt::CpTableSet& cp = max == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
+    const rt::UniformTableSet& uniform = rt::uniform_tables;
+    start = Clock::now();
+    std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(view));
+    std::vector<rt::WeldedPatch> patches(view.patch_count());
+    rt::WeldedTotals totals;
+    rt::PipelineStatus status = rt::setup_welded(cp, uniform, view, options, edges, patches, totals);
+    if (status != rt::PipelineStatus::ok)
+        throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+    edges.resize(totals.edges);
+    seconds.setup = seconds_since(start);
+
+    start = Clock::now();
+    std::vector<rt::TessVertex> vertices(totals.vertices);
+    OutputMesh mesh;
+    mesh.triangles.resize(3 * std::size_t{totals.triangles});
+    status = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches, vertices, mesh.triangles);
+    if (status != rt::PipelineStatus::ok)
+        throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+    mesh.vertices.resize(8 * vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        float* v = &mesh.vertices[8 * i];
+        const rt::TessVertex& t = vertices[i];
+        v[0] = t.position[0], v[1] = t.position[1], v[2] = t.position[2];
+        v[3] = t.normal[0], v[4] = t.normal[1], v[5] = t.normal[2];
+        v[6] = t.uv[0], v[7] = t.uv[1];
+    }
+    seconds.emit = seconds_since(start);
+
+    if (!out.empty()) {
+        start = Clock::now();
+        const std::string comment = fmt::format("ctess mesh --in {} --pattern {}", in, pattern);
+        write_text(out, format == "obj"   ? mesh_to_obj(mesh, comment)
+                        : format == "ply" ? mesh_to_ply(mesh, comment)
+                                          : mesh_to_glb(mesh, comment));
+        seconds.write = seconds_since(start);
+    }
+    if (stats) {
+        const std::size_t output_open_edges = open_edges_by_position(mesh);
+        const double total = seconds.load + seconds.adjacency + seconds.setup + seconds.emit + seconds.write;
+        std::string text = "{\n";
+        text += fmt::format("  \"input\": \"{}\",\n  \"pattern\": \"{}\",\n", json_escape(in), pattern);
+        text += fmt::format("  \"input_vertices\": {},\n  \"input_triangles\": {},\n  \"input_quads\": {},\n",
+                            model.vertex_count(), model.triangle_count(), model.quad_count());
+        text += fmt::format("  \"dropped_degenerate_faces\": {},\n  \"input_open_edges\": {},\n",
+                            model.dropped_degenerate_faces, input_open_edges);
+        text += fmt::format("  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
+                            mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
+        text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
+        text += fmt::format("  \"seconds\": {{\"load\": {:.6f}, \"adjacency\": {:.6f}, \"setup\": {:.6f}, "
+                            "\"emit_and_weld\": {:.6f}, \"write\": {:.6f}, \"total\": {:.6f}}}\n",
+                            seconds.load, seconds.adjacency, seconds.setup, seconds.emit, seconds.write, total);
+        text += "}\n";
+        write_text("-", text);
+    }
+    return 0;
+}
+
+} // namespace ctess::cli
