@@ -20,10 +20,12 @@ struct Adjacency {
     std::vector<std::uint32_t> tessellation_indices;
 };
 
+// Throws std::out_of_range for an index >= model.vertex_count() (load_model never returns one).
 Adjacency build_adjacency(const Model& model);
 
 // Edges (pairs of position ids) used by exactly one face: 0 for a closed model. Triangles give 3 edges, quads
-// their 4 boundary edges (not the split diagonal). position_ids must have model.vertex_count() entries.
+// their 4 boundary edges (not the split diagonal). Throws std::invalid_argument unless position_ids has
+// model.vertex_count() entries, std::out_of_range for an index >= model.vertex_count().
 std::size_t open_edge_count(const Model& model, std::span<const std::uint32_t> position_ids);
 
 } // namespace ctess::models
