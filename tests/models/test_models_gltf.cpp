@@ -92,6 +92,19 @@ TEST_CASE("glTF separate .bin next to the .gltf") {
     require_tetrahedron(*r.model);
 }
 
+TEST_CASE("glTF external buffers are found next to the .gltf only, never in the current directory") {
+    const std::filesystem::path scratch = scratch_dir();
+    std::filesystem::create_directories(scratch / "sub");
+    write_file("cwd_only.bin", tet_buffer());
+    write_file("sub/cwd_only.gltf", tet_gltf(R"({"byteLength":72,"uri":"cwd_only.bin"})"));
+    const std::filesystem::path cwd = std::filesystem::current_path();
+    std::filesystem::current_path(scratch);
+    const LoadResult r = load_model("sub/cwd_only.gltf");
+    std::filesystem::current_path(cwd);
+    REQUIRE_FALSE(r.ok());
+    REQUIRE(r.error.message.find("cwd_only.bin") != std::string::npos);
+}
+
 TEST_CASE("glTF from memory never opens an external buffer") {
     write_file("tet_separate.bin", tet_buffer());
     const LoadResult r =

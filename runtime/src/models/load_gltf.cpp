@@ -417,9 +417,17 @@ struct FileAccess {
     const std::string* base_dir = nullptr;
 };
 
+// tinygltf looks in the model's folder, then in ".": only the first is allowed, so that a model never picks
+// up a file from the current directory.
+bool allowed(const std::string& path, const FileAccess* access) {
+    if (access->base_dir == nullptr) return false;
+    const std::string& dir = *access->base_dir;
+    return dir.empty() || path.rfind(dir.back() == '/' ? dir : dir + "/", 0) == 0;
+}
+
 bool file_exists(const std::string& path, void* user) {
     const auto* access = static_cast<const FileAccess*>(user);
-    if (access->base_dir == nullptr) return false;
+    if (!allowed(path, access)) return false;
     std::error_code ec;
     return std::filesystem::is_regular_file(path, ec);
 }
@@ -430,7 +438,7 @@ std::string expand_file_path(const std::string& path, void*) {
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
     const auto* access = static_cast<const FileAccess*>(user);
-    if (access->base_dir == nullptr) return false;
+    if (!allowed(path, access)) return false;
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec || size > std::numeric_limits<std::uint32_t>::max()) {
