@@ -156,6 +156,7 @@ TEST_CASE("assimp-testmodels broken files give errors naming the file and the pr
         {"OBJ/box_UTF16BE.obj", "NUL bytes"},
         {"OBJ/box_longline.obj", "more than 255 corners"},
         {"OBJ/point_cloud.obj", "empty model"},
+        {"OBJ/number_formats.obj", "line 11: '3.1+e2' is not a finite number"},
     };
     for (const auto& [file, problem] : files) {
         const std::string path = (assimp_models / file).string();

@@ -105,8 +105,17 @@ TEST_CASE("bad file: NaN or infinite attributes") {
     std::memcpy(&bytes[bin + 4], &nan, 4);
     require_error(load_bytes(bytes, ModelKind::gltf_binary), "test",
                   "vertex 0 has a NaN or infinite attribute");
+    // OBJ numbers tinyobjloader would read as 0 without a word, or as infinity.
     require_error(load_bytes("v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", ModelKind::obj), "test",
-                  "NaN or infinite");
+                  "line 2: '1e999' is not a finite number");
+    require_error(load_bytes("v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ModelKind::obj), "test",
+                  "line 1: 'nan' is not a finite number");
+    require_error(load_bytes("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 abc\nf 1/1 2/1 3/1\n", ModelKind::obj),
+                  "test", "line 4: 'abc' is not a finite number");
+    // Signs and exponents that strtod reads are numbers.
+    REQUIRE(load_bytes("v +0 -0 1e-60\nv 1E0 0 0\r\nv 0 1.5e-0 0\nf 1 2 3\n", ModelKind::obj).ok());
+    require_error(load_bytes("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n", ModelKind::obj), "test",
+                  "line 2: '1e39' is not a finite number");
 }
 
 TEST_CASE("bad file: a model whose faces are all degenerate, or with none, is an error") {

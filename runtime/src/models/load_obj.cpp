@@ -2,7 +2,10 @@
 // text and resolves negative (relative) indices; it does not check indices against the attribute arrays, so
 // every index is checked here before use.
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <limits>
+#include <string_view>
 #include <unordered_map>
 
 #include <tiny_obj_loader.h>
@@ -32,15 +35,51 @@ void check_index(int index, std::size_t count, const char* what, std::size_t fac
                           " defined)"};
 }
 
+// tinyobjloader reads a number it cannot parse ("nan", "abc") as 0 without a word: every number of the v, vn
+// and vt lines is checked here first, so that such a file is an error rather than a silently moved vertex
+// (docs/models.md, "Bad files").
+void check_attribute_numbers(std::string_view text) {
+    std::size_t line_number = 0;
+    while (!text.empty()) {
+        ++line_number;
+        const std::size_t end = std::min(text.find('\n'), text.size());
+        std::string_view line = text.substr(0, end);
+        text.remove_prefix(std::min(end + 1, text.size()));
+        auto next_token = [&line]() {
+            const std::size_t start = std::min(line.find_first_not_of(" \t\r"), line.size());
+            line.remove_prefix(start);
+            const std::size_t stop = std::min(line.find_first_of(" \t\r"), line.size());
+            const std::string_view token = line.substr(0, stop);
+            line.remove_prefix(stop);
+            return token;
+        };
+        const std::string_view keyword = next_token();
+        if (keyword != "v" && keyword != "vn" && keyword != "vt") continue;
+        for (std::string_view token = next_token(); !token.empty(); token = next_token()) {
+            std::string_view digits = token;
+            if (digits.size() > 1 && digits[0] == '+') digits.remove_prefix(1); // strtod's leading '+'
+            // Read as a double: a float underflow (|x| < 1e-45) is a legitimate 0; a float overflow is not.
+            double value = 0;
+            const auto [rest, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+            if (ec != std::errc{} || rest != digits.data() + digits.size() || !std::isfinite(value) ||
+                std::abs(value) > std::numeric_limits<float>::max())
+                throw LoadFailure{"line " + std::to_string(line_number) + ": '" + std::string(token) +
+                                  "' is not a finite number"};
+        }
+    }
+}
+
 } // namespace
 
 Model load_obj(std::span<const std::uint8_t> bytes) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = false; // quads stay quads; n-gons are fanned below
     config.vertex_color = false;
+    const std::string text(bytes.begin(), bytes.end());
+    check_attribute_numbers(text);
     tinyobj::ObjReader reader;
     // Materials are not read: an mtllib line only gives tinyobjloader a warning.
-    if (!reader.ParseFromString(std::string(bytes.begin(), bytes.end()), std::string{}, config)) {
+    if (!reader.ParseFromString(text, std::string{}, config)) {
         std::string err = reader.Error();
         while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
         throw LoadFailure{"OBJ parse error: " + (err.empty() ? std::string{"unknown"} : err)};
