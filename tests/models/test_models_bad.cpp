@@ -121,6 +121,7 @@ TEST_CASE("bad file: NaN or infinite attributes") {
 TEST_CASE("bad file: a model whose faces are all degenerate, or with none, is an error") {
     require_error(load_bytes("v 0 0 0\nv 1 0 0\nf 1 2 2\nf 1 1 1\n", ModelKind::obj), "test",
                   "all 2 faces are degenerate");
+    require_error(load_bytes(triangle_glb(1), ModelKind::gltf_binary), "test", "all 1 faces are degenerate");
     require_error(load_bytes("v 0 0 0\nv 1 0 0\nl 1 2\n", ModelKind::obj), "test", "empty model");
     require_error(load_bytes(R"({"asset":{"version":"2.0"}})", ModelKind::gltf_text), "test", "empty model");
 }
