@@ -12,6 +12,10 @@ install(TARGETS ctess_constexpr ctess_runtime_core ctess_uniform_core ctess_runt
         EXPORT ctessTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(CTESS_HAVE_MODELS)
+  install(TARGETS ctess_models EXPORT ctessTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
 install(EXPORT ctessTargets NAMESPACE ctess:: DESTINATION ${CTESS_INSTALL_CMAKEDIR})
 
 # The `ctess` CLI (docs/cli.md) and the viewer it serves; `ctess serve` looks for the viewer and the shaders
