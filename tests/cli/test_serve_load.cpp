@@ -46,6 +46,27 @@ const Target mix[] = {
 // One request in 64 is the 5.7 MB pattern (about 0.1 s of the server's CPU, and the client's to read it).
 const Target huge = {"/api/pattern?mode=cp&max=256&domain=quad&factors=256,256,256,256", "", 200, false};
 
+// One request on an open keep-alive connection: reads the head, then exactly Content-Length bytes of body
+// (every answer here has one). Status 0 if the connection failed.
+Reply keep_alive_roundtrip(int s, const std::string& request) {
+    if (s < 0 || !send_all(s, request)) return {};
+    std::string in;
+    char buf[65536];
+    std::size_t head_end = std::string::npos;
+    std::size_t total = std::string::npos;
+    while (total == std::string::npos || in.size() < total) {
+        const ssize_t n = ::recv(s, buf, sizeof buf, 0);
+        if (n <= 0) return {};
+        in.append(buf, static_cast<std::size_t>(n));
+        if (head_end == std::string::npos && (head_end = in.find("\r\n\r\n")) != std::string::npos) {
+            const std::size_t at = in.find("Content-Length: ");
+            if (at == std::string::npos || at > head_end) return {};
+            total = head_end + 4 + std::strtoul(in.c_str() + at + 16, nullptr, 10);
+        }
+    }
+    return in.size() == total ? parse_reply(in) : Reply{};
+}
+
 double percentile(std::vector<double> v, double p) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
@@ -116,15 +137,28 @@ TEST_CASE("serve under load: 50 clients and 20 slow or idle ones for 10 s", "[cl
     for (int c = 0; c < 50; ++c)
         clients.emplace_back([&, c] {
             std::vector<double> small, large;
+            int kept = -1;
             for (std::size_t i = static_cast<std::size_t>(c); seconds_since(t0) < load_s; ++i) {
                 // No large request after 7 s, so that the last ones end near the 10 s mark.
                 const bool large_ok = seconds_since(t0) < 7.0;
                 const Target* pick = i % 64 == 63 ? &huge : &mix[i % std::size(mix)];
                 if (!pick->small && !large_ok) pick = &mix[0];
                 const Target& t = *pick;
+                const std::string headers = std::string(t.extra) + "Accept-Encoding: br, gzip\r\n";
                 const auto start = Clock::now();
-                const Reply r =
-                    http(port, get(t.path, port, std::string(t.extra) + "Accept-Encoding: br, gzip\r\n"));
+                // Seven requests in eight reuse the client's keep-alive connection (as a browser does, and so
+                // that a fast machine does not run out of loopback ports); the eighth opens its own.
+                Reply r;
+                if (i % 8 == 0) {
+                    r = http(port, get(t.path, port, headers));
+                } else {
+                    if (kept < 0) kept = connect_loopback(port);
+                    r = keep_alive_roundtrip(kept, get(t.path, port, headers, "keep-alive"));
+                    if (r.status == 0 || has(r.head, "Connection: close")) {
+                        ::close(kept);
+                        kept = -1;
+                    }
+                }
                 const double took = seconds_since(start);
                 if (r.status != t.status || r.body.empty() || has(r.head, "Content-Encoding: br")) {
                     if (failures++ < 5) std::printf("failed: %s -> %d\n", t.path, r.status);
@@ -132,6 +166,7 @@ TEST_CASE("serve under load: 50 clients and 20 slow or idle ones for 10 s", "[cl
                 bytes += static_cast<long>(r.body.size());
                 (t.small ? small : large).push_back(took);
             }
+            if (kept >= 0) ::close(kept);
             const std::lock_guard<std::mutex> lock(results_mutex);
             small_latency.insert(small_latency.end(), small.begin(), small.end());
             large_latency.insert(large_latency.end(), large.begin(), large.end());
