@@ -7,10 +7,12 @@
 #include "json_escape.hpp"
 #include "mesh.hpp"
 #include "mesh_formats.hpp"
+#include "serve_loop.hpp"
 
 #include <httplib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <exception>
 #include <string_view>
@@ -67,6 +69,51 @@ bool is_safe_path(std::string_view path) {
     return true;
 }
 
+// Compression is chosen by cost (docs/cli.md, "Viewer server"): httplib 0.11 picks br whenever the client
+// lists it, at brotli's default quality 11 (over 100x the CPU of the answer itself on a 5.7 MB pattern), and
+// gzip at zlib's default level. So br is never offered to httplib, gzip only when the client accepts it, and
+// nothing above kMaxCompressedBody: the server is on loopback, where bytes cost less than CPU.
+constexpr std::size_t kMaxCompressedBody = 256 * 1024;
+
+// Whether an Accept-Encoding value accepts gzip (a `gzip` or `*` coding without q=0; RFC 9110 §12.5.3).
+bool accepts_gzip(std::string_view value) {
+    bool star = false;
+    while (!value.empty()) {
+        const std::size_t comma = value.find(',');
+        std::string_view item = value.substr(0, comma);
+        value = comma == std::string_view::npos ? std::string_view() : value.substr(comma + 1);
+        const std::size_t semi = item.find(';');
+        std::string_view coding = item.substr(0, semi);
+        while (!coding.empty() && (coding.front() == ' ' || coding.front() == '\t')) coding.remove_prefix(1);
+        while (!coding.empty() && (coding.back() == ' ' || coding.back() == '\t')) coding.remove_suffix(1);
+        std::string lower(coding);
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (lower != "gzip" && lower != "*") continue;
+        std::string params(semi == std::string_view::npos ? std::string_view() : item.substr(semi + 1));
+        params.erase(std::remove(params.begin(), params.end(), ' '), params.end());
+        const std::size_t q = params.find("q=");
+        // A weight of all zeros refuses the coding; any other weight accepts it.
+        const bool accepted =
+            q == std::string::npos || params.substr(q + 2).find_first_not_of("0.") != std::string::npos;
+        if (lower == "gzip") return accepted; // an explicit gzip overrides `*`
+        star = accepted;
+    }
+    return star;
+}
+
+// httplib decides the coding from the request's Accept-Encoding when it writes the response; the request
+// object is httplib's own non-const one (the same hook the Range handling below uses).
+void set_accepted_coding(const httplib::Request& req, bool gzip) {
+    auto& headers = const_cast<httplib::Request&>(req).headers;
+    headers.erase("Accept-Encoding");
+    if (gzip) headers.emplace("Accept-Encoding", "gzip");
+}
+
+// Called with the response's body: above the bound it goes out uncompressed.
+void bound_compression(const httplib::Request& req, const httplib::Response& res) {
+    if (res.body.size() > kMaxCompressedBody) set_accepted_coding(req, false);
+}
+
 httplib::Server::HandlerResponse refuse(httplib::Response& res, int status, const char* why) {
     res.status = status;
     res.set_content(why, "text/plain");
@@ -81,12 +128,7 @@ int run_serve(int argc, char** argv) {
     const std::string viewer = args.get_or("viewer", CTESS_VIEWER_DIR);
     const std::string shaders = args.get_or("shaders", CTESS_SHADER_DIR);
 
-    httplib::Server server;
-    // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, which lets a second server share a busy port.
-    server.set_socket_options([](socket_t sock) {
-        int yes = 1;
-        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
-    });
+    BoundedServer server;
     if (!server.set_mount_point("/shaders", shaders))
         throw std::runtime_error("--shaders: cannot serve '" + shaders + "' (not a directory)");
     if (!server.set_mount_point("/", viewer))
@@ -98,6 +140,7 @@ int run_serve(int argc, char** argv) {
         // answer ignores it, and a file takes at most one range, so many overlapping ranges cannot multiply
         // the response. The request is httplib's own non-const object; clearing its parsed ranges is the only
         // hook 0.11 gives.
+        set_accepted_coding(req, accepts_gzip(req.get_header_value("Accept-Encoding")));
         auto& ranges = const_cast<httplib::Request&>(req).ranges;
         const bool many_ranges = ranges.size() > 1 && req.path.rfind("/api/", 0) != 0;
         if (many_ranges || req.path.rfind("/api/", 0) == 0 ||
@@ -112,6 +155,7 @@ int run_serve(int argc, char** argv) {
         if (many_ranges) return refuse(res, 416, "ctess serve: at most one byte range\n");
         return httplib::Server::HandlerResponse::Unhandled;
     });
+    server.set_file_request_handler(bound_compression);
     server.Get("/api/pattern", [](const httplib::Request& req, httplib::Response& res) {
         try {
             res.set_content(pattern_json(req), "application/json");
@@ -120,17 +164,16 @@ int run_serve(int argc, char** argv) {
             res.set_content(fmt::format("{{\"error\": \"{}\"}}\n", json_escape(e.what())),
                             "application/json");
         }
+        bound_compression(req, res);
     });
 
     const char* host = "127.0.0.1"; // loopback only: the viewer is a local tool
-    const int bound = port == 0
-                          ? server.bind_to_any_port(host)
-                          : (server.bind_to_port(host, static_cast<int>(port)) ? static_cast<int>(port) : -1);
+    const int bound = server.bind_and_listen(host, port);
     if (bound < 0) throw std::runtime_error(fmt::format("cannot listen on {}:{}", host, port));
     fmt::print("ctess serve: http://{}:{}/ (viewer {}, shaders {}; Ctrl-C stops)\n", host, bound, viewer,
                shaders);
     std::fflush(stdout);
-    return server.listen_after_bind() ? 0 : 1;
+    return server.serve_forever() ? 0 : 1;
 }
 
 } // namespace ctess::cli

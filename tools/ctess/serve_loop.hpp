@@ -1,0 +1,58 @@
+// The connection loop under `ctess serve` (docs/cli.md, "Viewer server"): one poll() thread reads every
+// connection's request until it is whole, and only whole requests reach the worker threads, so a slow or idle
+// client holds a buffer, never a worker. httplib (0.11.4) still parses, routes and writes each request,
+// through its protected Server::process_request; what it could not bound (a byte every few seconds keeps its
+// read timeout alive, 8 workers, backlog 5, pipelined requests dropped) is done here.
+#pragma once
+
+#include <httplib.h>
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace ctess::cli {
+
+// Every bound the loop enforces; docs/cli.md lists them with the figures they give.
+struct ServeLimits {
+    std::size_t max_connections = 512;    // open at once; a new one closes the longest-waiting non-busy one
+    std::size_t max_request_head = 16384; // request line and headers, bytes (431 beyond)
+    std::size_t max_request_body = 65536; // Content-Length bytes (413 beyond; chunked bodies get 501)
+    std::chrono::milliseconds request_deadline{10000}; // a whole request must arrive within this (408/close)
+    std::chrono::milliseconds write_deadline{10000};   // the client must take a whole response within this
+    unsigned file_workers = 4;                         // static files and refusals
+    unsigned api_workers = 3;     // /api/ answers above small factors, so they cannot queue ahead of files
+    std::size_t max_queued = 256; // whole requests waiting for a worker, per lane (503 beyond)
+    std::size_t max_requests_per_connection = 1000;
+    int listen_backlog = 1024; // the kernel caps it at net.core.somaxconn
+};
+
+// An httplib::Server whose routes are set as usual, served by the loop above instead of httplib's listen().
+class BoundedServer : public httplib::Server {
+  public:
+    // The Keep-Alive header httplib writes states the loop's bounds.
+    explicit BoundedServer(ServeLimits limits = {}) : limits_(limits) {
+        set_keep_alive_max_count(limits.max_requests_per_connection);
+        set_keep_alive_timeout(
+            std::chrono::duration_cast<std::chrono::seconds>(limits.request_deadline).count());
+    }
+
+    // Binds and listens on host:port (port 0: a free port); returns the bound port, or -1.
+    int bind_and_listen(const std::string& host, unsigned port);
+
+    // Serves until the process is signalled; returns false only if the loop itself fails.
+    bool serve_forever();
+
+    const ServeLimits& limits() const { return limits_; }
+
+  private:
+    friend struct ServeWorker;
+    // One whole request, answered by httplib on this thread; returns whether the connection stays open.
+    bool answer(int fd, const std::string& request, bool last, const std::string& peer_ip, int peer_port);
+
+    ServeLimits limits_;
+    int listen_fd_ = -1;
+    int port_ = 0;
+};
+
+} // namespace ctess::cli
