@@ -15,6 +15,7 @@
 #include <cctype>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string_view>
 
 #include <fmt/core.h>
@@ -41,6 +42,18 @@ std::string pattern_json(const httplib::Request& req) {
 
 // A loopback name with an optional port: `127.0.0.1`, `localhost` or `[::1]`. Any other Host (or Origin) is
 // refused, so a DNS-rebound page on another name cannot read the server's answers.
+// An installed ctess (cmake --install) finds the viewer and the shaders in <prefix>/share/ctess/, beside its own
+// bin/; a ctess run from its build tree uses the source's viewer/ and the build's shaders/.
+std::string installed_or_build_dir(const std::string& name, const std::string& build_dir) {
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "ctess" / name;
+        if (std::filesystem::is_directory(installed, ec)) return installed.string();
+    }
+    return build_dir;
+}
+
 bool is_loopback_authority(std::string_view a) {
     for (const std::string_view name : {"127.0.0.1", "localhost", "[::1]"}) {
         if (a.substr(0, name.size()) != name) continue;
@@ -125,8 +138,8 @@ httplib::Server::HandlerResponse refuse(httplib::Response& res, int status, cons
 int run_serve(int argc, char** argv) {
     const Args args(argc, argv, 2, {"port", "viewer", "shaders"});
     const unsigned port = parse_unsigned(args.get_or("port", "8765"), "--port", 0, 65535);
-    const std::string viewer = args.get_or("viewer", CTESS_VIEWER_DIR);
-    const std::string shaders = args.get_or("shaders", CTESS_SHADER_DIR);
+    const std::string viewer = args.get_or("viewer", installed_or_build_dir("viewer", CTESS_VIEWER_DIR));
+    const std::string shaders = args.get_or("shaders", installed_or_build_dir("shaders", CTESS_SHADER_DIR));
 
     BoundedServer server;
     if (!server.set_mount_point("/shaders", shaders))
