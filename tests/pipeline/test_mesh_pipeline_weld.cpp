@@ -200,13 +200,6 @@ struct KeyHash {
         return static_cast<std::size_t>(h);
     }
 };
-struct PairHash {
-    std::size_t operator()(const std::pair<std::uint32_t, std::uint32_t>& e) const {
-        return static_cast<std::size_t>((std::uint64_t{e.first} << 32 | e.second) * 0x9E3779B97F4A7C15ull >>
-                                        16);
-    }
-};
-using EdgeCounts = std::unordered_map<std::pair<std::uint32_t, std::uint32_t>, unsigned, PairHash>;
 
 // The independent weld: one id per distinct key, in order of first appearance.
 std::vector<std::uint32_t> weld_ids(const std::vector<rt::TessVertex>& vertices, bool attributes) {
@@ -234,17 +227,23 @@ std::vector<std::array<Key, 3>> key_triangles(const Output& o) {
     return out;
 }
 
-// Directed edges of the triangles under an id map; triangles with a repeated id are left out.
+// Directed edges (a << 32 | b) of the triangles under an id map, sorted; triangles with a repeated id are
+// left out.
+using EdgeCounts = std::vector<std::uint64_t>;
 EdgeCounts directed_edges(const std::vector<std::uint32_t>& indices, const std::vector<std::uint32_t>& id) {
     EdgeCounts edges;
+    edges.reserve(indices.size());
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-        const std::uint32_t a = id[indices[t]], b = id[indices[t + 1]], c = id[indices[t + 2]];
+        const std::uint64_t a = id[indices[t]], b = id[indices[t + 1]], c = id[indices[t + 2]];
         if (a == b || b == c || a == c) continue;
-        ++edges[{a, b}];
-        ++edges[{b, c}];
-        ++edges[{c, a}];
+        edges.insert(edges.end(), {a << 32 | b, b << 32 | c, c << 32 | a});
     }
+    std::sort(edges.begin(), edges.end());
     return edges;
+}
+
+std::uint64_t reversed(std::uint64_t e) {
+    return e >> 32 | e << 32;
 }
 
 std::vector<std::uint32_t> identity(std::size_t n) {
@@ -255,19 +254,20 @@ std::vector<std::uint32_t> identity(std::size_t n) {
 
 // Closed and 2-manifold, consistently oriented: every directed edge once, and its reverse once.
 bool closed_manifold(const EdgeCounts& edges) {
-    for (const auto& [e, n] : edges) {
-        if (n != 1) return false;
-        const auto it = edges.find({e.second, e.first});
-        if (it == edges.end() || it->second != 1) return false;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        if (i > 0 && edges[i] == edges[i - 1]) return false;
+        if (!std::binary_search(edges.begin(), edges.end(), reversed(edges[i]))) return false;
     }
     return true;
 }
 
 // Boundary edges (directed edges without a reverse); false when an edge is used more than once.
 bool boundary(const EdgeCounts& edges, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
-    for (const auto& [e, n] : edges) {
-        if (n != 1) return false;
-        if (!edges.count({e.second, e.first})) out.push_back(e);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        if (i > 0 && edges[i] == edges[i - 1]) return false;
+        if (!std::binary_search(edges.begin(), edges.end(), reversed(edges[i])))
+            out.emplace_back(static_cast<std::uint32_t>(edges[i] >> 32),
+                             static_cast<std::uint32_t>(edges[i]));
     }
     return true;
 }
@@ -661,9 +661,9 @@ TEST_CASE("figures: longest output edge, zero-area fraction, weld ratio", "[.][f
             }
             const double n = static_cast<double>(u.indices.size() / 3);
             std::printf(
-                "  %s %s: %zu triangles, %.2f%% with coincident corners, %.2f%% zero area; welded %zu "
+                "  %s %s: %zu triangles, %zu (%.2f%%) with coincident corners, %.2f%% zero area; welded %zu "
                 "triangles; vertices %zu unwelded / %zu welded = %.2f\n",
-                name, m == &tris ? "triangle torus" : "quad torus", u.indices.size() / 3,
+                name, m == &tris ? "triangle torus" : "quad torus", u.indices.size() / 3, coincident,
                 100.0 * static_cast<double>(coincident) / n, 100.0 * static_cast<double>(zero_area) / n,
                 w.indices.size() / 3, u.vertices.size(), w.vertices.size(),
                 static_cast<double>(u.vertices.size()) / static_cast<double>(w.vertices.size()));

@@ -15,7 +15,7 @@
 // contraction and fast-math off, so that the counts and every shared edge's points are the same whatever
 // the caller's flags (docs/api.md, "Crack-free evaluation").
 //
-//   std::vector<PatchRecord> patches(mesh.triangle_count);
+//   std::vector<PatchRecord> patches(mesh.patch_count());
 //   PipelineTotals totals;
 //   if (setup_patches(cp_tables_64, mesh, options, patches, totals) != PipelineStatus::ok) ...
 //   std::vector<TessVertex> vertices(totals.vertices);
