@@ -407,6 +407,9 @@ TEST_CASE("factor modes (docs/algorithm.md §6.1): constant, edge length / L and
     CHECK(std::isinf(rt::setup_patch(rt::cp_tables_64, mesh, 0, o).factor[0]));
     o.dice.target_edge_length = std::nanf("");
     CHECK(std::isnan(rt::setup_patch(rt::cp_tables_64, mesh, 0, o).factor[0]));
+    // A mode outside the enum gives NaN (factor 1), never UB.
+    o.dice.mode = static_cast<rt::FactorMode>(9);
+    CHECK(std::isnan(rt::setup_patch(rt::cp_tables_64, mesh, 0, o).factor[0]));
     // The camera mode is the default and keeps its formula: 3 * 1000 / 2 / distance 10 at the midpoint.
     rt::PipelineOptions c;
     c.dice.eye = {1.5f, 0.0f, 10.0f};

@@ -255,10 +255,11 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& unifor
 // input vertex v (its corner value: position, normalised normal, uv), then the points inside each mesh edge
 // (edges keyed by their two vertex indices, lower first, sorted; numbered by prefix sums over that list),
 // then each patch's interior points (prefix sums over the patches). Edge points at one parameter are one
-// vertex even where the line has coincident points (a zero-length segment); interior slots of a pattern stay
-// one vertex each. A position reached by different input indices (a uv or normal seam) keeps one vertex per
-// index, as the input does. Vertices are TessVertex; u and v are the patch's base weights (a quad's unit
-// square) for interior points and 0 for corners and edge points, which belong to no one patch.
+// vertex even where the line has coincident points (a zero-length segment), and interior slots at one exact
+// domain point (a quad's diagonal, points born on a neighbour) are one vertex of the patch. A position
+// reached by different input indices (a uv or normal seam) keeps one vertex per index, as the input does.
+// Vertices are TessVertex; u and v are the patch's base weights (a quad's unit square) for interior points
+// and 0 for corners and edge points, which belong to no one patch.
 //
 //   std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
 //   std::vector<rt::WeldedPatch> patches(mesh.patch_count());
