@@ -5,15 +5,24 @@
 // and its base points.
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
 #include <concepts>
 #include <cstdint>
 #include <span>
+#include <type_traits>
+#include <vector>
 
 #include <ctess/core/patch_concept.hpp>
+#include <ctess/cp/quad.hpp>
 
 namespace ctess::rt {
 
 namespace {
+
+constexpr std::uint32_t one = cp::fixed_one;
 
 Vec3 mesh_position(const MeshView& mesh, std::uint32_t v) {
     const float* p = mesh.vertices + std::size_t{v} * mesh_vertex_floats;
@@ -30,24 +39,29 @@ bool base_triangle(const MeshView& mesh, std::uint32_t t, std::uint32_t (&w)[3])
     return w[0] < mesh.vertex_count && w[1] < mesh.vertex_count && w[2] < mesh.vertex_count;
 }
 
-// The unclamped factors of base edges E0, E1, E2 (endpoints in mesh-index order, so neighbours agree) and the
-// edges' squared lengths.
-void base_edges(const MeshView& mesh, const std::uint32_t (&w)[3], const DiceOptions& dice,
-                float (&factor)[3], float (&length2)[3]) {
-    const float scale = dice.factor_scale();
-    for (unsigned k = 0; k < 3; ++k) {
-        const std::uint32_t i = w[k], j = w[(k + 1) % 3];
-        const Vec3 a = mesh_position(mesh, i < j ? i : j);
-        const Vec3 b = mesh_position(mesh, i < j ? j : i);
-        factor[k] = edge_tess_factor(a, b, dice.eye, scale);
-        const Vec3 d = b - a;
-        length2[k] = dot(d, d);
+bool base_quad(const MeshView& mesh, std::uint32_t q, std::uint32_t (&w)[4]) {
+    bool inside = true;
+    for (unsigned k = 0; k < 4; ++k) {
+        w[k] = mesh.quad_indices[std::size_t{q} * 4 + k];
+        inside = inside && w[k] < mesh.vertex_count;
     }
+    return inside;
+}
+
+// The unclamped factor of mesh edge (i, j) and its squared length, endpoints in mesh-index order so that
+// every face sharing the edge computes the same bits (tess_factor.hpp).
+float mesh_edge_factor(const MeshView& mesh, std::uint32_t i, std::uint32_t j, const DiceOptions& dice) {
+    return edge_factor(mesh_position(mesh, i < j ? i : j), mesh_position(mesh, i < j ? j : i), dice);
+}
+
+float mesh_edge_length2(const MeshView& mesh, std::uint32_t i, std::uint32_t j) {
+    const Vec3 d = mesh_position(mesh, i < j ? j : i) - mesh_position(mesh, i < j ? i : j);
+    return dot(d, d);
 }
 
 // The output vertex of exact base weights (w1, w2) = (base.u, base.v), units of cp::fixed_one.
 TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, const SurfaceOptions& surface) {
-    const std::uint32_t w[3] = {cp::fixed_one - base.u - base.v, base.u, base.v};
+    const std::uint32_t w[3] = {one - base.u - base.v, base.u, base.v};
     const SurfacePoint s = evaluate_surface(corner, w, surface);
     return {base.u,
             base.v,
@@ -56,27 +70,77 @@ TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, co
             {s.uv[0], s.uv[1]}};
 }
 
+// The output vertex of quad point (s, t) of the unit square (docs/algorithm.md §7.3): a point on a quad edge
+// goes through evaluate_surface's edge rule on that edge's two corners (the very operations a triangle on
+// the other side runs), an inner point through evaluate_quad_surface (bilinear, flat).
+TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const SurfaceOptions& surface) {
+    const std::uint32_t s = square.u, t = square.v;
+    const bool on_edge[4] = {t == 0, s == one, t == one, s == 0};
+    const std::uint32_t r[4] = {s, t, one - s, one - t}; // measured from q_k along edge k
+    SurfacePoint p;
+    bool done = false;
+    for (unsigned k = 0; k < 4 && !done; ++k) {
+        if (!on_edge[k]) continue;
+        const SurfaceCorner tri[3] = {q[k], q[(k + 1) % 4], q[(k + 2) % 4]};
+        const std::uint32_t w[3] = {one - r[k], r[k], 0};
+        p = evaluate_surface(tri, w, surface);
+        done = true;
+    }
+    if (!done) p = evaluate_quad_surface(q, s, t);
+    return {s,
+            t,
+            {p.position.x, p.position.y, p.position.z},
+            {p.normal.x, p.normal.y, p.normal.z},
+            {p.uv[0], p.uv[1]}};
+}
+
+// Distinct interior parameters of one edge's line, ascending, units of cp::fixed_one. The set is
+// mirror-symmetric (§1.2, §3.2), so it is the same measured from either end.
+struct EdgeParams {
+    std::array<std::uint32_t, cp::max_segments + 1> value{};
+    unsigned count = 0;
+
+    void finish() {
+        std::sort(value.begin(), value.begin() + count);
+        count = static_cast<unsigned>(std::unique(value.begin(), value.begin() + count) - value.begin());
+    }
+    // The rank of parameter x, or count when it is not a point of the line.
+    unsigned rank(std::uint32_t x) const {
+        const auto* end = value.data() + count;
+        const auto* it = std::lower_bound(value.data(), end, x);
+        return it != end && *it == x ? static_cast<unsigned>(it - value.data()) : count;
+    }
+};
+
 // The CP family (docs/algorithm.md §2): rotation by the smallest edge, CP line states, the setup block.
 struct CpFamily {
     using patch_type = CpPatch;
     const CpTableSet& tables;
 
+    // Pattern factors f (rotation already applied) into line states.
+    void set_lines(PatchRecord& rec, const float (&f)[3]) const {
+        for (unsigned k = 0; k < 3; ++k) {
+            const cp::LineState s =
+                cp::clamp_line_state(cp::line_state(f[k], tables.max_factor), tables.max_factor);
+            rec.token[k] = s.token;
+            rec.t16[k] = s.t16;
+        }
+    }
     void setup(PatchRecord& rec, const float (&length2)[3]) const {
         const cp::Rotation rot = cp::smallest_edge_rotation(length2[0], length2[1], length2[2]);
         rec.rotation = rot.shift;
-        cp::LineState s[3];
-        for (unsigned k = 0; k < 3; ++k) {
-            s[k] = cp::clamp_line_state(cp::line_state(rec.factor[(k + rot.shift) % 3], tables.max_factor),
-                                        tables.max_factor);
-            rec.token[k] = s[k].token;
-            rec.t16[k] = s[k].t16;
-        }
+        const float f[3] = {rec.factor[rot.shift % 3], rec.factor[(rot.shift + 1) % 3],
+                            rec.factor[(rot.shift + 2) % 3]};
+        set_lines(rec, f);
         // One CpPatchSetup gives both the counts and the block.
-        const PatchSetupBlock block = patch_setup_block(tables, s[0], s[1], s[2]);
+        const PatchSetupBlock block = patch_setup_block(tables, cp::LineState{rec.token[0], rec.t16[0]},
+                                                        cp::LineState{rec.token[1], rec.t16[1]},
+                                                        cp::LineState{rec.token[2], rec.t16[2]});
         rec.vertex_count = block.vertices;
         rec.triangle_count = block.triangles;
         for (unsigned k = 0; k < setup_word::words; ++k) rec.setup[k] = block.word[k];
     }
+    bool clamped(float f) const { return f > static_cast<float>(tables.max_factor); }
     // The counts a record must have (none for a culled patch); false when setup() cannot have written it.
     bool record_counts(const PatchRecord& rec, bool culled, Counts& counts) const {
         if (rec.rotation > 2) return false;
@@ -84,8 +148,27 @@ struct CpFamily {
         return true;
     }
     patch_type patch(const PatchRecord& rec) const { return patch_of(tables, rec); }
+    patch_type welded_patch(const PatchRecord& rec) const {
+        return CpPatch(tables, cp::LineState{rec.token[0], rec.t16[0]},
+                       cp::LineState{rec.token[1], rec.t16[1]}, cp::LineState{rec.token[2], rec.t16[2]},
+                       PatchOptions{Layout::shared, Winding::ccw});
+    }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord& rec, std::uint32_t i) {
         return cp::to_base_point(cp::Rotation{static_cast<std::uint8_t>(rec.rotation)}, patch.vertex(i));
+    }
+    void params_of_state(cp::LineState state, EdgeParams& out) const {
+        std::array<std::uint32_t, cp::max_segments + 1> points{};
+        const unsigned n = cp::edge_points(cp::clamp_line_state(state, tables.max_factor), points.data());
+        out.count = 0;
+        for (unsigned i = 0; i < n; ++i)
+            if (points[i] != 0 && points[i] != one) out.value[out.count++] = points[i];
+        out.finish();
+    }
+    void edge_params(float f, EdgeParams& out) const {
+        params_of_state(cp::line_state(f, tables.max_factor), out);
+    }
+    void record_edge_params(const PatchRecord& rec, unsigned k, EdgeParams& out) const {
+        params_of_state(cp::LineState{rec.token[k], rec.t16[k]}, out);
     }
 };
 
@@ -94,14 +177,18 @@ struct UniformFamily {
     using patch_type = UniformPatch;
     const UniformTableSet& tables;
 
+    void set_lines(PatchRecord& rec, const float (&f)[3]) const {
+        for (unsigned k = 0; k < 3; ++k) rec.set_uniform_factor(k, uniform_factor(f[k], tables.max_factor));
+    }
     void setup(PatchRecord& rec, const float (&)[3]) const {
-        for (unsigned k = 0; k < 3; ++k)
-            rec.set_uniform_factor(k, uniform_factor(rec.factor[k], tables.max_factor));
+        set_lines(rec, rec.factor);
         const UniformPatch patch = uniform_patch_of(tables, rec);
         rec.vertex_count = patch.counts().vertices;
         rec.triangle_count = patch.counts().triangles;
         uniform_setup_words(rec.setup, patch);
     }
+    // Rounds above N: with one more allowed, the rounded factor would exceed N.
+    bool clamped(float f) const { return uniform_factor(f, tables.max_factor + 1) > tables.max_factor; }
     bool record_counts(const PatchRecord& rec, bool culled, Counts& counts) const {
         if (culled) return true;
         if (rec.rotation != 0) return false;
@@ -112,8 +199,21 @@ struct UniformFamily {
         return true;
     }
     patch_type patch(const PatchRecord& rec) const { return uniform_patch_of(tables, rec); }
+    patch_type welded_patch(const PatchRecord& rec) const { return uniform_patch_of(tables, rec); }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
         return uniform_base_point(patch, i);
+    }
+    void params_of_factor(std::uint32_t n, EdgeParams& out) const {
+        out.count = 0;
+        for (std::uint32_t i = 1; i < n; ++i)
+            out.value[out.count++] = uniform_weight_to_fixed(uniform::edge_parameter(i, n));
+        out.finish();
+    }
+    void edge_params(float f, EdgeParams& out) const {
+        params_of_factor(uniform_factor(f, tables.max_factor), out);
+    }
+    void record_edge_params(const PatchRecord& rec, unsigned k, EdgeParams& out) const {
+        params_of_factor(rec.uniform_factor(k), out);
     }
 };
 
@@ -121,60 +221,186 @@ struct UniformFamily {
 template <class F>
 concept PipelineFamily = IndexedTessPatch<typename F::patch_type> &&
     requires(const F& f, PatchRecord& rec, const PatchRecord& crec, const float (&l)[3], Counts& counts,
-             const typename F::patch_type& p) {
+             const typename F::patch_type& p, EdgeParams& params) {
     f.setup(rec, l);
+    f.set_lines(rec, l);
+    { f.clamped(0.0f) } -> std::same_as<bool>;
     { f.record_counts(crec, true, counts) } -> std::same_as<bool>;
     { f.patch(crec) } -> std::same_as<typename F::patch_type>;
+    { f.welded_patch(crec) } -> std::same_as<typename F::patch_type>;
     { f.base_point(p, crec, 0u) } -> std::same_as<DomainPoint>;
+    f.edge_params(0.0f, params);
+    f.record_edge_params(crec, 0u, params);
 };
 
+// Half h of a quad record (A = 0, B = 1) as a triangle record with rotation 0.
+PatchRecord half_record(const PatchRecord& rec, unsigned h) {
+    PatchRecord half;
+    for (unsigned k = 0; k < 3; ++k) {
+        half.token[k] = h == 0 ? rec.token[k] : rec.setup[quad_setup_word::b_token + k];
+        half.t16[k] = h == 0 ? rec.t16[k] : rec.setup[quad_setup_word::b_t16 + k];
+    }
+    return half;
+}
+
+// The quad rule (docs/algorithm.md §7.2), from the quad's squared edge lengths (a per-quad constant, so the
+// choice never pops). CP: q0q1 is the longer edge of the opposite pair with the larger summed length: the
+// diagonal takes q0q1's factor and A's and B's columns run across the pair, so the long direction gets the
+// dense lines. Uniform: the shorter diagonal, whose factor is its own. Ties and NaN keep the labelled order.
+unsigned cp_quad_rotation(const float (&length2)[4], QuadRule rule) {
+    if (rule == QuadRule::as_labelled) return 0;
+    float len[4];
+    for (unsigned k = 0; k < 4; ++k) len[k] = std::sqrt(length2[k]);
+    const unsigned first = len[1] + len[3] > len[0] + len[2] ? 1u : 0u;
+    return len[first + 2] > len[first] ? first + 2 : first;
+}
+
+unsigned uniform_quad_rotation(const MeshView& mesh, const std::uint32_t (&w)[4], QuadRule rule) {
+    if (rule == QuadRule::as_labelled) return 0;
+    // Rotation 0 splits along q1q3, rotation 1 along q2q0 (= input q0q2).
+    return mesh_edge_length2(mesh, w[0], w[2]) < mesh_edge_length2(mesh, w[1], w[3]) ? 1u : 0u;
+}
+
 template <PipelineFamily F>
-PatchRecord setup_record(const F& family, const MeshView& mesh, std::uint32_t t,
-                         const PipelineOptions& options) {
+PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32_t q,
+                              const PipelineOptions& options, std::uint32_t& clamped) {
+    PatchRecord rec;
+    rec.kind = patch_kind_quad;
+    std::uint32_t w[4];
+    if (!base_quad(mesh, q, w)) return rec;
+    float f[4], length2[4];
+    for (unsigned k = 0; k < 4; ++k) {
+        f[k] = mesh_edge_factor(mesh, w[k], w[(k + 1) % 4], options.dice);
+        length2[k] = mesh_edge_length2(mesh, w[k], w[(k + 1) % 4]);
+        clamped += family.clamped(f[k]) ? 1u : 0u;
+    }
+    for (unsigned k = 0; k < 3; ++k) rec.factor[k] = f[k];
+    rec.setup[quad_setup_word::q3_factor] = std::bit_cast<std::uint32_t>(f[3]);
+    unsigned r;
+    float diagonal;
+    if constexpr (std::is_same_v<F, UniformFamily>) {
+        r = uniform_quad_rotation(mesh, w, options.quad_rule);
+        diagonal = mesh_edge_factor(mesh, w[(1 + r) % 4], w[(3 + r) % 4], options.dice);
+        clamped += family.clamped(diagonal) ? 1u : 0u;
+    } else {
+        r = cp_quad_rotation(length2, options.quad_rule);
+        diagonal = f[r]; // A's e0, edge q0q1 (§2.12)
+    }
+    rec.rotation = r;
+    const float fq[4] = {f[r], f[(r + 1) % 4], f[(r + 2) % 4], f[(r + 3) % 4]};
+    // A = (q0, q1, q3): e0 = q0q1, e1 = the diagonal, e2 = q0q3; B = (q2, q3, q1): e0 = q2q3, e2 = q2q1.
+    const float fa[3] = {fq[0], diagonal, fq[3]};
+    const float fb[3] = {fq[2], diagonal, fq[1]};
+    PatchRecord a, b;
+    family.set_lines(a, fa);
+    family.set_lines(b, fb);
+    for (unsigned k = 0; k < 3; ++k) {
+        rec.token[k] = a.token[k];
+        rec.t16[k] = a.t16[k];
+        rec.setup[quad_setup_word::b_token + k] = b.token[k];
+        rec.setup[quad_setup_word::b_t16 + k] = b.t16[k];
+    }
+    const Counts ca = family.patch(a).counts(), cb = family.patch(b).counts();
+    rec.vertex_count = ca.vertices + cb.vertices;
+    rec.triangle_count = ca.triangles + cb.triangles;
+    return rec;
+}
+
+// Patch p's record: a base triangle (p < triangle_count) or a quad.
+template <PipelineFamily F>
+PatchRecord setup_record(const F& family, const MeshView& mesh, std::uint32_t p,
+                         const PipelineOptions& options, std::uint32_t& clamped) {
+    if (p >= mesh.triangle_count)
+        return setup_quad_record(family, mesh, p - mesh.triangle_count, options, clamped);
     PatchRecord rec;
     std::uint32_t w[3];
-    if (!base_triangle(mesh, t, w)) return rec;
+    if (!base_triangle(mesh, p, w)) return rec;
     float length2[3];
-    base_edges(mesh, w, options.dice, rec.factor, length2);
+    for (unsigned k = 0; k < 3; ++k) {
+        rec.factor[k] = mesh_edge_factor(mesh, w[k], w[(k + 1) % 3], options.dice);
+        length2[k] = mesh_edge_length2(mesh, w[k], w[(k + 1) % 3]);
+        clamped += family.clamped(rec.factor[k]) ? 1u : 0u;
+    }
     family.setup(rec, length2);
     return rec;
 }
 
-PipelineStatus check_pattern(const UniformTableSet* uniform, const PipelineOptions& options) {
+bool patch_culled(const MeshView& mesh, std::uint32_t p) {
+    if (p < mesh.triangle_count) {
+        std::uint32_t w[3];
+        return !base_triangle(mesh, p, w);
+    }
+    std::uint32_t w[4];
+    return !base_quad(mesh, p - mesh.triangle_count, w);
+}
+
+// The counts a record must have: a triangle's as the family checks them, a quad's as its two halves'.
+template <PipelineFamily F>
+bool record_counts(const F& family, const MeshView& mesh, std::uint32_t p, const PatchRecord& rec,
+                   Counts& counts) {
+    const bool culled = patch_culled(mesh, p);
+    counts = {};
+    if (p < mesh.triangle_count)
+        return rec.kind == patch_kind_triangle && family.record_counts(rec, culled, counts);
+    if (rec.kind != patch_kind_quad || rec.rotation > 3) return false;
+    if (culled) return true;
+    for (unsigned h = 0; h < 2; ++h) {
+        Counts c;
+        if (!family.record_counts(half_record(rec, h), false, c)) return false;
+        counts.vertices += c.vertices;
+        counts.triangles += c.triangles;
+    }
+    return true;
+}
+
+PipelineStatus check_options(const UniformTableSet* uniform, const MeshView& mesh,
+                             const PipelineOptions& options) {
     if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
         return PipelineStatus::bad_option;
+    if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
+        return PipelineStatus::bad_option;
     if (options.pattern == Pattern::uniform && uniform == nullptr) return PipelineStatus::no_uniform_tables;
+    if (mesh.quad_count > 0 && options.surface.surface != Surface::flat)
+        return PipelineStatus::quad_surface_not_flat;
     return PipelineStatus::ok;
 }
 
 template <PipelineFamily F>
 PipelineStatus setup_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
                          std::span<PatchRecord> patches, PipelineTotals& totals) {
-    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
+    if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), 0, 0); s != PipelineStatus::ok)
         return s;
     std::uint64_t vertices = 0, triangles = 0;
-    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        PatchRecord rec = setup_record(family, mesh, t, options);
+    std::uint32_t clamped = 0;
+    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
+    for (std::uint32_t p = 0; p < count; ++p) {
+        PatchRecord rec = setup_record(family, mesh, p, options, clamped);
         rec.first_vertex = static_cast<std::uint32_t>(vertices);
         rec.first_triangle = static_cast<std::uint32_t>(triangles);
         vertices += rec.vertex_count;
         triangles += rec.triangle_count;
         if (const PipelineStatus s = check_pipeline_size(0, vertices, triangles); s != PipelineStatus::ok)
             return s;
-        patches[t] = rec;
+        patches[p] = rec;
     }
-    totals = {static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(triangles)};
+    totals = {static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(triangles), clamped};
     return PipelineStatus::ok;
 }
 
 PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet* uniform, const MeshView& mesh,
                              const PipelineOptions& options, std::span<PatchRecord> patches,
                              PipelineTotals& totals) {
-    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_pattern(uniform, options); s != PipelineStatus::ok) return s;
+    if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
     return options.pattern == Pattern::uniform
                ? setup_all(UniformFamily{*uniform}, mesh, options, patches, totals)
                : setup_all(CpFamily{tables}, mesh, options, patches, totals);
+}
+
+// The corners of a quad in pattern order (q_k = mesh corner (k + rotation) % 4).
+void quad_corners(const MeshView& mesh, const std::uint32_t (&w)[4], std::uint32_t rotation,
+                  SurfaceCorner (&q)[4]) {
+    for (unsigned k = 0; k < 4; ++k) q[k] = mesh_corner(mesh, w[(k + rotation) % 4]);
 }
 
 // Checks every record and the spans, then writes every patch's vertices and triangles.
@@ -182,15 +408,14 @@ template <PipelineFamily F>
 PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
                         std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
                         std::span<std::uint32_t> indices) {
-    if (const PipelineStatus s = check_pipeline_size(mesh.triangle_count, 0, 0); s != PipelineStatus::ok)
+    if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), 0, 0); s != PipelineStatus::ok)
         return s;
+    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
     std::uint64_t vertex_sum = 0, triangle_sum = 0;
-    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const PatchRecord& rec = patches[t];
-        std::uint32_t w[3];
-        const bool culled = !base_triangle(mesh, t, w);
+    for (std::uint32_t p = 0; p < count; ++p) {
+        const PatchRecord& rec = patches[p];
         Counts counts;
-        if (!family.record_counts(rec, culled, counts) || rec.first_vertex != vertex_sum ||
+        if (!record_counts(family, mesh, p, rec, counts) || rec.first_vertex != vertex_sum ||
             rec.first_triangle != triangle_sum || rec.vertex_count != counts.vertices ||
             rec.triangle_count != counts.triangles)
             return PipelineStatus::bad_patch_record;
@@ -202,20 +427,44 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
     }
     if (vertex_sum > vertices.size() || 3 * triangle_sum > indices.size())
         return PipelineStatus::span_too_small;
-    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const PatchRecord& rec = patches[t];
-        std::uint32_t w[3];
-        if (!base_triangle(mesh, t, w) || rec.vertex_count == 0) continue;
-        const SurfaceCorner corner[3] = {mesh_corner(mesh, w[0]), mesh_corner(mesh, w[1]),
-                                         mesh_corner(mesh, w[2])};
+    for (std::uint32_t p = 0; p < count; ++p) {
+        const PatchRecord& rec = patches[p];
+        if (rec.vertex_count == 0) continue;
         std::uint32_t* out = indices.data() + 3 * std::size_t{rec.first_triangle};
-        const typename F::patch_type patch = family.patch(rec);
-        for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
-            vertices[rec.first_vertex + i] =
-                surface_vertex(corner, family.base_point(patch, rec, i), options.surface);
-        for (std::uint32_t p = 0; p < rec.triangle_count; ++p) {
-            const std::array<std::uint32_t, 3> tri = patch.triangle(p);
-            for (unsigned k = 0; k < 3; ++k) out[3 * p + k] = rec.first_vertex + tri[k];
+        if (p < mesh.triangle_count) {
+            std::uint32_t w[3];
+            base_triangle(mesh, p, w);
+            const SurfaceCorner corner[3] = {mesh_corner(mesh, w[0]), mesh_corner(mesh, w[1]),
+                                             mesh_corner(mesh, w[2])};
+            const typename F::patch_type patch = family.patch(rec);
+            for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
+                vertices[rec.first_vertex + i] =
+                    surface_vertex(corner, family.base_point(patch, rec, i), options.surface);
+            for (std::uint32_t t = 0; t < rec.triangle_count; ++t) {
+                const std::array<std::uint32_t, 3> tri = patch.triangle(t);
+                for (unsigned k = 0; k < 3; ++k) out[3 * t + k] = rec.first_vertex + tri[k];
+            }
+            continue;
+        }
+        // A quad: A's vertices and triangles, then B's, each half's points mapped into the unit square.
+        std::uint32_t w[4];
+        base_quad(mesh, p - mesh.triangle_count, w);
+        SurfaceCorner q[4];
+        quad_corners(mesh, w, rec.rotation, q);
+        std::uint32_t first = rec.first_vertex;
+        for (unsigned h = 0; h < 2; ++h) {
+            const PatchRecord half = half_record(rec, h);
+            const typename F::patch_type patch = family.patch(half);
+            const Counts c = patch.counts();
+            for (std::uint32_t i = 0; i < c.vertices; ++i)
+                vertices[first + i] =
+                    quad_vertex(q, cp::quad_point(h, family.base_point(patch, half, i)), options.surface);
+            for (std::uint32_t t = 0; t < c.triangles; ++t) {
+                const std::array<std::uint32_t, 3> tri = patch.triangle(t);
+                for (unsigned k = 0; k < 3; ++k) out[3 * t + k] = first + tri[k];
+            }
+            first += c.vertices;
+            out += 3 * std::size_t{c.triangles};
         }
     }
     return PipelineStatus::ok;
@@ -224,23 +473,326 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
 PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* uniform, const MeshView& mesh,
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
-    if (patches.size() < mesh.triangle_count) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_pattern(uniform, options); s != PipelineStatus::ok) return s;
+    if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
     return options.pattern == Pattern::uniform
                ? emit_all(UniformFamily{*uniform}, mesh, options, patches, vertices, indices)
                : emit_all(CpFamily{tables}, mesh, options, patches, vertices, indices);
 }
 
-} // namespace
+// --- The welded output (docs/algorithm.md §7.4) ---
 
-PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, std::uint32_t t,
-                        const PipelineOptions& options) {
-    return setup_record(CpFamily{tables}, mesh, t, options);
+bool edge_less(const WeldedEdge& a, const WeldedEdge& b) {
+    return a.lo != b.lo ? a.lo < b.lo : a.hi < b.hi;
 }
 
-PatchRecord setup_uniform_patch(const UniformTableSet& tables, const MeshView& mesh, std::uint32_t t,
+WeldedEdge edge_key(std::uint32_t i, std::uint32_t j) {
+    WeldedEdge e;
+    e.lo = i < j ? i : j;
+    e.hi = i < j ? j : i;
+    return e;
+}
+
+// One triangle of a patch as the weld sees it: the record of its pattern (a base triangle's, or a quad half
+// with rotation 0), the mesh indices of the corners its base weights refer to, and whether its e1 (opposite
+// pattern corner 0) is a quad's diagonal, inside the patch.
+struct WeldTriangle {
+    PatchRecord rec;
+    std::uint32_t corner[3] = {};
+    bool inner_e1 = false;
+    unsigned half = 0; // quad half (A = 0, B = 1)
+};
+
+// The welded ids of one patch: the triangle of a base triangle or the two halves of a quad, every slot of
+// their shared-layout patterns mapped to a corner (its mesh index), an edge point (by the rank of its
+// parameter on the edge's line) or an interior point of the patch (by the rank of its exact domain point
+// among the patch's distinct interior points: a quad's diagonal and coincident slots become one vertex).
+template <PipelineFamily F>
+class PatchWeld {
+  public:
+    PatchWeld(const F& family, const MeshView& mesh, const PipelineOptions& options,
+              std::span<const WeldedEdge> edges)
+        : family_(family), mesh_(mesh), options_(options), edges_(edges) {}
+
+    // Runs patch p with its interior ids from first_vertex. Counts its interior vertices and kept triangles;
+    // writes them when vertices is not empty (triangles at indices). False when a point is not on its edge's
+    // line or an edge is missing from the list (a list setup_welded did not produce).
+    bool run(std::uint32_t p, std::uint32_t first_vertex, Counts& counts, std::span<TessVertex> vertices,
+             std::uint32_t* indices) {
+        counts = {};
+        if (patch_culled(mesh_, p)) return true;
+        std::uint32_t clamped = 0;
+        const PatchRecord rec = setup_record(family_, mesh_, p, options_, clamped);
+        WeldTriangle tri[2];
+        unsigned n = 1;
+        SurfaceCorner q[4];
+        SurfaceCorner corner[3];
+        if (p < mesh_.triangle_count) {
+            std::uint32_t w[3];
+            base_triangle(mesh_, p, w);
+            tri[0].rec = rec;
+            for (unsigned k = 0; k < 3; ++k) {
+                tri[0].corner[k] = w[k];
+                corner[k] = mesh_corner(mesh_, w[k]);
+            }
+        } else {
+            std::uint32_t w[4];
+            base_quad(mesh_, p - mesh_.triangle_count, w);
+            quad_corners(mesh_, w, rec.rotation, q);
+            const unsigned order[2][3] = {{0, 1, 3}, {2, 3, 1}};
+            n = 2;
+            for (unsigned h = 0; h < 2; ++h) {
+                tri[h].rec = half_record(rec, h);
+                tri[h].inner_e1 = true;
+                tri[h].half = h;
+                for (unsigned k = 0; k < 3; ++k) tri[h].corner[k] = w[(order[h][k] + rec.rotation) % 4];
+            }
+        }
+        // Pass 1: corners and edge points directly, interior points collected and ranked.
+        std::uint32_t offset[2] = {0, 0}, total = 0;
+        inner_.clear();
+        for (unsigned h = 0; h < n; ++h) {
+            const WeldTriangle& t = tri[h];
+            const typename F::patch_type patch = family_.welded_patch(t.rec);
+            const Counts c = patch.counts();
+            offset[h] = total;
+            total += c.vertices;
+            if (map_.size() < total) map_.resize(total);
+            for (unsigned k = 0; k < 3; ++k) {
+                const std::uint32_t a = t.corner[(k + 1) % 3], b = t.corner[(k + 2) % 3];
+                edge_first_[k] = 0;
+                if (t.inner_e1 && k == 0) continue;
+                const WeldedEdge key = edge_key(a, b);
+                const auto it = std::lower_bound(edges_.begin(), edges_.end(), key, edge_less);
+                if (it == edges_.end() || it->lo != key.lo || it->hi != key.hi) return false;
+                family_.edge_params(mesh_edge_factor(mesh_, a, b, options_.dice), params_[k]);
+                if (params_[k].count != it->vertex_count) return false;
+                edge_first_[k] = it->first_vertex;
+            }
+            for (std::uint32_t i = 0; i < c.vertices; ++i) {
+                const DomainPoint base = family_.base_point(patch, t.rec, i);
+                const std::uint32_t w[3] = {one - base.u - base.v, base.u, base.v};
+                unsigned k = 3; // the edge (opposite corner k) the point is on, if any
+                for (unsigned j = 0; j < 3 && k == 3; ++j)
+                    if (w[j] == 0 && !(t.inner_e1 && j == 0)) k = j;
+                if (w[0] == one || w[1] == one || w[2] == one) {
+                    map_[offset[h] + i] = t.corner[w[0] == one ? 0 : w[1] == one ? 1 : 2];
+                } else if (k < 3) {
+                    const unsigned i1 = (k + 1) % 3, i2 = (k + 2) % 3;
+                    // The parameter from the lower mesh index (the set is symmetric, so either end will do).
+                    const std::uint32_t x = t.corner[i1] <= t.corner[i2] ? w[i2] : w[i1];
+                    const unsigned r = params_[k].rank(x);
+                    if (r == params_[k].count) return false;
+                    map_[offset[h] + i] = edge_first_[k] + r;
+                } else {
+                    const DomainPoint d = n == 1 ? base : cp::quad_point(t.half, base);
+                    inner_.push_back({std::uint64_t{d.u} << 32 | d.v, offset[h] + i});
+                }
+            }
+        }
+        std::sort(inner_.begin(), inner_.end());
+        for (std::size_t j = 0; j < inner_.size(); ++j) {
+            if (j > 0 && inner_[j].point != inner_[j - 1].point) ++counts.vertices;
+            map_[inner_[j].slot] = first_vertex + counts.vertices;
+        }
+        if (!inner_.empty()) ++counts.vertices;
+        // Pass 2: the vertices (when asked) and the kept triangles.
+        for (unsigned h = 0; h < n; ++h) {
+            const WeldTriangle& t = tri[h];
+            const typename F::patch_type patch = family_.welded_patch(t.rec);
+            const Counts c = patch.counts();
+            const std::uint32_t* map = map_.data() + offset[h];
+            if (!vertices.empty()) {
+                for (std::uint32_t i = 0; i < c.vertices; ++i) {
+                    const DomainPoint base = family_.base_point(patch, t.rec, i);
+                    TessVertex v = n == 1 ? surface_vertex(corner, base, options_.surface)
+                                          : quad_vertex(q, cp::quad_point(t.half, base), options_.surface);
+                    if (map[i] < first_vertex) v.u = v.v = 0; // a corner or an edge point
+                    vertices[map[i]] = v;
+                }
+            }
+            for (std::uint32_t k = 0; k < c.triangles; ++k) {
+                const std::array<std::uint32_t, 3> local = patch.triangle(k);
+                const std::uint32_t a = map[local[0]], b = map[local[1]], d = map[local[2]];
+                if (!options_.weld.keep_degenerate && (a == b || b == d || a == d)) continue;
+                if (indices != nullptr) {
+                    indices[3 * std::size_t{counts.triangles}] = a;
+                    indices[3 * std::size_t{counts.triangles} + 1] = b;
+                    indices[3 * std::size_t{counts.triangles} + 2] = d;
+                }
+                ++counts.triangles;
+            }
+        }
+        return true;
+    }
+
+  private:
+    struct Inner {
+        std::uint64_t point; // u << 32 | v: the patch's domain (a quad's unit square)
+        std::uint32_t slot;  // offset of the half + its vertex
+        friend bool operator<(const Inner& a, const Inner& b) {
+            return a.point != b.point ? a.point < b.point : a.slot < b.slot;
+        }
+    };
+    const F& family_;
+    const MeshView& mesh_;
+    const PipelineOptions& options_;
+    std::span<const WeldedEdge> edges_;
+    std::vector<std::uint32_t> map_;
+    std::vector<Inner> inner_;
+    EdgeParams params_[3];
+    std::uint32_t edge_first_[3] = {};
+};
+
+// The mesh edges of patch p (3 or 4; none when culled).
+unsigned patch_edges(const MeshView& mesh, std::uint32_t p, WeldedEdge (&out)[4]) {
+    if (patch_culled(mesh, p)) return 0;
+    if (p < mesh.triangle_count) {
+        std::uint32_t w[3];
+        base_triangle(mesh, p, w);
+        for (unsigned k = 0; k < 3; ++k) out[k] = edge_key(w[k], w[(k + 1) % 3]);
+        return 3;
+    }
+    std::uint32_t w[4];
+    base_quad(mesh, p - mesh.triangle_count, w);
+    for (unsigned k = 0; k < 4; ++k) out[k] = edge_key(w[k], w[(k + 1) % 4]);
+    return 4;
+}
+
+template <PipelineFamily F>
+PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
+                                std::span<WeldedEdge> edges, std::span<WeldedPatch> patches,
+                                WeldedTotals& totals) {
+    if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), mesh.vertex_count, 0);
+        s != PipelineStatus::ok)
+        return s;
+    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
+    // The distinct edges, sorted by their vertex indices, numbered by prefix sums after the mesh's vertices.
+    std::size_t n = 0;
+    std::uint32_t clamped = 0;
+    for (std::uint32_t p = 0; p < count; ++p) {
+        WeldedEdge e[4];
+        const unsigned m = patch_edges(mesh, p, e);
+        for (unsigned k = 0; k < m; ++k) edges[n++] = e[k];
+        (void)setup_record(family, mesh, p, options, clamped);
+    }
+    std::sort(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n), edge_less);
+    n = static_cast<std::size_t>(
+        std::unique(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n),
+                    [](const WeldedEdge& a, const WeldedEdge& b) { return a.lo == b.lo && a.hi == b.hi; }) -
+        edges.begin());
+    std::uint64_t vertices = mesh.vertex_count, triangles = 0;
+    EdgeParams params;
+    for (std::size_t i = 0; i < n; ++i) {
+        family.edge_params(mesh_edge_factor(mesh, edges[i].lo, edges[i].hi, options.dice), params);
+        edges[i].first_vertex = static_cast<std::uint32_t>(vertices);
+        edges[i].vertex_count = params.count;
+        vertices += params.count;
+        if (const PipelineStatus s = check_pipeline_size(0, vertices, 0); s != PipelineStatus::ok) return s;
+    }
+    // Interior ids only need to be distinct from the corners and edge points while counting.
+    PatchWeld<F> weld(family, mesh, options, edges.first(n));
+    for (std::uint32_t p = 0; p < count; ++p) {
+        Counts c;
+        if (!weld.run(p, static_cast<std::uint32_t>(vertices), c, {}, nullptr))
+            return PipelineStatus::bad_patch_record;
+        patches[p] = {static_cast<std::uint32_t>(vertices), c.vertices, static_cast<std::uint32_t>(triangles),
+                      c.triangles};
+        vertices += c.vertices;
+        triangles += c.triangles;
+        if (const PipelineStatus s = check_pipeline_size(0, vertices, triangles); s != PipelineStatus::ok)
+            return s;
+    }
+    totals = {static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(triangles),
+              static_cast<std::uint32_t>(n), clamped};
+    return PipelineStatus::ok;
+}
+
+template <PipelineFamily F>
+PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
+                               std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
+                               std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), mesh.vertex_count, 0);
+        s != PipelineStatus::ok)
+        return s;
+    // The edge list: sorted, distinct, inside the mesh, numbered by prefix sums with its lines' counts.
+    std::uint64_t vertices_sum = mesh.vertex_count, triangle_sum = 0;
+    EdgeParams params;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        const WeldedEdge& e = edges[i];
+        if (e.lo > e.hi || e.hi >= mesh.vertex_count || (i > 0 && !edge_less(edges[i - 1], e)) ||
+            e.first_vertex != vertices_sum)
+            return PipelineStatus::bad_patch_record;
+        family.edge_params(mesh_edge_factor(mesh, e.lo, e.hi, options.dice), params);
+        if (e.vertex_count != params.count) return PipelineStatus::bad_patch_record;
+        vertices_sum += e.vertex_count;
+        if (check_pipeline_size(0, vertices_sum, 0) != PipelineStatus::ok)
+            return PipelineStatus::bad_patch_record;
+    }
+    // The patch records: each patch's counts as run here, at the prefix sums.
+    PatchWeld<F> weld(family, mesh, options, edges);
+    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
+    for (std::uint32_t p = 0; p < count; ++p) {
+        const WeldedPatch& wp = patches[p];
+        Counts c;
+        if (wp.first_vertex != vertices_sum || wp.first_triangle != triangle_sum ||
+            !weld.run(p, wp.first_vertex, c, {}, nullptr) || c.vertices != wp.vertex_count ||
+            c.triangles != wp.triangle_count)
+            return PipelineStatus::bad_patch_record;
+        vertices_sum += wp.vertex_count;
+        triangle_sum += wp.triangle_count;
+        if (check_pipeline_size(0, vertices_sum, triangle_sum) != PipelineStatus::ok)
+            return PipelineStatus::bad_patch_record;
+    }
+    if (vertices_sum > vertices.size() || 3 * triangle_sum > indices.size())
+        return PipelineStatus::span_too_small;
+    // Every mesh vertex is output vertex v (also when no face uses it): its corner value.
+    for (std::uint32_t v = 0; v < mesh.vertex_count; ++v) {
+        const SurfaceCorner c[3] = {mesh_corner(mesh, v), mesh_corner(mesh, v), mesh_corner(mesh, v)};
+        vertices[v] = surface_vertex(c, DomainPoint{0, 0}, options.surface);
+    }
+    for (std::uint32_t p = 0; p < count; ++p) {
+        Counts c;
+        weld.run(p, patches[p].first_vertex, c, vertices,
+                 indices.data() + 3 * std::size_t{patches[p].first_triangle});
+    }
+    return PipelineStatus::ok;
+}
+
+PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet* uniform, const MeshView& mesh,
+                            const PipelineOptions& options, std::span<WeldedEdge> edges,
+                            std::span<WeldedPatch> patches, WeldedTotals& totals) {
+    if (patches.size() < mesh.patch_count() || edges.size() < weld_edge_capacity(mesh))
+        return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
+    return options.pattern == Pattern::uniform
+               ? setup_welded_all(UniformFamily{*uniform}, mesh, options, edges, patches, totals)
+               : setup_welded_all(CpFamily{tables}, mesh, options, edges, patches, totals);
+}
+
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet* uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
+    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
+    return options.pattern == Pattern::uniform
+               ? emit_welded_all(UniformFamily{*uniform}, mesh, options, edges, patches, vertices, indices)
+               : emit_welded_all(CpFamily{tables}, mesh, options, edges, patches, vertices, indices);
+}
+
+} // namespace
+
+PatchRecord setup_patch(const CpTableSet& tables, const MeshView& mesh, std::uint32_t p,
+                        const PipelineOptions& options) {
+    std::uint32_t clamped = 0;
+    return setup_record(CpFamily{tables}, mesh, p, options, clamped);
+}
+
+PatchRecord setup_uniform_patch(const UniformTableSet& tables, const MeshView& mesh, std::uint32_t p,
                                 const PipelineOptions& options) {
-    return setup_record(UniformFamily{tables}, mesh, t, options);
+    std::uint32_t clamped = 0;
+    return setup_record(UniformFamily{tables}, mesh, p, options, clamped);
 }
 
 PipelineStatus setup_patches(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
@@ -269,6 +821,32 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& unifor
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
     return emit_mesh(tables, &uniform, mesh, options, patches, vertices, indices);
+}
+
+PipelineStatus setup_welded(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
+                            std::span<WeldedEdge> edges, std::span<WeldedPatch> patches,
+                            WeldedTotals& totals) {
+    return setup_welded(tables, nullptr, mesh, options, edges, patches, totals);
+}
+
+PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
+                            const PipelineOptions& options, std::span<WeldedEdge> edges,
+                            std::span<WeldedPatch> patches, WeldedTotals& totals) {
+    return setup_welded(tables, &uniform, mesh, options, edges, patches, totals);
+}
+
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
+                                const PipelineOptions& options, std::span<const WeldedEdge> edges,
+                                std::span<const WeldedPatch> patches, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices) {
+    return emit_welded_mesh(tables, nullptr, mesh, options, edges, patches, vertices, indices);
+}
+
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, vertices, indices);
 }
 
 } // namespace ctess::rt

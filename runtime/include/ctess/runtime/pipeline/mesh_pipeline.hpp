@@ -15,19 +15,27 @@
 // contraction and fast-math off, so that the counts and every shared edge's points are the same whatever
 // the caller's flags (docs/api.md, "Crack-free evaluation").
 //
-//   std::vector<PatchRecord> patches(mesh.triangle_count);
+//   std::vector<PatchRecord> patches(mesh.patch_count());
 //   PipelineTotals totals;
 //   if (setup_patches(cp_tables_64, mesh, options, patches, totals) != PipelineStatus::ok) ...
 //   std::vector<TessVertex> vertices(totals.vertices);
 //   std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
 //   emit_mesh(cp_tables_64, mesh, options, patches, vertices, indices);
 //
-// Bad input: a base triangle with a vertex index >= vertex_count is culled (no vertices, no triangles);
-// factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors: T0 or the
-// maximum). Every other failure is a PipelineStatus other than ok, and pipeline_status_message() says why:
-// spans that are too small, a mesh past the GPU pipeline's limits (totals are summed in 64 bits and checked
-// against max_pipeline_patches/vertices/triangles, so they never wrap), or patch records that setup_patches
-// did not produce. On a failure emit_mesh writes nothing and setup_patches leaves totals unchanged.
+// Quads (MeshView::quad_indices, docs/algorithm.md §7.2-7.3): each is two CP or uniform halves along a
+// diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (uniform); quads are evaluated
+// flat (evaluate_quad_surface inside, the exact edge rule of evaluate_surface on their edges), so a mixed
+// mesh is watertight where triangles meet quads. Surface::pn_triangles or phong with quads is refused
+// (quad_surface_not_flat) until the quad surfaces land. A welded, indexed output: setup_welded /
+// emit_welded_mesh at the end of this header.
+//
+// Bad input: a base triangle or quad with a vertex index >= vertex_count is culled (no vertices, no
+// triangles); factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors:
+// T0 or the maximum). Every other failure is a PipelineStatus other than ok, and pipeline_status_message()
+// says why: spans that are too small, a mesh past the GPU pipeline's limits (totals are summed in 64 bits and
+// checked against max_pipeline_patches/vertices/triangles, so they never wrap), or patch records that
+// setup_patches did not produce. On a failure emit_mesh writes nothing and setup_patches leaves totals
+// unchanged.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -46,21 +54,55 @@ namespace ctess::rt {
 
 inline constexpr unsigned mesh_vertex_floats = 8; // position xyz, normal xyz, uv
 
+// Patches are the base triangles first (patch t = triangle t), then the quads (patch triangle_count + q =
+// quad q). The GPU shaders read triangles only.
 struct MeshView {
     const float* vertices = nullptr; // mesh_vertex_floats per vertex
     std::uint32_t vertex_count = 0;
     const std::uint32_t* indices = nullptr; // 3 per base triangle, counter-clockwise
     std::uint32_t triangle_count = 0;
+    const std::uint32_t* quad_indices = nullptr; // 4 per quad q0 q1 q2 q3, counter-clockwise
+    std::uint32_t quad_count = 0;
+    std::uint64_t patch_count() const { return std::uint64_t{triangle_count} + quad_count; }
 };
 
 // The pattern family of every patch; the shaders read it as params word 10 (docs/shaders.md).
 enum class Pattern : std::uint32_t { cp = 0, uniform = 1 };
 
+// Which quad edge becomes q0q1, the edge whose factor the CP diagonal takes (docs/algorithm.md §7.2).
+enum class QuadRule : std::uint32_t {
+    longer_pair = 0, // q0q1 = the longer edge of the opposite pair with the larger summed length (default)
+    as_labelled = 1, // q0q1 = the quad's first edge, as the mesh lists it
+};
+
+// The welded output (emit_welded_mesh, docs/algorithm.md §7.4).
+struct WeldOptions {
+    // false (default): a triangle whose welded corners repeat an index is dropped (it has zero area). true:
+    // kept, so the triangle list is the same at every factor of a token triple (fixed topology, popless).
+    bool keep_degenerate = false;
+};
+
 struct PipelineOptions {
     DiceOptions dice{};
     SurfaceOptions surface{};
     Pattern pattern = Pattern::cp;
+    QuadRule quad_rule = QuadRule::longer_pair;
+    WeldOptions weld{};
 };
+
+// A quad record (docs/algorithm.md §7.3) has kind == patch_kind_quad; the GPU does not read quads yet. Its
+// rotation (0-3) is the quad rule's: pattern corner q_k is the mesh quad's corner (k + rotation) % 4. It is
+// two halves, A = (q0, q1, q3) and B = (q2, q3, q1), both with the diagonal q1q3 as e1 and rotation 0: A's
+// line states (CP) or uniform factors are token/t16 as a triangle's, B's are setup[quad_setup_word::b_token
+// + k] and setup[quad_setup_word::b_t16 + k]; counts and offsets are A's and B's together (A first).
+// factor[k] holds the mesh quad's edges Q0..Q2 (Qk = corner k -> k + 1), the setup word q3_factor Q3's bits.
+inline constexpr std::uint32_t patch_kind_triangle = 0;
+inline constexpr std::uint32_t patch_kind_quad = 1;
+namespace quad_setup_word {
+inline constexpr unsigned b_token = 0;   // 3 words
+inline constexpr unsigned b_t16 = 3;     // 3 words (0 for uniform)
+inline constexpr unsigned q3_factor = 6; // float bits
+} // namespace quad_setup_word
 
 // One base triangle (patch). 48 words: the GPU's patch buffer uses this layout. Words 16-47 are the setup
 // block the GPU's emit passes read instead of redoing the patch setup (patch_setup_block.hpp). A uniform
@@ -74,8 +116,9 @@ struct PatchRecord {
     std::uint32_t triangle_count = 0;
     std::uint32_t first_vertex = 0; // exclusive prefix sums over the patches
     std::uint32_t first_triangle = 0;
-    float factor[3] = {}; // base edges E0 = w0w1, E1 = w1w2, E2 = w2w0, before clamping
-    std::uint32_t reserved[2] = {};
+    float factor[3] = {};                     // base edges E0 = w0w1, E1 = w1w2, E2 = w2w0, before clamping
+    std::uint32_t kind = patch_kind_triangle; // patch_kind_triangle or patch_kind_quad
+    std::uint32_t reserved = 0;
     std::uint32_t setup[setup_word::words] = {};
 
     // A uniform patch's integer factor of base edge Ek, kept in token[k] (the shaders read the same word).
@@ -96,17 +139,23 @@ static_assert(sizeof(TessVertex) == 40);
 struct PipelineTotals {
     std::uint32_t vertices = 0;
     std::uint32_t triangles = 0;
+    // Patch edges whose factor was above the pattern's maximum and was clamped to it (CP: the tables'
+    // max_factor; uniform: N, where the pipeline does not split, §3.5). Counted once per patch and edge, so
+    // an edge shared by two faces counts twice; a CP quad counts its 4 edges, a uniform quad its diagonal
+    // too. Non-zero means the output is coarser than the factors asked for.
+    std::uint32_t clamped_edges = 0;
 };
 
 enum class PipelineStatus : std::uint8_t {
     ok,
-    span_too_small,     // the patches, vertices or indices span is shorter than the counts need
-    too_many_patches,   // more base triangles than max_pipeline_patches
-    too_many_vertices,  // total vertices past max_pipeline_vertices
-    too_many_triangles, // total triangles past max_pipeline_triangles
-    bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
-    no_uniform_tables,  // Pattern::uniform through an overload without a UniformTableSet
-    bad_option,         // a Pattern value other than cp and uniform
+    span_too_small,        // the patches, vertices or indices span is shorter than the counts need
+    too_many_patches,      // more base triangles than max_pipeline_patches
+    too_many_vertices,     // total vertices past max_pipeline_vertices
+    too_many_triangles,    // total triangles past max_pipeline_triangles
+    bad_patch_record,      // a record setup_patches did not produce (tampered counts, offsets or rotation)
+    no_uniform_tables,     // Pattern::uniform through an overload without a UniformTableSet
+    bad_option,            // a Pattern, QuadRule or Surface value outside its enum
+    quad_surface_not_flat, // quads with Surface::pn_triangles or phong: quads are flat only (§7.3)
 };
 
 // The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
@@ -136,7 +185,9 @@ constexpr const char* pipeline_status_message(PipelineStatus status) {
     case PipelineStatus::no_uniform_tables:
         return "the uniform pattern needs a UniformTableSet (the overloads that take one)";
     case PipelineStatus::bad_option:
-        return "the pattern option is neither cp nor uniform";
+        return "an option (pattern, quad rule) is outside its enum";
+    case PipelineStatus::quad_surface_not_flat:
+        return "quads are evaluated flat only: use Surface::flat with a mesh that has quads";
     }
     return "unknown status";
 }
@@ -197,5 +248,79 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const P
 PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
+
+// --- One welded, indexed mesh (docs/algorithm.md §7.4) ---
+//
+// Every output position once where the input shares a vertex index: output vertex v < mesh.vertex_count is
+// input vertex v (its corner value: position, normalised normal, uv), then the points inside each mesh edge
+// (edges keyed by their two vertex indices, lower first, sorted; numbered by prefix sums over that list),
+// then each patch's interior points (prefix sums over the patches). Edge points at one parameter are one
+// vertex even where the line has coincident points (a zero-length segment), and interior slots at one exact
+// domain point (a quad's diagonal, points born on a neighbour) are one vertex of the patch. A position
+// reached by different input indices (a uv or normal seam) keeps one vertex per index, as the input does.
+// Vertices are TessVertex; u and v are the patch's base weights (a quad's unit square) for interior points
+// and 0 for corners and edge points, which belong to no one patch.
+//
+//   std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
+//   std::vector<rt::WeldedPatch> patches(mesh.patch_count());
+//   rt::WeldedTotals totals;
+//   if (rt::setup_welded(cp_tables_64, mesh, options, edges, patches, totals) != PipelineStatus::ok) ...
+//   edges.resize(totals.edges);
+//   std::vector<TessVertex> vertices(totals.vertices);
+//   std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
+//   rt::emit_welded_mesh(cp_tables_64, mesh, options, edges, patches, vertices, indices);
+//
+// The patterns are the unwelded pipeline's (setup_patches), in the shared layout: the same triangles, with
+// the triangles whose welded corners repeat an index dropped unless options.weld.keep_degenerate. Culled
+// faces (an index >= vertex_count) add nothing. setup_welded and emit_welded_mesh allocate one scratch
+// buffer, the largest patch's vertex count of 32-bit words. emit_welded_mesh checks the edge list and the
+// patch records against the mesh first (bad_patch_record) and writes nothing on any failure.
+
+// One mesh edge of the welded output: its endpoints (lo < hi, or lo == hi for a degenerate face) and its
+// interior points' vertex range.
+struct WeldedEdge {
+    std::uint32_t lo = 0, hi = 0;
+    std::uint32_t first_vertex = 0;
+    std::uint32_t vertex_count = 0; // distinct interior points of the edge's line
+};
+
+// One patch of the welded output: its interior vertices and its kept triangles.
+struct WeldedPatch {
+    std::uint32_t first_vertex = 0;
+    std::uint32_t vertex_count = 0;
+    std::uint32_t first_triangle = 0;
+    std::uint32_t triangle_count = 0;
+};
+
+struct WeldedTotals {
+    std::uint32_t vertices = 0;      // output vertices: the mesh's, the edges' and the patches' interiors
+    std::uint32_t triangles = 0;     // output triangles (kept ones)
+    std::uint32_t edges = 0;         // distinct mesh edges: the first entries of the edges span
+    std::uint32_t clamped_edges = 0; // as PipelineTotals::clamped_edges
+};
+
+// The edges span setup_welded needs: 3 per base triangle and 4 per quad (before duplicates are removed).
+constexpr std::uint64_t weld_edge_capacity(const MeshView& mesh) {
+    return 3 * std::uint64_t{mesh.triangle_count} + 4 * std::uint64_t{mesh.quad_count};
+}
+
+// Counts: the sorted distinct edges (totals.edges of them, at the front of edges), every patch's counts and
+// offsets, and the totals. On a failure totals is left unchanged.
+PipelineStatus setup_welded(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
+                            std::span<WeldedEdge> edges, std::span<WeldedPatch> patches,
+                            WeldedTotals& totals);
+PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
+                            const PipelineOptions& options, std::span<WeldedEdge> edges,
+                            std::span<WeldedPatch> patches, WeldedTotals& totals);
+
+// Fills: the welded vertices and triangle indices at the offsets setup_welded gave, with the same options.
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
+                                const PipelineOptions& options, std::span<const WeldedEdge> edges,
+                                std::span<const WeldedPatch> patches, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices);
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
 
 } // namespace ctess::rt
