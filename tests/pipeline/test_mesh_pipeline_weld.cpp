@@ -468,11 +468,11 @@ TEST_CASE("quad records (§7.3): kind word, 192 bytes, counts of both halves, ba
     bad.back().setup[rt::quad_setup_word::b_token] += 1;
     CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, o, bad, v, idx) == rt::PipelineStatus::bad_patch_record);
     CHECK(std::all_of(idx.begin(), idx.end(), [](std::uint32_t i) { return i == 77u; }));
-    // Quads are flat only: PN or Phong with quads is refused.
-    rt::PipelineOptions pn = o;
-    pn.surface.surface = rt::Surface::pn_triangles;
-    CHECK(rt::setup_patches(rt::cp_tables_64, mesh, pn, rec, totals) ==
-          rt::PipelineStatus::quad_surface_not_flat);
+    // A surface value outside the enum is refused.
+    rt::PipelineOptions bad_surface = o;
+    bad_surface.surface.surface = static_cast<rt::Surface>(9);
+    CHECK(rt::setup_patches(rt::cp_tables_64, mesh, bad_surface, rec, totals) ==
+          rt::PipelineStatus::bad_option);
     rt::PipelineOptions rule = o;
     rule.quad_rule = static_cast<rt::QuadRule>(7);
     CHECK(rt::setup_patches(rt::cp_tables_64, mesh, rule, rec, totals) == rt::PipelineStatus::bad_option);
@@ -490,12 +490,19 @@ TEST_CASE("quad records (§7.3): kind word, 192 bytes, counts of both halves, ba
 TEST_CASE("quads and triangles are watertight where they meet (§7.3): exact bits on shared edges") {
     // The unwelded output welded by position bits alone is closed and 2-manifold: every shared edge's points
     // are the same bits on both sides, triangle or quad, CP or uniform.
+    // Every surface: quads evaluate their edges by evaluate_surface's own edge rule (§6.2, §7.3).
     for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
         for (const Faces faces : {Faces::quads, Faces::mixed}) {
-            const Model m = torus(12, 5, faces);
-            const Output u = unwelded(m.view(), camera(pattern, {0.5f, -9.0f, 3.0f}, 2.0f, 250.0f));
-            REQUIRE(u.status == rt::PipelineStatus::ok);
-            CHECK(closed_manifold(directed_edges(u.indices, weld_ids(u.vertices, false))));
+            for (const rt::Surface surface :
+                 {rt::Surface::flat, rt::Surface::pn_triangles, rt::Surface::phong, rt::Surface::pn_aen}) {
+                const Model m = torus(12, 5, faces);
+                rt::PipelineOptions o = camera(pattern, {0.5f, -9.0f, 3.0f}, 2.0f, 250.0f);
+                o.surface.surface = surface;
+                const Output u = unwelded(m.view(), o);
+                REQUIRE(u.status == rt::PipelineStatus::ok);
+                INFO("surface " << static_cast<int>(surface));
+                CHECK(closed_manifold(directed_edges(u.indices, weld_ids(u.vertices, false))));
+            }
         }
     }
 }

@@ -1,8 +1,8 @@
-// ctess mesh: a model file in (glTF 2.0 or OBJ: triangles, quads, n-gons), the mesh pipeline over every face at
-// the chosen factors and surface, one welded indexed mesh out (OBJ, PLY or binary glTF), written to a temporary
-// file and renamed (docs/cli.md, "ctess mesh"). The library does the work: ctess::models loads and finds the
-// adjacency, the pipeline (setup_welded, emit_welded_mesh) tessellates and welds; this file parses options,
-// times the stages and writes.
+// ctess mesh: a model file in (glTF 2.0 or OBJ: triangles, quads, n-gons), the mesh pipeline over every face
+// at the chosen factors and surface, one welded indexed mesh out (OBJ, PLY or binary glTF), written to a
+// temporary file and renamed (docs/cli.md, "ctess mesh"). The library does the work: ctess::models loads and
+// finds the adjacency, the pipeline (setup_welded, emit_welded_mesh) tessellates and welds; this file parses
+// options, times the stages and writes.
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "file_output.hpp"
@@ -76,7 +76,8 @@ rt::DiceOptions dice_options_from(const Args& args) {
         dice.eye = parse_vec3(args.get("camera"), "--camera");
         const float fov = args.has("fov") ? positive_finite(args, "fov") : 60.0f;
         if (fov >= 180) throw UsageError("--fov must be below 180 degrees");
-        const std::vector<float> res = parse_float_list(args.get_or("resolution", "1920,1080"), "--resolution", 2, 2);
+        const std::vector<float> res =
+            parse_float_list(args.get_or("resolution", "1920,1080"), "--resolution", 2, 2);
         if (!(res[0] >= 1 && res[1] >= 1 && res[0] <= 65536 && res[1] <= 65536))
             throw UsageError("--resolution needs W,H between 1 and 65536");
         // Pixels per world unit at distance 1 (tess_factor.hpp): the vertical resolution over 2 tan(fov / 2).
@@ -152,6 +153,8 @@ int run_mesh(int argc, char** argv) {
     view.triangle_count = static_cast<std::uint32_t>(model.triangle_count());
     view.quad_indices = model.quads.data();
     view.quad_count = static_cast<std::uint32_t>(model.quad_count());
+    view.position_ids = adjacency.position_ids.data(); // seams order their edges by position
+    view.adjacency = adjacency.tessellation_indices.data(); // PN-AEN's neighbours
 
     const rt::CpTableSet& cp = max == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
     const rt::UniformTableSet& uniform = rt::uniform_tables;
@@ -199,12 +202,14 @@ int run_mesh(int argc, char** argv) {
                             model.vertex_count(), model.triangle_count(), model.quad_count());
         text += fmt::format("  \"dropped_degenerate_faces\": {},\n  \"input_open_edges\": {},\n",
                             model.dropped_degenerate_faces, input_open_edges);
-        text += fmt::format("  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
-                            mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
+        text += fmt::format(
+            "  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
+            mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
-        text += fmt::format("  \"seconds\": {{\"load\": {:.6f}, \"adjacency\": {:.6f}, \"setup\": {:.6f}, "
-                            "\"emit_and_weld\": {:.6f}, \"write\": {:.6f}, \"total\": {:.6f}}}\n",
-                            seconds.load, seconds.adjacency, seconds.setup, seconds.emit, seconds.write, total);
+        text +=
+            fmt::format("  \"seconds\": {{\"load\": {:.6f}, \"adjacency\": {:.6f}, \"setup\": {:.6f}, "
+                        "\"emit_and_weld\": {:.6f}, \"write\": {:.6f}, \"total\": {:.6f}}}\n",
+                        seconds.load, seconds.adjacency, seconds.setup, seconds.emit, seconds.write, total);
         text += "}\n";
         write_text("-", text);
     }

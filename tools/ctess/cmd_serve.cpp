@@ -42,8 +42,8 @@ std::string pattern_json(const httplib::Request& req) {
 
 // A loopback name with an optional port: `127.0.0.1`, `localhost` or `[::1]`. Any other Host (or Origin) is
 // refused, so a DNS-rebound page on another name cannot read the server's answers.
-// An installed ctess (cmake --install) finds the viewer and the shaders in <prefix>/share/ctess/, beside its own
-// bin/; a ctess run from its build tree uses the source's viewer/ and the build's shaders/.
+// An installed ctess (cmake --install) finds the viewer and the shaders in <prefix>/share/ctess/, beside its
+// own bin/; a ctess run from its build tree uses the source's viewer/ and the build's shaders/.
 std::string installed_or_build_dir(const std::string& name, const std::string& build_dir) {
     std::error_code ec;
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);

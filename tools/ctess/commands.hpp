@@ -21,6 +21,7 @@ int run_sweep(int argc, char** argv);
 int run_animate(int argc, char** argv);
 int run_efficiency(int argc, char** argv);
 int run_serve(int argc, char** argv);
+int run_mesh(int argc, char** argv); // a model file tessellated and welded (cmd_mesh.cpp)
 
 // The largest grid `ctess strip` prints (segments per direction): 2,099,200 indices at most.
 inline constexpr unsigned strip_cli_max_segments = 1024;

@@ -26,6 +26,10 @@ commands:
   strip    --segments U,V [--format json] [--out FILE]            (U, V in [1, 1024])
   surface  --name sphere|torus|ripple [--angle deg] [--distance rel] [--min-level n] [--max-level n]
            [--format json|obj|svg|stats] [--view param|shaded] [--out FILE]   (levels in [0, 18])
+  mesh     --in MODEL(.gltf|.glb|.obj) (--out OUT(.obj|.ply|.glb) | --stats) [--pattern cp|uniform]
+           (--factor F | --edge-length L | --dice-rate PX --camera X,Y,Z [--fov DEG] [--resolution W,H])
+           [--surface flat|pn|pn-aen|phong] [--max 64|256] [--quad-rule longer-pair|as-labelled]
+           [--keep-degenerate] [--stats]
   serve    [--port N] [--viewer DIR] [--shaders DIR]   the browser viewer on 127.0.0.1 (docs/viewer.md)
 
 pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even, uniform (tri, three factors)
@@ -66,6 +70,7 @@ int main(int argc, char** argv) {
         if (status < 0 && command == "strip") status = ctess::cli::run_strip(argc, argv);
         if (status < 0 && command == "surface") status = ctess::cli::run_surface(argc, argv);
         if (status < 0 && command == "serve") status = ctess::cli::run_serve(argc, argv);
+        if (status < 0 && command == "mesh") status = ctess::cli::run_mesh(argc, argv);
         if (status < 0) {
             fmt::print(stderr, "ctess: unknown command '{}'\n\n{}", command, kUsage);
             return 2;

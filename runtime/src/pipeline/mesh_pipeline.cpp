@@ -29,9 +29,61 @@ Vec3 mesh_position(const MeshView& mesh, std::uint32_t v) {
     return {p[0], p[1], p[2]};
 }
 
+// The corner's index orders shared edges (surface/eval.hpp): the vertex's position id where the mesh has
+// them, so the two sides of a uv or normal seam (different vertices at one position) order the edge the same
+// way.
 SurfaceCorner mesh_corner(const MeshView& mesh, std::uint32_t v) {
     const float* p = mesh.vertices + std::size_t{v} * mesh_vertex_floats;
-    return {{p[0], p[1], p[2]}, {p[3], p[4], p[5]}, {p[6], p[7]}, v};
+    const std::uint32_t order = mesh.position_ids != nullptr ? mesh.position_ids[v] : v;
+    return {{p[0], p[1], p[2]}, {p[3], p[4], p[5]}, {p[6], p[7]}, order};
+}
+
+// The PN-AEN neighbours of face triangle f (a base triangle, or half of a quad: MeshView::adjacency), edge e
+// (corner e -> e + 1): the adjacent triangle's two vertices on it. An index outside the mesh gives the own
+// corners, which evaluate_surface_aen treats as a boundary.
+AdjacentEdge adjacent_edge(const MeshView& mesh, std::uint64_t f, unsigned e, const SurfaceCorner& a,
+                           const SurfaceCorner& b) {
+    const std::uint32_t* t = mesh.adjacency + 12 * f;
+    const std::uint32_t i = t[3 + 2 * e], j = t[4 + 2 * e];
+    if (i >= mesh.vertex_count || j >= mesh.vertex_count) return {{a, b}};
+    return {{mesh_corner(mesh, i), mesh_corner(mesh, j)}};
+}
+
+// Which surface evaluation a patch runs: its corners, and for PN-AEN with adjacency its neighbours per edge.
+struct PatchSurface {
+    explicit PatchSurface(const SurfaceOptions& o = {}) : options(o) {}
+    SurfaceOptions options;
+    bool aen = false; // Surface::pn_aen with MeshView::adjacency
+    AdjacentEdge adjacent[4];
+};
+
+PatchSurface triangle_surface(const MeshView& mesh, std::uint32_t t, const SurfaceCorner (&corner)[3],
+                              const SurfaceOptions& options) {
+    PatchSurface ps(options);
+    ps.aen = options.surface == Surface::pn_aen && mesh.adjacency != nullptr;
+    if (ps.aen)
+        for (unsigned e = 0; e < 3; ++e)
+            ps.adjacent[e] = adjacent_edge(mesh, t, e, corner[e], corner[(e + 1) % 3]);
+    return ps;
+}
+
+// A quad's face triangles are (q0, q1, q2) and (q0, q2, q3) of the mesh's labelling
+// (models::build_adjacency): mesh edge 0 and 1 are the first's edges 0 and 1, mesh edges 2 and 3 the second's
+// edges 1 and 2. Pattern edge k (q[k] -> q[k + 1], q in pattern order) is mesh edge (k + rotation) % 4.
+PatchSurface quad_surface(const MeshView& mesh, std::uint32_t q, std::uint32_t rotation,
+                          const SurfaceCorner (&corner)[4], const SurfaceOptions& options) {
+    PatchSurface ps(options);
+    ps.aen = options.surface == Surface::pn_aen && mesh.adjacency != nullptr;
+    if (!ps.aen) return ps;
+    const std::uint64_t first = std::uint64_t{mesh.triangle_count} + 2 * std::uint64_t{q};
+    const std::uint64_t face[4] = {first, first, first + 1, first + 1};
+    const unsigned edge[4] = {0, 1, 1, 2};
+    for (unsigned k = 0; k < 4; ++k) {
+        const unsigned m = (k + rotation) % 4;
+        ps.adjacent[k] = adjacent_edge(mesh, face[m], edge[m], corner[k], corner[(k + 1) % 4]);
+        // adjacent_edge reads the neighbour's pair in either order; the own corners stand in at a boundary.
+    }
+    return ps;
 }
 
 bool base_triangle(const MeshView& mesh, std::uint32_t t, std::uint32_t (&w)[3]) {
@@ -60,9 +112,15 @@ float mesh_edge_length2(const MeshView& mesh, std::uint32_t i, std::uint32_t j) 
 }
 
 // The output vertex of exact base weights (w1, w2) = (base.u, base.v), units of cp::fixed_one.
-TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, const SurfaceOptions& surface) {
+TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, const PatchSurface& surface) {
     const std::uint32_t w[3] = {one - base.u - base.v, base.u, base.v};
-    const SurfacePoint s = evaluate_surface(corner, w, surface);
+    SurfacePoint s;
+    if (surface.aen) {
+        const AdjacentEdge adjacent[3] = {surface.adjacent[0], surface.adjacent[1], surface.adjacent[2]};
+        s = evaluate_surface_aen(corner, adjacent, w, surface.options);
+    } else {
+        s = evaluate_surface(corner, w, surface.options);
+    }
     return {base.u,
             base.v,
             {s.position.x, s.position.y, s.position.z},
@@ -72,8 +130,8 @@ TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, co
 
 // The output vertex of quad point (s, t) of the unit square (docs/algorithm.md §7.3): a point on a quad edge
 // goes through evaluate_surface's edge rule on that edge's two corners (the very operations a triangle on
-// the other side runs), an inner point through evaluate_quad_surface (bilinear, flat).
-TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const SurfaceOptions& surface) {
+// the other side runs), an inner point through evaluate_quad_surface with the patch's surface.
+TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const PatchSurface& surface) {
     const std::uint32_t s = square.u, t = square.v;
     const bool on_edge[4] = {t == 0, s == one, t == one, s == 0};
     const std::uint32_t r[4] = {s, t, one - s, one - t}; // measured from q_k along edge k
@@ -83,10 +141,18 @@ TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const Su
         if (!on_edge[k]) continue;
         const SurfaceCorner tri[3] = {q[k], q[(k + 1) % 4], q[(k + 2) % 4]};
         const std::uint32_t w[3] = {one - r[k], r[k], 0};
-        p = evaluate_surface(tri, w, surface);
+        if (surface.aen) {
+            // Only edge 0 (the quad's edge k) carries the point; the other two are the own boundary.
+            const AdjacentEdge adjacent[3] = {surface.adjacent[k], {{tri[1], tri[2]}}, {{tri[2], tri[0]}}};
+            p = evaluate_surface_aen(tri, adjacent, w, surface.options);
+        } else {
+            p = evaluate_surface(tri, w, surface.options);
+        }
         done = true;
     }
-    if (!done) p = evaluate_quad_surface(q, s, t);
+    if (!done)
+        p = surface.aen ? evaluate_quad_surface_aen(q, surface.adjacent, s, t, surface.options)
+                        : evaluate_quad_surface(q, s, t, surface.options);
     return {s,
             t,
             {p.position.x, p.position.y, p.position.z},
@@ -353,15 +419,16 @@ bool record_counts(const F& family, const MeshView& mesh, std::uint32_t p, const
     return true;
 }
 
-PipelineStatus check_options(const UniformTableSet* uniform, const MeshView& mesh,
-                             const PipelineOptions& options) {
+PipelineStatus check_options(const UniformTableSet* uniform, const PipelineOptions& options) {
     if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
         return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
     if (options.pattern == Pattern::uniform && uniform == nullptr) return PipelineStatus::no_uniform_tables;
-    if (mesh.quad_count > 0 && options.surface.surface != Surface::flat)
-        return PipelineStatus::quad_surface_not_flat;
+    const Surface surface = options.surface.surface;
+    if (surface != Surface::flat && surface != Surface::pn_triangles && surface != Surface::phong &&
+        surface != Surface::pn_aen)
+        return PipelineStatus::bad_option;
     return PipelineStatus::ok;
 }
 
@@ -391,7 +458,7 @@ PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet* un
                              const PipelineOptions& options, std::span<PatchRecord> patches,
                              PipelineTotals& totals) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
+    if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return options.pattern == Pattern::uniform
                ? setup_all(UniformFamily{*uniform}, mesh, options, patches, totals)
                : setup_all(CpFamily{tables}, mesh, options, patches, totals);
@@ -436,10 +503,11 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
             base_triangle(mesh, p, w);
             const SurfaceCorner corner[3] = {mesh_corner(mesh, w[0]), mesh_corner(mesh, w[1]),
                                              mesh_corner(mesh, w[2])};
+            const PatchSurface surface = triangle_surface(mesh, p, corner, options.surface);
             const typename F::patch_type patch = family.patch(rec);
             for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
                 vertices[rec.first_vertex + i] =
-                    surface_vertex(corner, family.base_point(patch, rec, i), options.surface);
+                    surface_vertex(corner, family.base_point(patch, rec, i), surface);
             for (std::uint32_t t = 0; t < rec.triangle_count; ++t) {
                 const std::array<std::uint32_t, 3> tri = patch.triangle(t);
                 for (unsigned k = 0; k < 3; ++k) out[3 * t + k] = rec.first_vertex + tri[k];
@@ -451,6 +519,8 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
         base_quad(mesh, p - mesh.triangle_count, w);
         SurfaceCorner q[4];
         quad_corners(mesh, w, rec.rotation, q);
+        const PatchSurface surface =
+            quad_surface(mesh, p - mesh.triangle_count, rec.rotation, q, options.surface);
         std::uint32_t first = rec.first_vertex;
         for (unsigned h = 0; h < 2; ++h) {
             const PatchRecord half = half_record(rec, h);
@@ -458,7 +528,7 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
             const Counts c = patch.counts();
             for (std::uint32_t i = 0; i < c.vertices; ++i)
                 vertices[first + i] =
-                    quad_vertex(q, cp::quad_point(h, family.base_point(patch, half, i)), options.surface);
+                    quad_vertex(q, cp::quad_point(h, family.base_point(patch, half, i)), surface);
             for (std::uint32_t t = 0; t < c.triangles; ++t) {
                 const std::array<std::uint32_t, 3> tri = patch.triangle(t);
                 for (unsigned k = 0; k < 3; ++k) out[3 * t + k] = first + tri[k];
@@ -474,7 +544,7 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* unifor
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
+    if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return options.pattern == Pattern::uniform
                ? emit_all(UniformFamily{*uniform}, mesh, options, patches, vertices, indices)
                : emit_all(CpFamily{tables}, mesh, options, patches, vertices, indices);
@@ -527,6 +597,7 @@ class PatchWeld {
         unsigned n = 1;
         SurfaceCorner q[4];
         SurfaceCorner corner[3];
+        PatchSurface surface;
         if (p < mesh_.triangle_count) {
             std::uint32_t w[3];
             base_triangle(mesh_, p, w);
@@ -535,10 +606,12 @@ class PatchWeld {
                 tri[0].corner[k] = w[k];
                 corner[k] = mesh_corner(mesh_, w[k]);
             }
+            surface = triangle_surface(mesh_, p, corner, options_.surface);
         } else {
             std::uint32_t w[4];
             base_quad(mesh_, p - mesh_.triangle_count, w);
             quad_corners(mesh_, w, rec.rotation, q);
+            surface = quad_surface(mesh_, p - mesh_.triangle_count, rec.rotation, q, options_.surface);
             const unsigned order[2][3] = {{0, 1, 3}, {2, 3, 1}};
             n = 2;
             for (unsigned h = 0; h < 2; ++h) {
@@ -605,8 +678,8 @@ class PatchWeld {
             if (!vertices.empty()) {
                 for (std::uint32_t i = 0; i < c.vertices; ++i) {
                     const DomainPoint base = family_.base_point(patch, t.rec, i);
-                    TessVertex v = n == 1 ? surface_vertex(corner, base, options_.surface)
-                                          : quad_vertex(q, cp::quad_point(t.half, base), options_.surface);
+                    TessVertex v = n == 1 ? surface_vertex(corner, base, surface)
+                                          : quad_vertex(q, cp::quad_point(t.half, base), surface);
                     if (map[i] < first_vertex) v.u = v.v = 0; // a corner or an edge point
                     vertices[map[i]] = v;
                 }
@@ -749,7 +822,7 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
     // Every mesh vertex is output vertex v (also when no face uses it): its corner value.
     for (std::uint32_t v = 0; v < mesh.vertex_count; ++v) {
         const SurfaceCorner c[3] = {mesh_corner(mesh, v), mesh_corner(mesh, v), mesh_corner(mesh, v)};
-        vertices[v] = surface_vertex(c, DomainPoint{0, 0}, options.surface);
+        vertices[v] = surface_vertex(c, DomainPoint{0, 0}, PatchSurface{options.surface});
     }
     for (std::uint32_t p = 0; p < count; ++p) {
         Counts c;
@@ -764,7 +837,7 @@ PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet* uni
                             std::span<WeldedPatch> patches, WeldedTotals& totals) {
     if (patches.size() < mesh.patch_count() || edges.size() < weld_edge_capacity(mesh))
         return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
+    if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return options.pattern == Pattern::uniform
                ? setup_welded_all(UniformFamily{*uniform}, mesh, options, edges, patches, totals)
                : setup_welded_all(CpFamily{tables}, mesh, options, edges, patches, totals);
@@ -775,7 +848,7 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet*
                                 std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
                                 std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
-    if (const PipelineStatus s = check_options(uniform, mesh, options); s != PipelineStatus::ok) return s;
+    if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return options.pattern == Pattern::uniform
                ? emit_welded_all(UniformFamily{*uniform}, mesh, options, edges, patches, vertices, indices)
                : emit_welded_all(CpFamily{tables}, mesh, options, edges, patches, vertices, indices);
@@ -808,7 +881,7 @@ PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet& un
 
 TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const SurfaceCorner (&corner)[3],
                         std::uint32_t i, const SurfaceOptions& surface) {
-    return surface_vertex(corner, CpFamily::base_point(patch, rec, i), surface);
+    return surface_vertex(corner, CpFamily::base_point(patch, rec, i), PatchSurface{surface});
 }
 
 PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,

@@ -24,10 +24,10 @@
 //
 // Quads (MeshView::quad_indices, docs/algorithm.md §7.2-7.3): each is two CP or uniform halves along a
 // diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (uniform); quads are evaluated
-// flat (evaluate_quad_surface inside, the exact edge rule of evaluate_surface on their edges), so a mixed
-// mesh is watertight where triangles meet quads. Surface::pn_triangles or phong with quads is refused
-// (quad_surface_not_flat) until the quad surfaces land. A welded, indexed output: setup_welded /
-// emit_welded_mesh at the end of this header.
+// with every surface (evaluate_quad_surface inside, the exact edge rule of evaluate_surface on their edges),
+// so a mixed mesh is watertight where triangles meet quads. PN-AEN reads MeshView::adjacency
+// (docs/algorithm.md §6.1); the GPU shaders have flat, PN and Phong triangles only. A welded, indexed output:
+// setup_welded / emit_welded_mesh at the end of this header.
 //
 // Bad input: a base triangle or quad with a vertex index >= vertex_count is culled (no vertices, no
 // triangles); factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors:
@@ -63,6 +63,14 @@ struct MeshView {
     std::uint32_t triangle_count = 0;
     const std::uint32_t* quad_indices = nullptr; // 4 per quad q0 q1 q2 q3, counter-clockwise
     std::uint32_t quad_count = 0;
+    // Optional (null: none). position_ids: vertex_count entries, the first vertex with the same position
+    // (models::Adjacency::position_ids); shared edges are then ordered by position, so the two sides of a uv
+    // or normal seam evaluate an edge point with the same operations (without them, by vertex index).
+    const std::uint32_t* position_ids = nullptr;
+    // adjacency: 12 indices per face triangle, meshopt_generateTessellationIndexBuffer's layout
+    // (models::Adjacency::tessellation_indices): the base triangles, then each quad's (q0, q1, q2) and
+    // (q0, q2, q3). Read by Surface::pn_aen; without it PN-AEN treats every edge as a boundary.
+    const std::uint32_t* adjacency = nullptr;
     std::uint64_t patch_count() const { return std::uint64_t{triangle_count} + quad_count; }
 };
 
@@ -148,14 +156,13 @@ struct PipelineTotals {
 
 enum class PipelineStatus : std::uint8_t {
     ok,
-    span_too_small,        // the patches, vertices or indices span is shorter than the counts need
-    too_many_patches,      // more base triangles than max_pipeline_patches
-    too_many_vertices,     // total vertices past max_pipeline_vertices
-    too_many_triangles,    // total triangles past max_pipeline_triangles
-    bad_patch_record,      // a record setup_patches did not produce (tampered counts, offsets or rotation)
-    no_uniform_tables,     // Pattern::uniform through an overload without a UniformTableSet
-    bad_option,            // a Pattern, QuadRule or Surface value outside its enum
-    quad_surface_not_flat, // quads with Surface::pn_triangles or phong: quads are flat only (§7.3)
+    span_too_small,     // the patches, vertices or indices span is shorter than the counts need
+    too_many_patches,   // more base triangles than max_pipeline_patches
+    too_many_vertices,  // total vertices past max_pipeline_vertices
+    too_many_triangles, // total triangles past max_pipeline_triangles
+    bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
+    no_uniform_tables,  // Pattern::uniform through an overload without a UniformTableSet
+    bad_option,         // a Pattern, QuadRule or Surface value outside its enum
 };
 
 // The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
@@ -185,9 +192,7 @@ constexpr const char* pipeline_status_message(PipelineStatus status) {
     case PipelineStatus::no_uniform_tables:
         return "the uniform pattern needs a UniformTableSet (the overloads that take one)";
     case PipelineStatus::bad_option:
-        return "an option (pattern, quad rule) is outside its enum";
-    case PipelineStatus::quad_surface_not_flat:
-        return "quads are evaluated flat only: use Surface::flat with a mesh that has quads";
+        return "an option (pattern, quad rule, surface) is outside its enum";
     }
     return "unknown status";
 }
