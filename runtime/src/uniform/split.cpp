@@ -45,6 +45,7 @@ struct UniformSplit::Impl {
     PatchOptions options_;
     std::array<double, 3> root_;
     double tolerance_;
+    std::uint32_t depth_limit_; // leaves at this depth are diced (factors clamped to N), §3.5
 
     using Point = std::array<std::int64_t, 2>; // units of 65534^2
     struct Sub {
@@ -52,12 +53,13 @@ struct UniformSplit::Impl {
         std::array<double, 3> factor;
         std::uint32_t depth;
     };
+    // Counted in 64 bits: the constructor checks the totals against 32-bit counts (§3.5, "Counts").
     struct Counter {
-        Counts counts;
+        std::uint64_t vertices = 0, triangles = 0;
         std::uint32_t subpatches = 0, depth = 0;
         void patch(const UniformPatch& p, const Sub& s, const Impl&) {
-            counts.vertices += p.counts().vertices;
-            counts.triangles += p.counts().triangles;
+            vertices += p.counts().vertices;
+            triangles += p.counts().triangles;
             ++subpatches;
             depth = s.depth > depth ? s.depth : depth;
         }
@@ -114,17 +116,33 @@ struct UniformSplit::Impl {
 
     bool welded() const noexcept { return options_.layout == Layout::shared; }
 
-    // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded (half
-    // up) at depth 2 from an exact integer sum.
+    // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded
+    // (round_unit) below from an exact integer sum (corners below 2^32, weights at most 65534: below 2^49). A
+    // point on an edge of s has weight 0 on the third corner, so the sum is the edge's endpoints' alone
+    // (lerp()).
     Point map(const Sub& s, uniform::Point d) const noexcept {
         const std::int64_t w = std::int64_t{uniform::fixed_one} - d.u - d.v;
         Point r{};
         for (int k = 0; k < 2; ++k) {
             const std::int64_t sum = w * s.corner[0][k] + std::int64_t{d.u} * s.corner[1][k] +
                                      std::int64_t{d.v} * s.corner[2][k]; // units 65534^3 at most 2^63
-            r[k] = (sum + std::int64_t{uniform::fixed_one} / 2) / std::int64_t{uniform::fixed_one};
+            r[k] = round_unit(sum);
         }
+        const bool on_e1 = (w == 0 || on_root_e1(s.corner[0])) && (d.u == 0 || on_root_e1(s.corner[1])) &&
+                           (d.v == 0 || on_root_e1(s.corner[2]));
+        if (on_e1) r[0] = std::int64_t{uniform_split_fixed_one} - r[1];
         return r;
+    }
+    // sum / 65534 rounded half up (sums are never negative).
+    static std::int64_t round_unit(std::int64_t sum) noexcept {
+        constexpr std::int64_t one = uniform::fixed_one;
+        return (sum + one / 2) / one;
+    }
+    // A point whose weights lie on corners of root edge e1 (u + v = 65534^2) only lies on e1: its v is
+    // rounded, its u is 65534^2 - v (rounding both, a tie, possible from depth 2 on, rounds both up and puts
+    // the point one unit outside the patch). Both sides compute the same v: still bit for bit.
+    static bool on_root_e1(const Point& p) noexcept {
+        return p[0] + p[1] == std::int64_t{uniform_split_fixed_one};
     }
 
     // map() of every point of in, written to out (as long as in). When every corner is a multiple of 65534
@@ -200,7 +218,7 @@ struct UniformSplit::Impl {
     // Node s's split factors, or all 1 when it is diced (a leaf).
     std::array<std::uint32_t, 3> split_of(const Sub& s) const noexcept {
         std::array<std::uint32_t, 3> split{1, 1, 1};
-        if (s.depth == uniform_split_max_depth) return split;
+        if (s.depth >= depth_limit_) return split;
         for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth);
         return split;
     }
@@ -264,13 +282,46 @@ struct UniformSplit::Impl {
         return edge_factor(s.factor, a, b);
     }
 
+    // The point at parameter t (units of 65534) from a to b: map() of a point on an edge of a subpatch whose
+    // corners a and b are, the same integer sum (the third weight is 0). Walked from b, the parameter is
+    // 65534 - t (symmetric quantisation, §3.2), and the sum is the same: both sides agree bit for bit.
+    static Point lerp(const Point& a, const Point& b, std::uint32_t t) noexcept {
+        constexpr std::int64_t one = uniform::fixed_one;
+        Point r{};
+        for (int k = 0; k < 2; ++k) r[k] = round_unit((one - t) * a[k] + std::int64_t{t} * b[k]);
+        if ((t == one || on_root_e1(a)) && (t == 0 || on_root_e1(b)))
+            r[0] = std::int64_t{uniform_split_fixed_one} - r[1];
+        return r;
+    }
+    // The points an edge of factor f at `depth` from a to b carries after a, b included: the decisions of
+    // visit() and segments() (edge_pieces, the depth limit, piece_factor, rounded), in the edge's order.
+    template <class Out>
+    void edge_walk(const Point& a, const Point& b, double f, std::uint32_t depth, Out& out) const noexcept {
+        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth);
+        if (k == 1) {
+            const std::uint32_t r = rounded(f);
+            for (std::uint32_t i = 1; i <= r; ++i) out(lerp(a, b, uniform::edge_parameter(i, r)));
+            return;
+        }
+        for (std::uint32_t s = 0; s < k; ++s)
+            edge_walk(lerp(a, b, uniform::edge_parameter(s, k)),
+                      lerp(a, b, uniform::edge_parameter(s + 1, k)), piece_factor(f, k, s), depth + 1, out);
+    }
+    // Root edge j's corners: e0 = v0 -> v1, e1 = v1 -> v2, e2 = v0 -> v2 (§3.1).
+    std::array<Point, 2> root_edge(std::uint32_t j) const noexcept {
+        const std::array<Point, 3> c = root().corner;
+        return j == 0   ? std::array<Point, 2>{c[0], c[1]}
+               : j == 1 ? std::array<Point, 2>{c[1], c[2]}
+                        : std::array<Point, 2>{c[0], c[2]};
+    }
+
     // --- The shared layout (§3.5): one vertex per exact position, numbered by the node that owns it. ---
 
     // The final segments on an edge of factor f of a node at `depth`: a function of the edge alone, the same
     // walk as visit() (a piece of a split edge is f times its symmetric parameter span, as child_edge_factor
     // computes it on any of the parent's edges, bit for bit).
     std::uint32_t segments(double f, std::uint32_t depth) const noexcept {
-        const std::uint32_t k = depth >= uniform_split_max_depth ? 1u : edge_pieces(f, depth);
+        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth);
         if (k == 1) return rounded(f);
         std::uint32_t total = 0;
         for (std::uint32_t s = 0; s < k; ++s) total += segments(piece_factor(f, k, s), depth + 1);
@@ -502,29 +553,63 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
     tolerance_ = !(interior_tolerance > uniform_split_strict_tolerance)  ? uniform_split_strict_tolerance
                  : interior_tolerance > uniform_split_interior_tolerance ? uniform_split_interior_tolerance
                                                                          : interior_tolerance;
-    // The one rounding rule of uniform factors (uniform/factor.hpp), clamped to N^2 here.
-    for (int i = 0; i < 3; ++i) root_[i] = uniform::round_factor(i == 0 ? f0 : i == 1 ? f1 : f2, n * n);
-    const Impl impl{tables_, options_, root_, tolerance_};
+    // The one rounding rule of uniform factors (uniform/factor.hpp), clamped to uniform_split_max_factor.
+    for (int i = 0; i < 3; ++i)
+        root_[i] = uniform::round_factor(i == 0 ? f0 : i == 1 ? f1 : f2, uniform_split_max_factor);
+    depth_limit_ =
+        uniform_split_depth_limit(n, static_cast<std::uint32_t>(std::max({root_[0], root_[1], root_[2]})));
+    const Impl impl = make_impl();
     Impl::Counter c;
     impl.walk(c);
-    counts_ = c.counts;
+    std::uint64_t vertices = c.vertices;
+    if (impl.welded() && c.depth > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
+        std::uint64_t boundary = 0;
+        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0);
+        vertices = 1 + (c.triangles + boundary) / 2;
+    }
+    // Counts that do not fit 32 bits (3T indices, below the primitive-restart value) give an empty patch
+    // that emits nothing (§3.5, "Counts"): never a wrapped count.
+    if (vertices >= 0xFFFFFFFFu || 3 * c.triangles >= 0xFFFFFFFFu) {
+        overflow_ = true;
+        return;
+    }
+    counts_ = Counts{static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(c.triangles)};
     subpatches_ = c.subpatches;
     depth_ = c.depth;
-    if (impl.welded() && depth_ > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
-        std::uint32_t boundary = 0;
-        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0);
-        counts_.vertices = 1 + (counts_.triangles + boundary) / 2;
-    }
+}
+
+UniformSplit::Impl UniformSplit::make_impl() const noexcept {
+    return Impl{tables_, options_, root_, tolerance_, depth_limit_};
+}
+
+std::uint32_t UniformSplit::edge_point_count(std::uint32_t edge) const noexcept {
+    if (edge > 2 || overflow_) return 0;
+    return make_impl().segments(root_[edge], 0) + 1;
+}
+
+bool UniformSplit::edge_points(std::uint32_t edge, std::span<point_type> out) const noexcept {
+    const std::uint32_t n = edge_point_count(edge);
+    if (n == 0 || out.size() < n) return false;
+    const Impl impl = make_impl();
+    const std::array<Impl::Point, 2> ends = impl.root_edge(edge);
+    std::uint32_t written = 0;
+    auto put = [&](const Impl::Point& p) {
+        if (written < n) out[written] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1])};
+        ++written;
+    };
+    put(ends[0]);
+    impl.edge_walk(ends[0], ends[1], root_[edge], 0, put);
+    return written == n; // the same decisions as segments(): always
 }
 
 void UniformSplit::for_each_leaf(LeafCallback callback, void* context) const noexcept {
-    const Impl impl{tables_, options_, root_, tolerance_};
+    const Impl impl = make_impl();
     Impl::LeafCaller c{callback, context};
     impl.walk(c);
 }
 
 double UniformSplit::longest_edge() const noexcept {
-    const Impl impl{tables_, options_, root_, tolerance_};
+    const Impl impl = make_impl();
     Impl::EdgeMeter m;
     impl.walk(m);
     return m.longest;
@@ -541,7 +626,8 @@ namespace uniform_split_detail {
 // the vertex span; then the totals against counts().
 bool emit_checked(const UniformSplit& split, std::span<UniformSplit::point_type> vertices,
                   std::span<std::uint32_t> indices) noexcept {
-    const UniformSplit::Impl impl{split.tables_, split.options_, split.root_, split.tolerance_};
+    if (split.overflow_) return false;
+    const UniformSplit::Impl impl = split.make_impl();
     const Counts counts = split.counts_;
     if (impl.welded() && split.depth_ > 0) {
         UniformSplit::Impl::Welder w{vertices, indices};
