@@ -126,23 +126,29 @@ struct UniformSplit::Impl {
         for (int k = 0; k < 2; ++k) {
             const std::int64_t sum = w * s.corner[0][k] + std::int64_t{d.u} * s.corner[1][k] +
                                      std::int64_t{d.v} * s.corner[2][k]; // units 65534^3 at most 2^63
-            r[k] = round_unit(sum);
+            r[k] = sum;
         }
-        const bool on_e1 = (w == 0 || on_root_e1(s.corner[0])) && (d.u == 0 || on_root_e1(s.corner[1])) &&
-                           (d.v == 0 || on_root_e1(s.corner[2]));
-        if (on_e1) r[0] = std::int64_t{uniform_split_fixed_one} - r[1];
+        const std::uint32_t edges = (w == 0 ? 7u : root_edges_of(s.corner[0])) &
+                                    (d.u == 0 ? 7u : root_edges_of(s.corner[1])) &
+                                    (d.v == 0 ? 7u : root_edges_of(s.corner[2]));
+        for (int k = 0; k < 2; ++k) r[k] = round_unit(r[k], edges != 0);
         return r;
     }
-    // sum / 65534 rounded half up (sums are never negative).
-    static std::int64_t round_unit(std::int64_t sum) noexcept {
-        constexpr std::int64_t one = uniform::fixed_one;
-        return (sum + one / 2) / one;
+    // sum / 65534 rounded to nearest (sums are never negative). Ties (possible from depth 2 on) round half
+    // to even on the root's edges and half up elsewhere. A neighbour sharing a root edge may run its
+    // coordinate the other way (u' = 65534^2 - u, its sum 65534^3 - the sum): only ties to even give it
+    // 65534^2 - the rounded u, the same point, and keep u + v = 65534^2 on e1. Inside the patch both sides
+    // of an edge use the same coordinates, and half up there keeps every output up to N^2 unchanged.
+    static std::int64_t round_unit(std::int64_t sum, bool on_root_edge) noexcept {
+        constexpr std::int64_t one = uniform::fixed_one, half = one / 2;
+        const std::int64_t q = sum / one, r = sum % one;
+        return q + (r > half || (r == half && (!on_root_edge || (q & 1) != 0)) ? 1 : 0);
     }
-    // A point whose weights lie on corners of root edge e1 (u + v = 65534^2) only lies on e1: its v is
-    // rounded, its u is 65534^2 - v (rounding both, a tie, possible from depth 2 on, rounds both up and puts
-    // the point one unit outside the patch). Both sides compute the same v: still bit for bit.
-    static bool on_root_e1(const Point& p) noexcept {
-        return p[0] + p[1] == std::int64_t{uniform_split_fixed_one};
+    // The root edges a point lies on: bit 0 e0 (v = 0), bit 1 e1 (u + v = 65534^2), bit 2 e2 (u = 0). A
+    // point whose every weighted corner lies on root edge j lies on j.
+    static std::uint32_t root_edges_of(const Point& p) noexcept {
+        return (p[1] == 0 ? 1u : 0u) | (p[0] + p[1] == std::int64_t{uniform_split_fixed_one} ? 2u : 0u) |
+               (p[0] == 0 ? 4u : 0u);
     }
 
     // map() of every point of in, written to out (as long as in). When every corner is a multiple of 65534
@@ -197,19 +203,29 @@ struct UniformSplit::Impl {
         return Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_, 0};
     }
 
-    // The dice limit of an edge at this depth: at the root N (+ rounding), below it tolerance x N (only edges
-    // inside the root patch can exceed N there: a sub-edge of a root edge is at most N).
-    double dice_limit(std::uint32_t depth) const noexcept {
+    // The dice limit of an edge at this depth: on the root's boundary N (+ rounding) at every depth (a
+    // piece of a root edge above 256 can be above N: 5000 / 16 / 16 = 19.5 must split again, not clamp),
+    // inside the root tolerance x N. Up to N^2 a root edge's pieces are at most N: outputs unchanged.
+    double dice_limit(std::uint32_t depth, bool on_root_boundary) const noexcept {
         const double n = tables_->max_factor;
-        return depth == 0 ? n + 0.5 : n * tolerance_;
+        return depth == 0 || on_root_boundary ? n + 0.5 : n * tolerance_;
+    }
+    // Whether a subpatch's edge from corner a to b lies on the root's boundary (both on one root edge).
+    static bool on_boundary(const Point& a, const Point& b) noexcept {
+        return (root_edges_of(a) & root_edges_of(b)) != 0;
+    }
+    static bool edge_on_boundary(const Sub& s, int i) noexcept {
+        return i == 0   ? on_boundary(s.corner[0], s.corner[1])
+               : i == 1 ? on_boundary(s.corner[1], s.corner[2])
+                        : on_boundary(s.corner[0], s.corner[2]);
     }
 
     // How many pieces a split divides an edge into: a function of the edge's own factor and depth only, so
     // the two patches that share the edge agree whether each of them is diced or split. An edge within the
     // dice limit stays whole (its patch may still split because of another edge).
-    std::uint32_t edge_pieces(double factor, std::uint32_t depth) const noexcept {
+    std::uint32_t edge_pieces(double factor, std::uint32_t depth, bool on_root_boundary) const noexcept {
         const std::uint32_t n = tables_->max_factor;
-        if (factor < dice_limit(depth)) return 1u;
+        if (factor < dice_limit(depth, on_root_boundary)) return 1u;
         const std::uint32_t t = static_cast<std::uint32_t>(std::floor(factor + 0.5));
         const std::uint32_t k = (t + n - 1) / n;
         return k < 1 ? 1 : k > n ? n : k;
@@ -219,7 +235,7 @@ struct UniformSplit::Impl {
     std::array<std::uint32_t, 3> split_of(const Sub& s) const noexcept {
         std::array<std::uint32_t, 3> split{1, 1, 1};
         if (s.depth >= depth_limit_) return split;
-        for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth);
+        for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth, edge_on_boundary(s, i));
         return split;
     }
     static bool is_leaf(const std::array<std::uint32_t, 3>& split) noexcept {
@@ -288,16 +304,15 @@ struct UniformSplit::Impl {
     static Point lerp(const Point& a, const Point& b, std::uint32_t t) noexcept {
         constexpr std::int64_t one = uniform::fixed_one;
         Point r{};
-        for (int k = 0; k < 2; ++k) r[k] = round_unit((one - t) * a[k] + std::int64_t{t} * b[k]);
-        if ((t == one || on_root_e1(a)) && (t == 0 || on_root_e1(b)))
-            r[0] = std::int64_t{uniform_split_fixed_one} - r[1];
+        const std::uint32_t edges = (t == one ? 7u : root_edges_of(a)) & (t == 0 ? 7u : root_edges_of(b));
+        for (int k = 0; k < 2; ++k) r[k] = round_unit((one - t) * a[k] + std::int64_t{t} * b[k], edges != 0);
         return r;
     }
     // The points an edge of factor f at `depth` from a to b carries after a, b included: the decisions of
     // visit() and segments() (edge_pieces, the depth limit, piece_factor, rounded), in the edge's order.
     template <class Out>
     void edge_walk(const Point& a, const Point& b, double f, std::uint32_t depth, Out& out) const noexcept {
-        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth);
+        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth, true);
         if (k == 1) {
             const std::uint32_t r = rounded(f);
             for (std::uint32_t i = 1; i <= r; ++i) out(lerp(a, b, uniform::edge_parameter(i, r)));
@@ -320,11 +335,12 @@ struct UniformSplit::Impl {
     // The final segments on an edge of factor f of a node at `depth`: a function of the edge alone, the same
     // walk as visit() (a piece of a split edge is f times its symmetric parameter span, as child_edge_factor
     // computes it on any of the parent's edges, bit for bit).
-    std::uint32_t segments(double f, std::uint32_t depth) const noexcept {
-        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth);
+    std::uint32_t segments(double f, std::uint32_t depth, bool on_root_boundary) const noexcept {
+        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth, on_root_boundary);
         if (k == 1) return rounded(f);
         std::uint32_t total = 0;
-        for (std::uint32_t s = 0; s < k; ++s) total += segments(piece_factor(f, k, s), depth + 1);
+        for (std::uint32_t s = 0; s < k; ++s)
+            total += segments(piece_factor(f, k, s), depth + 1, on_root_boundary);
         return total;
     }
     static double piece_factor(double f, std::uint32_t k, std::uint32_t s) noexcept {
@@ -384,7 +400,7 @@ struct UniformSplit::Impl {
     void weld_root(Welder& w) const noexcept {
         // The root's corners 0, 1, 2, then the points of e0, e1, e2 in order: B numbers in all.
         std::array<std::uint32_t, 3> n{};
-        for (int j = 0; j < 3; ++j) n[j] = segments(root_[j], 0);
+        for (int j = 0; j < 3; ++j) n[j] = segments(root_[j], 0, true);
         const Line e0{0, 1, 3, n[0]}, e1{1, 2, 3 + n[0] - 1, n[1]}, e2{0, 2, 3 + n[0] - 1 + n[1] - 1, n[2]};
         w.next = n[0] + n[1] + n[2];
         const std::array<EdgeRef, 3> edges{EdgeRef{e0, 0, n[0], true}, EdgeRef{e1, 0, n[1], true},
@@ -473,8 +489,8 @@ struct UniformSplit::Impl {
             for (int j = 0; j < 3; ++j) {
                 offset[j][split[j]] = edges[j].count;
                 for (std::uint32_t p = 0; p + 1 < split[j]; ++p)
-                    offset[j][p + 1] =
-                        offset[j][p] + self.segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
+                    offset[j][p + 1] = offset[j][p] + self.segments(piece_factor(s.factor[j], split[j], p),
+                                                                    s.depth + 1, edge_on_boundary(s, j));
             }
         }
         // Whether pattern edge a-b lies on this node's side j, and its endpoints' steps there.
@@ -488,7 +504,9 @@ struct UniformSplit::Impl {
             return false;
         }
         std::uint32_t edge_segments(std::uint32_t a, std::uint32_t b) const {
-            return self.segments(child_edge_factor(s, pattern.point[a], pattern.point[b]), s.depth + 1);
+            // Only used for edges inside the node (along() finds the others): never on the root's boundary.
+            return self.segments(child_edge_factor(s, pattern.point[a], pattern.point[b]), s.depth + 1,
+                                 false);
         }
         // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
         void number_vertices(Welder& w) {
@@ -564,7 +582,7 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
     std::uint64_t vertices = c.vertices;
     if (impl.welded() && c.depth > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
         std::uint64_t boundary = 0;
-        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0);
+        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0, true);
         vertices = 1 + (c.triangles + boundary) / 2;
     }
     // Counts that do not fit 32 bits (3T indices, below the primitive-restart value) give an empty patch
@@ -584,7 +602,7 @@ UniformSplit::Impl UniformSplit::make_impl() const noexcept {
 
 std::uint32_t UniformSplit::edge_point_count(std::uint32_t edge) const noexcept {
     if (edge > 2 || overflow_) return 0;
-    return make_impl().segments(root_[edge], 0) + 1;
+    return make_impl().segments(root_[edge], 0, true) + 1;
 }
 
 bool UniformSplit::edge_points(std::uint32_t edge, std::span<point_type> out) const noexcept {
