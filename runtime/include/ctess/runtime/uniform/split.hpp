@@ -13,8 +13,8 @@
 //   of that edge's own factor and position only; inside the parent it is computed from the edge's endpoints
 //   in either direction with the same result. Neighbours therefore agree bit for bit at any depth: no cracks.
 // * How many pieces a split gives an edge is a function of that edge's own factor and depth: an edge within
-//   the dice limit (N at the root; below it tolerance x N, which only edges inside the root patch can
-//   exceed) stays whole, whole edges keep their factor exactly, and a subpatch is diced when all three of its
+//   the dice limit (N on the root's boundary at every depth, from its corners; inside the root tolerance x N)
+//   stays whole, whole edges keep their factor exactly, and a subpatch is diced when all three of its
 //   edges stay whole. So a patch that splits and its neighbour that dices put the same points on their shared
 //   edge. The interior tolerance is a constructor argument in [1, 1.433]: 1.433 (the default, the table's own
 //   longest edge, §3.1) dices more interior edges whole (fewer subpatches, longer final edges); 1 (strict)
@@ -28,8 +28,10 @@
 //   levels(T) <= limit on, in every patch that holds it, so neighbours with other limits still agree.
 // * Output: positions in units of fixed_one = 65534^2 on the root patch: exact at depth 0 and 1, rounded
 //   below from an exact integer sum of the edge's own endpoints, which is the same on both sides of a shared
-//   edge. to_base_weights() converts them to the mesh pipeline's 2^-24 base weights (round to nearest; no
-//   ties exist), so that both sides of a shared edge still agree (truncating does not).
+//   edge; ties round to even on the root's edges (a neighbour whose coordinate runs the other way gets the
+//   same point, and e1 keeps u + v = 65534^2), half up inside (outputs up to N^2 unchanged).
+//   to_base_weights() converts them to the mesh pipeline's 2^-24 base weights (round to nearest; no ties
+//   exist), so that both sides of a shared edge still agree (truncating does not).
 // * edge_points(k, out): the points the patch puts on root edge k, from that edge's data alone, by the same
 //   decisions as emit(): what two patches of a shared edge compare without emitting their interiors.
 // * Counts: 3T indices and V must fit 32 bits (below the primitive-restart value 2^32 - 1); a patch beyond
