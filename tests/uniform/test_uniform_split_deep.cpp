@@ -351,3 +351,35 @@ TEST_CASE("uniform split deep: to_base_weights rounds to nearest, agrees with Un
     CHECK(truncation_cracks > 100000); // truncating leaves e1's points off the edge almost always
     CHECK(to_base_weights({0xFFFFFFFFu, 0}).u == base); // above 65534^2: clamped
 }
+
+namespace {
+// The pieces a root edge of factor t ends in with exact spans (§3.5): split into min(ceil(t / N), N) while
+// above N + 0.5.
+double final_pieces(double t, double n) {
+    if (t < n + 0.5) return 1.0;
+    const double k = std::min(std::ceil(std::floor(t + 0.5) / n), n);
+    return k * final_pieces(t / k, n);
+}
+} // namespace
+
+TEST_CASE("uniform split deep (§3.5): a root edge of any factor up to 32768 carries T segments within P / 2",
+          "[uniform][split][deep]") {
+    // Every final piece rounds on its own (P of them), nothing clamps: a root edge is whole before its
+    // patch's depth limit, for every T (sampled every 331, and around each power of N).
+    for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16}) {
+        const double n = set->max_factor;
+        std::vector<std::uint32_t> factors;
+        for (std::uint32_t t = 1; t <= 32768; t += 331) factors.push_back(t);
+        for (std::uint32_t p = set->max_factor; p <= 32768; p *= set->max_factor)
+            for (std::uint32_t t : {p - 1, p, p + 1, 2 * p - 1, 2 * p + 1})
+                factors.push_back(std::min(t, 32768u));
+        factors.push_back(32768);
+        for (const std::uint32_t t : factors) {
+            const UniformSplit s(*set, float(t), 1, float(t));
+            const double segments = s.edge_point_count(0) - 1.0, p = final_pieces(t, n);
+            INFO("N " << n << " T " << t << " segments " << segments << " pieces " << p);
+            REQUIRE(std::fabs(segments - t) <= p / 2);
+            REQUIRE(s.edge_point_count(2) == s.edge_point_count(0)); // the same factor, the same points
+        }
+    }
+}
