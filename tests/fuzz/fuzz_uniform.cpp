@@ -3,11 +3,11 @@
 // queries and span sizes. Properties of UniformPatch: emit equals vertex(i) / triangle(p); every index is in
 // range; every point lies in the domain; every triangle has the requested orientation and a non-zero area,
 // and together they cover the domain exactly (integer areas); edge k carries uniform_factor(f_k) segments;
-// out-of-range queries give zeros; a short span writes nothing. UniformSplit (any factor, up to N^2): bounded
-// depth, indices in range, points in the domain, exact coverage in units of 65534^2; in the shared layout
-// (welded, docs/algorithm.md §3.5) no position twice, V = 1 + (T + B) / 2 and the same triangles (position
-// triples, in order) as the provoking layout, whose positions are exactly the shared ones; a short span
-// writes nothing.
+// out-of-range queries give zeros; a short span writes nothing. UniformSplit (any factor, up to 32768):
+// bounded depth, indices in range, points in the domain, exact coverage in units of 65534^2; in the shared
+// layout (welded, docs/algorithm.md §3.5) no position twice, V = 1 + (T + B) / 2 and the same triangles
+// (position triples, in order) as the provoking layout, whose positions are exactly the shared ones; a short
+// span writes nothing.
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -80,10 +80,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                (mode & 4) ? Winding::cw : Winding::ccw};
     const float f[3] = {in.float_bits(), in.float_bits(), in.float_bits()};
 
-    if (mode & 8) { // split: any factor, rounded and clamped to [1, N^2]
+    if (mode & 8) { // split: any factor, rounded and clamped to [1, 32768]
         const rt::UniformSplit split(tables, f[0], f[1], f[2], options);
-        CTESS_FUZZ_CHECK(split.depth() <= 2);
+        CTESS_FUZZ_CHECK(split.depth() <= split.depth_limit());
+        CTESS_FUZZ_CHECK(split.depth_limit() <= rt::uniform_split_depth_bound(tables.max_factor));
         const Counts n = split.counts();
+        // Up to a billion triangles at 32768: above 2^20 only the root edges' points are checked (their
+        // count; docs/algorithm.md §3.5), so that an input stays fast and small.
+        if (n.triangles > (1u << 20)) {
+            for (std::uint32_t k = 0; k < 3; ++k) {
+                std::vector<uniform::SplitPoint> e(split.edge_point_count(k));
+                CTESS_FUZZ_CHECK(e.size() >= 2 && split.edge_points(k, e));
+            }
+            return 0;
+        }
         std::vector<uniform::SplitPoint> v(n.vertices);
         std::vector<std::uint32_t> idx(n.index_count());
         CTESS_FUZZ_CHECK(split.emit(v, idx));

@@ -62,6 +62,12 @@ TEST_CASE("uniform split: exact coverage, positive triangles, bounded depth", "[
 }
 
 namespace {
+// The pieces an edge of factor t ends in (docs/algorithm.md §3.5), with exact spans.
+double final_pieces(double t, double n) {
+    if (t < n + 0.5) return 1.0;
+    const double k = std::min(std::ceil(std::floor(t + 0.5) / n), n);
+    return k * final_pieces(t / k, n);
+}
 void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
     const double n = set.max_factor;
     const std::array<std::array<float, 3>, 9> cases = {{{40, 30, 20},
@@ -76,7 +82,8 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
     for (const auto& f : cases) {
         INFO("N " << n << " tolerance " << tolerance << " factors " << f[0] << "," << f[1] << "," << f[2]);
         const UniformSplit s(set, f[0], f[1], f[2], {}, tolerance);
-        REQUIRE(s.depth() <= ctess::rt::uniform_split_max_depth);
+        REQUIRE(s.depth() <= s.depth_limit());
+        REQUIRE(s.depth_limit() <= ctess::rt::uniform_split_depth_bound(set.max_factor));
         const auto e = emit_all(s);
         int128 sum = 0;
         for (std::size_t t = 0; t < e.indices.size(); t += 3) {
@@ -87,8 +94,9 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
         }
         const int128 one = ctess::rt::uniform_split_fixed_one;
         REQUIRE(sum == one * one);
-        // A split edge with factor T gets S = ceil(T / N) sub-edges of factor T * span (at most N each, so
-        // they never split again); each rounds on its own, so the edge carries T segments within S / 2.
+        // A split edge with factor T gets S = min(ceil(T / N), N) sub-edges of factor T * span, split again
+        // the same way until they are at most N (+ 0.5); only those final P pieces round, each on its own,
+        // so the edge carries T segments within P / 2 (the spans' quantisation adds far less than 0.5).
         std::set<std::uint32_t> on_e0, on_e1, on_e2;
         for (const SplitPoint& p : e.vertices) {
             if (p.v == 0) on_e0.insert(p.u);
@@ -98,7 +106,7 @@ void check_coverage(const ctess::rt::UniformTableSet& set, double tolerance) {
         const auto r = s.factors();
         const std::size_t counts[3] = {on_e0.size() - 1, on_e1.size() - 1, on_e2.size() - 1};
         for (int i = 0; i < 3; ++i) {
-            const double sub_edges = r[i] <= n ? 1.0 : std::ceil(std::min(r[i] / n, n));
+            const double sub_edges = final_pieces(r[i], n);
             INFO("edge " << i << ": " << counts[i] << " segments for factor " << r[i]);
             CHECK(std::fabs(double(counts[i]) - r[i]) <= (r[i] <= n ? 0.0 : sub_edges / 2));
         }
@@ -212,11 +220,16 @@ TEST_CASE("uniform split bad input: clamps, bounded output, emit refuses small s
         const UniformSplit s(set, f, f, f);
         CHECK(s.counts() == ctess::Counts{3, 1});
     }
-    for (float f : {inf_f, 1e30f, 121.0f, 500.0f}) {
+    for (float f : {121.0f, 1331.0f}) {
         const UniformSplit s(set, f, f, f);
-        CHECK(s.factors()[0] == 121.0);
-        CHECK(s.counts().triangles == 121u * 121u); // regular grids of regular grids
-        CHECK(s.depth() <= 2);
+        CHECK(s.factors()[0] == double(f));
+        CHECK(s.counts().triangles == std::uint32_t(f * f)); // regular grids of regular grids
+        CHECK(s.depth() == (f == 121.0f ? 1u : 2u));
+    }
+    for (float f : {inf_f, 1e30f, 32768.4f}) { // clamped to uniform_split_max_factor (counted, not emitted)
+        const UniformSplit s(set, f, 1, 1);
+        CHECK(s.factors() == std::array<double, 3>{32768, 1, 1});
+        CHECK(s.depth_limit() == 4); // N = 11: 11^5 >= 32768 > 11^4
     }
     const UniformSplit s(set, 50, 40, 30);
     std::vector<SplitPoint> v(s.counts().vertices - 1, SplitPoint{7, 7});
@@ -279,7 +292,7 @@ TEST_CASE("uniform split: final edge lengths against the table's own bound, defa
                     ++leaves;
                     const double largest = std::max({leaf.factors[0], leaf.factors[1], leaf.factors[2]});
                     above_n += largest >= n + 0.5;
-                    clamped += largest >= n + 0.5 && leaf.depth == ctess::rt::uniform_split_max_depth;
+                    clamped += largest >= n + 0.5 && leaf.depth == s.depth_limit();
                     if (tolerance == ctess::rt::uniform_split_strict_tolerance && leaf.depth < 2)
                         REQUIRE(largest < n + 0.5);
                     const auto r = rounded(leaf.factors, n);

@@ -143,7 +143,7 @@ TEST_CASE("float factors: NaN gives 1 (CP: T0) and infinities clamp, whatever th
     CHECK(ctess::rt::uniform_factor(inf_v, 16) == 16);
     CHECK(ctess::rt::uniform_factor(-inf_v, 16) == 1);
     const UniformSplit split(ctess::rt::uniform_tables_16, nan_v, inf_v, -inf_v);
-    CHECK(split.factors() == std::array<double, 3>{1, 256, 1});
+    CHECK(split.factors() == std::array<double, 3>{1, 32768, 1}); // uniform_split_max_factor
     CHECK(ctess::rt::line_state(nan_v, 64) == ctess::cp::LineState{0, 0});
     CHECK(ctess::rt::line_state(-nan_v, 64) == ctess::cp::LineState{0, 0});
     CHECK(ctess::rt::line_state(inf_v, 64) == ctess::rt::line_state(64.0f, 64));

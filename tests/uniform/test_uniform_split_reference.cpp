@@ -3,8 +3,10 @@
 // removed from the tree). Counts, depth, subpatches, every emitted vertex and index, every leaf and the
 // longest edge enter one FNV-1a digest per table, layout, winding and interior tolerance, over fixed triples
 // (clamped and bad input among them) and seeded random ones at every depth (0: within the table, 1 and 2:
-// split). A changed digest means a changed output: the per-depth case counts and the first triple of each
-// configuration are checked too, so a failure says where to look.
+// split). The reference clamped factors to N^2; the inputs are clamped to N^2 here as it did, so the digests
+// show that every output up to N^2 is unchanged by the deeper splitting above it. A changed digest means a
+// changed output: the per-depth case counts and the first triple of each configuration are checked too, so a
+// failure says where to look.
 #include <ctess/runtime/uniform/split.hpp>
 
 #include <array>
@@ -91,7 +93,12 @@ TEST_CASE("uniform split: output identical to the reference code's golden digest
                                                ctess::rt::uniform_split_strict_tolerance}) {
                     Digest d;
                     std::array<int, 3> by_depth{};
-                    for (const auto& f : cases) {
+                    for (const auto& input : cases) {
+                        // The reference clamped factors to N^2; clamping above it is the only change since
+                        // (§3.5: up to 32768), so the inputs are clamped here as it did (NaN stays NaN).
+                        const float top = float(tables->max_factor * tables->max_factor);
+                        std::array<float, 3> f = input;
+                        for (float& x : f) x = x > top ? top : x;
                         const ctess::rt::UniformSplit s(*tables, f[0], f[1], f[2], {layout, winding},
                                                         tolerance);
                         REQUIRE(s.depth() < 3);

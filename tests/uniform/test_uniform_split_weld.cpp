@@ -55,6 +55,13 @@ std::vector<std::array<float, 3>> triples_above(std::uint32_t n) {
         {17, 1, 16},         {100, 3, 99},        {250, 9, 250},      {255.4f, 17, 200},    {193, 160, 254},
         {222, 193, 192},     {93, 231, 142},      {256, 256, 210},    {1e9f, 5, 200},       {inf_f, 5, 200},
         {nan_f, 300, 1e30f}, {-inf_f, inf_f, 40}, {12.5f, 11.5f, 40}, {1e30f, 1e30f, 1e30f}};
+    // Factors above N^2 clamp to N^2 here, to keep the emitted size small (1e30 would give 32768: a billion
+    // triangles); thin triples below reach the deeper levels (test_uniform_split_deep covers them in full).
+    const float top = float(n * n);
+    for (auto& f : cases)
+        for (float& x : f) x = x > top ? top : x;
+    cases.push_back({float(n * n * 3), 20, float(n * n * 3 - 10)});
+    cases.push_back({float(n * n * n), 1, float(n * n * n)});
     std::uint32_t state = 1001 + n;
     for (int k = 0; k < 40; ++k) {
         std::array<float, 3> f{};

@@ -45,6 +45,7 @@ struct UniformSplit::Impl {
     PatchOptions options_;
     std::array<double, 3> root_;
     double tolerance_;
+    std::uint32_t depth_limit_; // leaves at this depth are diced (factors clamped to N), §3.5
 
     using Point = std::array<std::int64_t, 2>; // units of 65534^2
     struct Sub {
@@ -52,12 +53,13 @@ struct UniformSplit::Impl {
         std::array<double, 3> factor;
         std::uint32_t depth;
     };
+    // Counted in 64 bits: the constructor checks the totals against 32-bit counts (§3.5, "Counts").
     struct Counter {
-        Counts counts;
+        std::uint64_t vertices = 0, triangles = 0;
         std::uint32_t subpatches = 0, depth = 0;
         void patch(const UniformPatch& p, const Sub& s, const Impl&) {
-            counts.vertices += p.counts().vertices;
-            counts.triangles += p.counts().triangles;
+            vertices += p.counts().vertices;
+            triangles += p.counts().triangles;
             ++subpatches;
             depth = s.depth > depth ? s.depth : depth;
         }
@@ -114,17 +116,39 @@ struct UniformSplit::Impl {
 
     bool welded() const noexcept { return options_.layout == Layout::shared; }
 
-    // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded (half
-    // up) at depth 2 from an exact integer sum.
+    // A point of subpatch s from its local (u, v) in units of 65534: exact at depth 0 and 1, rounded
+    // (round_unit) below from an exact integer sum (corners below 2^32, weights at most 65534: below 2^49). A
+    // point on an edge of s has weight 0 on the third corner, so the sum is the edge's endpoints' alone
+    // (lerp()).
     Point map(const Sub& s, uniform::Point d) const noexcept {
         const std::int64_t w = std::int64_t{uniform::fixed_one} - d.u - d.v;
         Point r{};
         for (int k = 0; k < 2; ++k) {
             const std::int64_t sum = w * s.corner[0][k] + std::int64_t{d.u} * s.corner[1][k] +
                                      std::int64_t{d.v} * s.corner[2][k]; // units 65534^3 at most 2^63
-            r[k] = (sum + std::int64_t{uniform::fixed_one} / 2) / std::int64_t{uniform::fixed_one};
+            r[k] = sum;
         }
+        const std::uint32_t edges = (w == 0 ? 7u : root_edges_of(s.corner[0])) &
+                                    (d.u == 0 ? 7u : root_edges_of(s.corner[1])) &
+                                    (d.v == 0 ? 7u : root_edges_of(s.corner[2]));
+        for (int k = 0; k < 2; ++k) r[k] = round_unit(r[k], edges != 0);
         return r;
+    }
+    // sum / 65534 rounded to nearest (sums are never negative). Ties (possible from depth 2 on) round half
+    // to even on the root's edges and half up elsewhere. A neighbour sharing a root edge may run its
+    // coordinate the other way (u' = 65534^2 - u, its sum 65534^3 - the sum): only ties to even give it
+    // 65534^2 - the rounded u, the same point, and keep u + v = 65534^2 on e1. Inside the patch both sides
+    // of an edge use the same coordinates, and half up there keeps every output up to N^2 unchanged.
+    static std::int64_t round_unit(std::int64_t sum, bool on_root_edge) noexcept {
+        constexpr std::int64_t one = uniform::fixed_one, half = one / 2;
+        const std::int64_t q = sum / one, r = sum % one;
+        return q + (r > half || (r == half && (!on_root_edge || (q & 1) != 0)) ? 1 : 0);
+    }
+    // The root edges a point lies on: bit 0 e0 (v = 0), bit 1 e1 (u + v = 65534^2), bit 2 e2 (u = 0). A
+    // point whose every weighted corner lies on root edge j lies on j.
+    static std::uint32_t root_edges_of(const Point& p) noexcept {
+        return (p[1] == 0 ? 1u : 0u) | (p[0] + p[1] == std::int64_t{uniform_split_fixed_one} ? 2u : 0u) |
+               (p[0] == 0 ? 4u : 0u);
     }
 
     // map() of every point of in, written to out (as long as in). When every corner is a multiple of 65534
@@ -179,19 +203,29 @@ struct UniformSplit::Impl {
         return Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_, 0};
     }
 
-    // The dice limit of an edge at this depth: at the root N (+ rounding), below it tolerance x N (only edges
-    // inside the root patch can exceed N there: a sub-edge of a root edge is at most N).
-    double dice_limit(std::uint32_t depth) const noexcept {
+    // The dice limit of an edge at this depth: on the root's boundary N (+ rounding) at every depth (a
+    // piece of a root edge above 256 can be above N: 5000 / 16 / 16 = 19.5 must split again, not clamp),
+    // inside the root tolerance x N. Up to N^2 a root edge's pieces are at most N: outputs unchanged.
+    double dice_limit(std::uint32_t depth, bool on_root_boundary) const noexcept {
         const double n = tables_->max_factor;
-        return depth == 0 ? n + 0.5 : n * tolerance_;
+        return depth == 0 || on_root_boundary ? n + 0.5 : n * tolerance_;
+    }
+    // Whether a subpatch's edge from corner a to b lies on the root's boundary (both on one root edge).
+    static bool on_boundary(const Point& a, const Point& b) noexcept {
+        return (root_edges_of(a) & root_edges_of(b)) != 0;
+    }
+    static bool edge_on_boundary(const Sub& s, int i) noexcept {
+        return i == 0   ? on_boundary(s.corner[0], s.corner[1])
+               : i == 1 ? on_boundary(s.corner[1], s.corner[2])
+                        : on_boundary(s.corner[0], s.corner[2]);
     }
 
     // How many pieces a split divides an edge into: a function of the edge's own factor and depth only, so
     // the two patches that share the edge agree whether each of them is diced or split. An edge within the
     // dice limit stays whole (its patch may still split because of another edge).
-    std::uint32_t edge_pieces(double factor, std::uint32_t depth) const noexcept {
+    std::uint32_t edge_pieces(double factor, std::uint32_t depth, bool on_root_boundary) const noexcept {
         const std::uint32_t n = tables_->max_factor;
-        if (factor < dice_limit(depth)) return 1u;
+        if (factor < dice_limit(depth, on_root_boundary)) return 1u;
         const std::uint32_t t = static_cast<std::uint32_t>(std::floor(factor + 0.5));
         const std::uint32_t k = (t + n - 1) / n;
         return k < 1 ? 1 : k > n ? n : k;
@@ -200,8 +234,8 @@ struct UniformSplit::Impl {
     // Node s's split factors, or all 1 when it is diced (a leaf).
     std::array<std::uint32_t, 3> split_of(const Sub& s) const noexcept {
         std::array<std::uint32_t, 3> split{1, 1, 1};
-        if (s.depth == uniform_split_max_depth) return split;
-        for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth);
+        if (s.depth >= depth_limit_) return split;
+        for (int i = 0; i < 3; ++i) split[i] = edge_pieces(s.factor[i], s.depth, edge_on_boundary(s, i));
         return split;
     }
     static bool is_leaf(const std::array<std::uint32_t, 3>& split) noexcept {
@@ -264,16 +298,49 @@ struct UniformSplit::Impl {
         return edge_factor(s.factor, a, b);
     }
 
+    // The point at parameter t (units of 65534) from a to b: map() of a point on an edge of a subpatch whose
+    // corners a and b are, the same integer sum (the third weight is 0). Walked from b, the parameter is
+    // 65534 - t (symmetric quantisation, §3.2), and the sum is the same: both sides agree bit for bit.
+    static Point lerp(const Point& a, const Point& b, std::uint32_t t) noexcept {
+        constexpr std::int64_t one = uniform::fixed_one;
+        Point r{};
+        const std::uint32_t edges = (t == one ? 7u : root_edges_of(a)) & (t == 0 ? 7u : root_edges_of(b));
+        for (int k = 0; k < 2; ++k) r[k] = round_unit((one - t) * a[k] + std::int64_t{t} * b[k], edges != 0);
+        return r;
+    }
+    // The points an edge of factor f at `depth` from a to b carries after a, b included: the decisions of
+    // visit() and segments() (edge_pieces, the depth limit, piece_factor, rounded), in the edge's order.
+    template <class Out>
+    void edge_walk(const Point& a, const Point& b, double f, std::uint32_t depth, Out& out) const noexcept {
+        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth, true);
+        if (k == 1) {
+            const std::uint32_t r = rounded(f);
+            for (std::uint32_t i = 1; i <= r; ++i) out(lerp(a, b, uniform::edge_parameter(i, r)));
+            return;
+        }
+        for (std::uint32_t s = 0; s < k; ++s)
+            edge_walk(lerp(a, b, uniform::edge_parameter(s, k)),
+                      lerp(a, b, uniform::edge_parameter(s + 1, k)), piece_factor(f, k, s), depth + 1, out);
+    }
+    // Root edge j's corners: e0 = v0 -> v1, e1 = v1 -> v2, e2 = v0 -> v2 (§3.1).
+    std::array<Point, 2> root_edge(std::uint32_t j) const noexcept {
+        const std::array<Point, 3> c = root().corner;
+        return j == 0   ? std::array<Point, 2>{c[0], c[1]}
+               : j == 1 ? std::array<Point, 2>{c[1], c[2]}
+                        : std::array<Point, 2>{c[0], c[2]};
+    }
+
     // --- The shared layout (§3.5): one vertex per exact position, numbered by the node that owns it. ---
 
     // The final segments on an edge of factor f of a node at `depth`: a function of the edge alone, the same
     // walk as visit() (a piece of a split edge is f times its symmetric parameter span, as child_edge_factor
     // computes it on any of the parent's edges, bit for bit).
-    std::uint32_t segments(double f, std::uint32_t depth) const noexcept {
-        const std::uint32_t k = depth >= uniform_split_max_depth ? 1u : edge_pieces(f, depth);
+    std::uint32_t segments(double f, std::uint32_t depth, bool on_root_boundary) const noexcept {
+        const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth, on_root_boundary);
         if (k == 1) return rounded(f);
         std::uint32_t total = 0;
-        for (std::uint32_t s = 0; s < k; ++s) total += segments(piece_factor(f, k, s), depth + 1);
+        for (std::uint32_t s = 0; s < k; ++s)
+            total += segments(piece_factor(f, k, s), depth + 1, on_root_boundary);
         return total;
     }
     static double piece_factor(double f, std::uint32_t k, std::uint32_t s) noexcept {
@@ -333,7 +400,7 @@ struct UniformSplit::Impl {
     void weld_root(Welder& w) const noexcept {
         // The root's corners 0, 1, 2, then the points of e0, e1, e2 in order: B numbers in all.
         std::array<std::uint32_t, 3> n{};
-        for (int j = 0; j < 3; ++j) n[j] = segments(root_[j], 0);
+        for (int j = 0; j < 3; ++j) n[j] = segments(root_[j], 0, true);
         const Line e0{0, 1, 3, n[0]}, e1{1, 2, 3 + n[0] - 1, n[1]}, e2{0, 2, 3 + n[0] - 1 + n[1] - 1, n[2]};
         w.next = n[0] + n[1] + n[2];
         const std::array<EdgeRef, 3> edges{EdgeRef{e0, 0, n[0], true}, EdgeRef{e1, 0, n[1], true},
@@ -422,8 +489,8 @@ struct UniformSplit::Impl {
             for (int j = 0; j < 3; ++j) {
                 offset[j][split[j]] = edges[j].count;
                 for (std::uint32_t p = 0; p + 1 < split[j]; ++p)
-                    offset[j][p + 1] =
-                        offset[j][p] + self.segments(piece_factor(s.factor[j], split[j], p), s.depth + 1);
+                    offset[j][p + 1] = offset[j][p] + self.segments(piece_factor(s.factor[j], split[j], p),
+                                                                    s.depth + 1, edge_on_boundary(s, j));
             }
         }
         // Whether pattern edge a-b lies on this node's side j, and its endpoints' steps there.
@@ -437,7 +504,9 @@ struct UniformSplit::Impl {
             return false;
         }
         std::uint32_t edge_segments(std::uint32_t a, std::uint32_t b) const {
-            return self.segments(child_edge_factor(s, pattern.point[a], pattern.point[b]), s.depth + 1);
+            // Only used for edges inside the node (along() finds the others): never on the root's boundary.
+            return self.segments(child_edge_factor(s, pattern.point[a], pattern.point[b]), s.depth + 1,
+                                 false);
         }
         // The pattern's vertices: boundary ones on this node's edges, interior ones numbered here.
         void number_vertices(Welder& w) {
@@ -502,29 +571,63 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
     tolerance_ = !(interior_tolerance > uniform_split_strict_tolerance)  ? uniform_split_strict_tolerance
                  : interior_tolerance > uniform_split_interior_tolerance ? uniform_split_interior_tolerance
                                                                          : interior_tolerance;
-    // The one rounding rule of uniform factors (uniform/factor.hpp), clamped to N^2 here.
-    for (int i = 0; i < 3; ++i) root_[i] = uniform::round_factor(i == 0 ? f0 : i == 1 ? f1 : f2, n * n);
-    const Impl impl{tables_, options_, root_, tolerance_};
+    // The one rounding rule of uniform factors (uniform/factor.hpp), clamped to uniform_split_max_factor.
+    for (int i = 0; i < 3; ++i)
+        root_[i] = uniform::round_factor(i == 0 ? f0 : i == 1 ? f1 : f2, uniform_split_max_factor);
+    depth_limit_ =
+        uniform_split_depth_limit(n, static_cast<std::uint32_t>(std::max({root_[0], root_[1], root_[2]})));
+    const Impl impl = make_impl();
     Impl::Counter c;
     impl.walk(c);
-    counts_ = c.counts;
+    std::uint64_t vertices = c.vertices;
+    if (impl.welded() && c.depth > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
+        std::uint64_t boundary = 0;
+        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0, true);
+        vertices = 1 + (c.triangles + boundary) / 2;
+    }
+    // Counts that do not fit 32 bits (3T indices, below the primitive-restart value) give an empty patch
+    // that emits nothing (§3.5, "Counts"): never a wrapped count.
+    if (vertices >= 0xFFFFFFFFu || 3 * c.triangles >= 0xFFFFFFFFu) {
+        overflow_ = true;
+        return;
+    }
+    counts_ = Counts{static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(c.triangles)};
     subpatches_ = c.subpatches;
     depth_ = c.depth;
-    if (impl.welded() && depth_ > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
-        std::uint32_t boundary = 0;
-        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0);
-        counts_.vertices = 1 + (counts_.triangles + boundary) / 2;
-    }
+}
+
+UniformSplit::Impl UniformSplit::make_impl() const noexcept {
+    return Impl{tables_, options_, root_, tolerance_, depth_limit_};
+}
+
+std::uint32_t UniformSplit::edge_point_count(std::uint32_t edge) const noexcept {
+    if (edge > 2 || overflow_) return 0;
+    return make_impl().segments(root_[edge], 0, true) + 1;
+}
+
+bool UniformSplit::edge_points(std::uint32_t edge, std::span<point_type> out) const noexcept {
+    const std::uint32_t n = edge_point_count(edge);
+    if (n == 0 || out.size() < n) return false;
+    const Impl impl = make_impl();
+    const std::array<Impl::Point, 2> ends = impl.root_edge(edge);
+    std::uint32_t written = 0;
+    auto put = [&](const Impl::Point& p) {
+        if (written < n) out[written] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1])};
+        ++written;
+    };
+    put(ends[0]);
+    impl.edge_walk(ends[0], ends[1], root_[edge], 0, put);
+    return written == n; // the same decisions as segments(): always
 }
 
 void UniformSplit::for_each_leaf(LeafCallback callback, void* context) const noexcept {
-    const Impl impl{tables_, options_, root_, tolerance_};
+    const Impl impl = make_impl();
     Impl::LeafCaller c{callback, context};
     impl.walk(c);
 }
 
 double UniformSplit::longest_edge() const noexcept {
-    const Impl impl{tables_, options_, root_, tolerance_};
+    const Impl impl = make_impl();
     Impl::EdgeMeter m;
     impl.walk(m);
     return m.longest;
@@ -541,7 +644,8 @@ namespace uniform_split_detail {
 // the vertex span; then the totals against counts().
 bool emit_checked(const UniformSplit& split, std::span<UniformSplit::point_type> vertices,
                   std::span<std::uint32_t> indices) noexcept {
-    const UniformSplit::Impl impl{split.tables_, split.options_, split.root_, split.tolerance_};
+    if (split.overflow_) return false;
+    const UniformSplit::Impl impl = split.make_impl();
     const Counts counts = split.counts_;
     if (impl.welded() && split.depth_ > 0) {
         UniformSplit::Impl::Welder w{vertices, indices};

@@ -3,7 +3,8 @@
 // each subpatch is diced (or split once more) with the table.
 //
 // * Factors: NaN, -inf, zero and negatives give 1; each factor is rounded to the nearest integer (halves up)
-//   and clamped to [1, N^2] (+inf and huge values give N^2), which two levels of splitting always reach.
+//   and clamped to [1, uniform_split_max_factor = 32768] (+inf and huge values give 32768; NVIDIA's
+//   vk_tessellated_clusters splits up to the same factor).
 // * SplitFactor S = min(ceil(T / N), N) per edge (Karis 2026: min(TessFactor / MaxDiceFactor,
 // MaxSplitFactor),
 //   rounded up so that each sub-edge's factor T / S is at most N).
@@ -12,16 +13,29 @@
 //   of that edge's own factor and position only; inside the parent it is computed from the edge's endpoints
 //   in either direction with the same result. Neighbours therefore agree bit for bit at any depth: no cracks.
 // * How many pieces a split gives an edge is a function of that edge's own factor and depth: an edge within
-//   the dice limit (N at the root; below it tolerance x N, which only edges inside the root patch can
-//   exceed) stays whole, whole edges keep their factor exactly, and a subpatch is diced when all three of its
+//   the dice limit (N on the root's boundary at every depth, from its corners; inside the root tolerance x N)
+//   stays whole, whole edges keep their factor exactly, and a subpatch is diced when all three of its
 //   edges stay whole. So a patch that splits and its neighbour that dices put the same points on their shared
 //   edge. The interior tolerance is a constructor argument in [1, 1.433]: 1.433 (the default, the table's own
 //   longest edge, §3.1) dices more interior edges whole (fewer subpatches, longer final edges); 1 (strict)
 //   dices no interior edge above N. Everything that decides an edge's pieces reads the same value, so both
 //   walks (counts, emit) and both sides of an edge agree.
-// * Depth is at most 2; at depth 2 factors are clamped to N (an interior edge may then stay longer than one).
-// * Output: positions in units of fixed_one = 65534^2 on the root patch. Depth-2 positions are rounded to
-//   that unit from an exact integer sum, which is the same on both sides of a shared edge.
+// * Depth: a patch splits down to its depth limit, uniform_split_depth_limit(N, largest root factor): one
+//   level more than its largest root edge needs (the smallest d with N^(d+1) >= T; interior edges are up to
+//   1.433 times longer), at least 2 (the depth of every patch up to N^2, whose output is unchanged) and at
+//   most the table's bound uniform_split_depth_bound(N) (N = 16: 3, N = 11: 4). At the limit factors clamp
+//   to N (only an interior edge can still be longer). A root edge of factor T is whole from depth
+//   levels(T) <= limit on, in every patch that holds it, so neighbours with other limits still agree.
+// * Output: positions in units of fixed_one = 65534^2 on the root patch: exact at depth 0 and 1, rounded
+//   below from an exact integer sum of the edge's own endpoints, which is the same on both sides of a shared
+//   edge; ties round to even on the root's edges (a neighbour whose coordinate runs the other way gets the
+//   same point, and e1 keeps u + v = 65534^2), half up inside (outputs up to N^2 unchanged).
+//   to_base_weights() converts them to the mesh pipeline's 2^-24 base weights (round to nearest; no ties
+//   exist), so that both sides of a shared edge still agree (truncating does not).
+// * edge_points(k, out): the points the patch puts on root edge k, from that edge's data alone, by the same
+//   decisions as emit(): what two patches of a shared edge compare without emitting their interiors.
+// * Counts: 3T indices and V must fit 32 bits (below the primitive-restart value 2^32 - 1); a patch beyond
+//   that (none at N = 11 or 16, tested at 32768^3) would count {0, 0} and emit nothing.
 // * Layout::provoking: every subpatch's own vertices, each subpatch followed by its own copies (UniformPatch,
 //   §3.4), so every triangle's first index is unique over the whole output.
 // * Layout::shared: welded, one vertex per exact position, without scratch memory (§3.5, "The shared
@@ -40,9 +54,9 @@
 // -ffp-contract=off -fno-fast-math (ctess::uniform_core): in header code the constructor's count and emit()'s
 // walk were compiled with the caller's flags in different inlining contexts, and under -ffast-math they could
 // decide an edge differently (§3.5; docs/api.md, "Crack-free evaluation"). Every walk keeps its split
-// pattern's points on the stack per split level (two levels at most) and one leaf-sized buffer; the shared
-// layout's emit() also keeps one pattern-sized set of arrays per level: the stack is bounded by the largest
-// stored pattern, whatever the factors (measured in docs/algorithm.md §3.5).
+// pattern's points on the stack per split level (at most uniform_split_max_depth levels) and one leaf-sized
+// buffer; the shared layout's emit() also keeps one pattern-sized set of arrays per level: the stack is
+// bounded by depth x the largest stored pattern, whatever the factors (measured in docs/algorithm.md §3.5).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -63,12 +77,55 @@
 
 namespace ctess::rt {
 
-inline constexpr std::uint32_t uniform_split_max_depth = 2;
+// The largest factor UniformSplit takes (inputs above clamp to it), as NVIDIA's vk_tessellated_clusters.
+inline constexpr std::uint32_t uniform_split_max_factor = 32768;
+
+// The split levels a root edge of factor t needs with table maximum n >= 2: the smallest d with
+// n^(d+1) >= t (each level divides an edge into at most n pieces, the last pieces dice at most n).
+constexpr std::uint32_t uniform_split_levels(std::uint32_t n, std::uint32_t t) noexcept {
+    std::uint64_t reach = n < 2 ? 2 : n;
+    std::uint32_t d = 0;
+    for (; reach < t; ++d) reach *= n < 2 ? 2 : n;
+    return d;
+}
+// The deepest split of table maximum n: the levels of uniform_split_max_factor.
+constexpr std::uint32_t uniform_split_depth_bound(std::uint32_t n) noexcept {
+    return uniform_split_levels(n, uniform_split_max_factor);
+}
+// A patch's depth limit from its largest rounded root factor: one level more than its edges need (for the
+// longer interior edges), at least 2, at most the bound (§3.5).
+constexpr std::uint32_t uniform_split_depth_limit(std::uint32_t n, std::uint32_t largest) noexcept {
+    const std::uint32_t wanted = uniform_split_levels(n, largest) + 1, bound = uniform_split_depth_bound(n);
+    const std::uint32_t limit = wanted < bound ? wanted : bound;
+    return limit > 2 ? limit : 2;
+}
+static_assert(uniform_split_depth_bound(16) == 3 && uniform_split_depth_bound(11) == 4);
+static_assert(uniform_split_depth_limit(16, 256) == 2 && uniform_split_depth_limit(16, 257) == 3 &&
+              uniform_split_depth_limit(16, 32768) == 3 && uniform_split_depth_limit(11, 121) == 2 &&
+              uniform_split_depth_limit(11, 122) == 3 && uniform_split_depth_limit(11, 1332) == 4);
+// The deepest split of the shipped tables (N = 11): what the stack is sized for.
+inline constexpr std::uint32_t uniform_split_max_depth = uniform_split_depth_bound(11);
 // Edges inside the root patch dice at N up to this factor / N by default: the table's own longest edge
 // (§3.1). The strict tolerance dices no interior edge above N (§3.5, the trade-off table).
 inline constexpr double uniform_split_interior_tolerance = 1.433;
 inline constexpr double uniform_split_strict_tolerance = 1.0;
 inline constexpr std::uint32_t uniform_split_fixed_one = uniform::fixed_one * uniform::fixed_one;
+
+// A split point as the mesh pipeline's base weights (units of 2^-24, docs/algorithm.md §0): each coordinate
+// rounded to nearest from the exact c * 2^24 / 65534^2 (coordinates above 65534^2 clamp to it). No
+// coordinate lies halfway (65534^2 / 2 is odd, c * 2^24 even), and for u + v = 65534^2 the rounded weights
+// sum to 2^24 exactly, so w0 = 2^24 - u - v is never negative and a point on edge e1 stays on it. Points
+// of depth 0 and 1 (multiples of 65534) give uniform_weight_to_fixed's weights, as a UniformPatch beside
+// the split patch does. Truncating instead moves e1's points off the edge: cracks.
+constexpr DomainPoint to_base_weights(uniform::SplitPoint p) noexcept {
+    constexpr std::uint64_t one = uniform_split_fixed_one;
+    const auto weight = [](std::uint32_t c) {
+        const std::uint64_t x = c < one ? c : one;
+        return static_cast<std::uint32_t>((x * (std::uint64_t{1} << 24) + one / 2) / one);
+    };
+    return {weight(p.u), weight(p.v)};
+}
+static_assert(to_base_weights({uniform_split_fixed_one, 0}) == DomainPoint{1u << 24, 0});
 
 class UniformSplit;
 namespace uniform_split_detail {
@@ -92,6 +149,16 @@ class UniformSplit {
     std::uint32_t depth() const noexcept { return depth_; }
     std::array<double, 3> factors() const noexcept { return root_; }
     double interior_tolerance() const noexcept { return tolerance_; }
+    // The depth at which this patch dices whatever its factors: uniform_split_depth_limit(N, largest).
+    std::uint32_t depth_limit() const noexcept { return depth_limit_; }
+
+    // The points the patch puts on its root edge k (0: v0 -> v1, 1: v1 -> v2, 2: v0 -> v2, §3.1), in that
+    // order, both corners included: edge_point_count(k) of them (segments + 1; 0 for k > 2). They come from
+    // the edge's own factor by the decisions emit() takes, so a neighbour sharing the edge gives the same
+    // points (reversed when its edge runs the other way) without emitting either interior. edge_points()
+    // returns false and writes nothing for k > 2 or a span shorter than edge_point_count(k).
+    std::uint32_t edge_point_count(std::uint32_t edge) const noexcept;
+    bool edge_points(std::uint32_t edge, std::span<point_type> out) const noexcept;
 
     // One diced subpatch: its pattern (the table's, for its factors rounded and clamped to [1, N]), its
     // factors before rounding (its edges' intrinsic lengths in the root's metric), its corners on the root
@@ -125,6 +192,7 @@ class UniformSplit {
 
   private:
     struct Impl; // split.cpp
+    Impl make_impl() const noexcept;
     friend bool uniform_split_detail::emit_checked(const UniformSplit&, std::span<uniform::SplitPoint>,
                                                    std::span<std::uint32_t>) noexcept;
 
@@ -133,7 +201,8 @@ class UniformSplit {
     std::array<double, 3> root_{1, 1, 1};
     double tolerance_ = uniform_split_interior_tolerance;
     Counts counts_;
-    std::uint32_t subpatches_ = 0, depth_ = 0;
+    std::uint32_t subpatches_ = 0, depth_ = 0, depth_limit_ = 2;
+    bool overflow_ = false; // counts beyond 32 bits: counts() {0, 0}, emit() false
 };
 
 static_assert(TessPatch<UniformSplit>);
