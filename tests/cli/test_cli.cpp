@@ -551,36 +551,24 @@ TEST_CASE("cli: uniform nan, inf, -inf, 0 and negative factors are exit 2 with n
     }
 }
 
-TEST_CASE("cli: huge uniform factors clamp to N^2 and split, with bounded output",
-          "[cli][uniform][bad_input]") {
-    const Run top = ctess_cli("pattern --mode uniform --format json --layout provoking --factors 1,1,1");
-    const long n = json_number(top.out, "max_tess_factor");
-    const std::string nn = std::to_string(n * n);
-    const Run reference = ctess_cli("pattern --mode uniform --format json --layout provoking --factors " +
-                                    nn + "," + nn + "," + nn);
-    REQUIRE(reference.exit_code == 0);
-    const auto body = [](const std::string& json) { return json.substr(json.find("\"max_tess_factor\"")); };
-    for (const char* huge : {"1e30", "3e38", "257", "3.4028235e38"}) {
+TEST_CASE("cli: uniform factors above 512 are refused, 512 splits within the output bound",
+          "[cli][uniform]") {
+    // docs/cli.md "Uniform factors": the library splits to 32,768; the CLI writes at most factor 512.
+    for (const char* huge : {"1e30", "3e38", "513", "512.5", "3.4028235e38"}) {
         INFO(huge);
         const std::string h(huge);
-        const Run r = ctess_cli("pattern --mode uniform --format json --layout provoking --factors " + h +
-                                "," + h + "," + h);
-        REQUIRE(r.exit_code == 0);
-        CHECK(json_number(r.out, "fixed_one") == 4294705156L);
-        CHECK(json_uniform_factors(r.out) == std::vector<long>{n * n, n * n, n * n});
-        CHECK(json_number(r.out, "subpatch_count") > 1);
-        CHECK(body(r.out) == body(reference.out)); // the same patch as N^2 exactly
-        CHECK(r.out.size() < 4'000'000);           // 3.11 MB at N = 16 (docs/cli.md "Limits")
-        const Run one = ctess_cli("pattern --mode uniform --format json --factors " + h + ",3,3");
-        REQUIRE(one.exit_code == 0);
-        CHECK(json_uniform_factors(one.out) == std::vector<long>{n * n, 3, 3});
-        CHECK(json_number(one.out, "degenerate_triangle_count") == 0);
+        const Run r = ctess_cli("pattern --mode uniform --format json --factors " + h + ",3,3");
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.find("up to 512") != std::string::npos); // the error, and no pattern
+        CHECK(r.out.find("\"vertices\"") == std::string::npos);
     }
-    const Run svg =
-        ctess_cli("pattern --mode uniform --format svg --layout provoking --provoking --factors 3e38,"
-                  "3e38,3e38");
-    REQUIRE(svg.exit_code == 0);
-    CHECK(svg.out.size() < 20'000'000); // 16.6 MB at N = 16, the largest uniform output
+    const Run top = ctess_cli("pattern --mode uniform --format json --factors 512.49,512,512");
+    REQUIRE(top.exit_code == 0);
+    CHECK(json_uniform_factors(top.out) == std::vector<long>{512, 512, 512});
+    CHECK(json_number(top.out, "triangle_count") == 512L * 512L); // T^2 triangles at equal factors T (§3.5)
+    CHECK(json_number(top.out, "split_depth") >= 2);
+    CHECK(json_number(top.out, "subpatch_count") > 1);
+    CHECK(json_number(top.out, "degenerate_triangle_count") == 0);
 }
 
 TEST_CASE("cli: uniform 11,9,6 JSON vertices are the quantised boundary points (docs/algorithm.md §3.2) and "

@@ -23,6 +23,9 @@ int run_efficiency(int argc, char** argv);
 int run_serve(int argc, char** argv);
 int run_mesh(int argc, char** argv); // a model file tessellated and welded (cmd_mesh.cpp)
 
+// The largest uniform factor `ctess pattern` (and /api/pattern) writes: at most 262,144 triangles.
+inline constexpr unsigned uniform_cli_max_factor = 512;
+
 // The largest grid `ctess strip` prints (segments per direction): 2,099,200 indices at most.
 inline constexpr unsigned strip_cli_max_segments = 1024;
 int run_strip(int argc, char** argv);

@@ -87,7 +87,7 @@ struct Frame {
     double y(double v) const { return bottom - side * (square ? v : v * vy); }
 };
 
-// The integer factors the library used (rounded, clamped to N^2 when split) as side lengths.
+// The integer factors the library used (rounded; split above N) as side lengths.
 void shape_uniform_frame(Frame& fr, const UniformUse& use) {
     const double a = use.factors[0], b = use.factors[1], c = use.factors[2];
     if (!(a < b + c && b < a + c && c < a + b)) return; // non-Euclidean: keep the equilateral frame
@@ -126,7 +126,7 @@ std::string mesh_to_svg(const Mesh& mesh, const PatternRequest& r, const SvgOpti
     if (mesh.vertices_per_primitive == 3) stats += fmt::format(" ({} zero-area, drawn red)", degenerate);
     if (!uniform && !is_d3d11_mode(r.mode)) stats += fmt::format(" · max factor {}", r.max_factor);
     svg.text(kMargin - 40, 60, stats, "font-size=\"15\" fill=\"#445\"");
-    // Uniform: the integers used when they differ from the request (rounded; clamped to N^2), and the split.
+    // Uniform: the integers used when they differ from the request (rounded), and the split.
     const auto& used = mesh.uniform.factors;
     const bool rounded = uniform && (r.factors[0] != float(used[0]) || r.factors[1] != float(used[1]) ||
                                      r.factors[2] != float(used[2]));

@@ -1,0 +1,188 @@
+// `ctess mesh` as a user runs it (docs/cli.md, "ctess mesh"): real models from Debian's assimp-testmodels
+// where installed, and small models written here. A closed model stays closed (every output edge in two
+// triangles, by exact position) for every pattern, surface and factor mode; an open model's boundary is its
+// input boundary subdivided; PN-AEN closes the cracks plain PN opens at split normals; outputs read back; bad
+// input fails with nothing written.
+#include "support/cli_run.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+using ctess::test::ctess_cli;
+using ctess::test::Run;
+
+namespace {
+
+const std::string assimp_models = "/usr/share/assimp/models";
+
+std::string scratch(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / "ctess_test_cli_mesh";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+void write_file(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+nlohmann::json stats(const std::string& args) {
+    const Run r = ctess_cli("mesh --stats " + args);
+    INFO(args << "\n" << r.out);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out);
+}
+
+// A closed mixed model: a unit cube whose four sides are quads and whose top and bottom are two triangles
+// each, with one normal per face (split normals on every edge) and per-face uvs (uv seams everywhere).
+std::string mixed_cube_obj() {
+    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+    s += "vn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 -1\nvn 0 0 1\n";
+    s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+    s += "f 1/1/1 2/2/1 6/3/1 5/4/1\nf 2/1/2 3/2/2 7/3/2 6/4/2\nf 3/1/3 4/2/3 8/3/3 7/4/3\nf 4/1/4 1/2/4 "
+         "5/3/4 8/4/4\n";
+    s += "f 1/1/5 4/4/5 3/3/5\nf 1/1/5 3/3/5 2/2/5\nf 5/1/6 6/2/6 7/3/6\nf 5/1/6 7/3/6 8/4/6\n";
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("ctess mesh: a closed mixed model with split normals stays closed for every pattern, surface and "
+          "factor mode",
+          "[cli][mesh]") {
+    const std::string in = scratch("mixed_cube.obj");
+    write_file(in, mixed_cube_obj());
+    for (const char* pattern : {"cp", "uniform"})
+        for (const char* surface : {"flat", "pn", "pn-aen", "phong"})
+            for (const char* factors :
+                 {"--factor 5.5", "--edge-length 0.07", "--dice-rate 2 --camera 2.5,1.7,3.1"}) {
+                const nlohmann::json s = stats(std::string("--in ") + in + " --pattern " + pattern +
+                                               " --surface " + surface + " " + factors);
+                CHECK(s["input_triangles"] == 4);
+                CHECK(s["input_quads"] == 4);
+                CHECK(s["input_open_edges"] == 0);
+                CHECK(s["output_triangles"].get<long>() > 8);
+                CHECK(s["output_open_edges"] == 0);
+            }
+}
+
+TEST_CASE("ctess mesh: an open model's boundary is its input boundary, subdivided", "[cli][mesh]") {
+    // A 2 x 1 strip of quads: 6 boundary edges. An edge of uniform factor F has F segments, and a CP edge at a
+    // power of two F too (§1: the top of a token's range), so the output has 6 F open edges and 4 F^2 triangles.
+    const std::string in = scratch("strip.obj");
+    write_file(in, "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n");
+    for (const std::string pattern : {"cp", "uniform"})
+        for (const int f : {1, pattern == "cp" ? 2 : 3, 8}) {
+            const nlohmann::json s =
+                stats(std::string("--in ") + in + " --pattern " + pattern + " --factor " + std::to_string(f));
+            CHECK(s["input_open_edges"] == 6);
+            CHECK(s["output_open_edges"] == 6 * f);
+            CHECK(s["output_triangles"] == 2 * 2 * f * f);
+        }
+}
+
+TEST_CASE("ctess mesh: real closed models stay closed (assimp-testmodels)", "[cli][mesh][real]") {
+    const std::vector<std::string> closed = {
+        "OBJ/box.obj", "OBJ/testmixed.obj", "glTF2/BoxTextured-glTF/BoxTextured.gltf",
+        "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf"};
+    for (const std::string& name : closed) {
+        const std::string in = assimp_models + "/" + name;
+        if (!std::filesystem::exists(in)) {
+            WARN("assimp-testmodels not installed: " << in << " skipped");
+            continue;
+        }
+        for (const char* pattern : {"cp", "uniform"})
+            for (const char* surface : {"flat", "pn-aen"}) {
+                const nlohmann::json s = stats("--in " + in + " --pattern " + pattern + " --surface " +
+                                               surface + " --edge-length 0.05");
+                INFO(name << " " << pattern << " " << surface);
+                CHECK(s["input_open_edges"] == 0);
+                CHECK(s["output_open_edges"] == 0);
+                CHECK(s["output_triangles"].get<long>() > 1000);
+            }
+    }
+}
+
+TEST_CASE("ctess mesh: PN-AEN closes the cracks plain PN opens at split normals (spider.obj)",
+          "[cli][mesh][real]") {
+    const std::string in = assimp_models + "/OBJ/spider.obj";
+    if (!std::filesystem::exists(in)) {
+        WARN("assimp-testmodels not installed: spider.obj skipped");
+        return;
+    }
+    // An open model (its boundary is open in every mode); PN cracks on top of that, PN-AEN does not.
+    const std::string common = " --in " + in + " --dice-rate 2 --camera 0,0,400";
+    const long flat = stats(common + " --surface flat")["output_open_edges"];
+    const long pn = stats(common + " --surface pn")["output_open_edges"];
+    const long aen = stats(common + " --surface pn-aen")["output_open_edges"];
+    CHECK(pn > flat + 100);
+    CHECK(aen == flat);
+}
+
+TEST_CASE("ctess mesh: OBJ and glTF outputs read back as the same closed mesh; PLY is sized by its header",
+          "[cli][mesh]") {
+    const std::string in = scratch("mixed_cube_out.obj");
+    write_file(in, mixed_cube_obj());
+    for (const char* ext : {"obj", "glb"}) {
+        const std::string out = scratch(std::string("cube_out.") + ext);
+        std::filesystem::remove(out);
+        const nlohmann::json s = stats("--in " + in + " --factor 4 --surface pn-aen --out " + out);
+        // Read back at factor 1: every output triangle is an input triangle of the second run.
+        const nlohmann::json back = stats("--in " + out + " --factor 1");
+        INFO(ext);
+        CHECK(back["input_triangles"] == s["output_triangles"]);
+        CHECK(back["input_open_edges"] == 0);
+        CHECK(back["output_open_edges"] == 0);
+    }
+    const std::string ply = scratch("cube_out.ply");
+    const nlohmann::json s = stats("--in " + in + " --factor 4 --out " + ply);
+    std::ifstream file(ply, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const auto header_end = bytes.find("end_header\n");
+    REQUIRE(header_end != std::string::npos);
+    const std::size_t v = s["output_vertices"], t = s["output_triangles"];
+    CHECK(bytes.find("element vertex " + std::to_string(v) + "\n") != std::string::npos);
+    CHECK(bytes.find("element face " + std::to_string(t) + "\n") != std::string::npos);
+    CHECK(bytes.size() == header_end + 11 + 32 * v + 13 * t); // 8 floats per vertex; count byte + 3 uint32
+}
+
+TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][mesh][bad_input]") {
+    const std::string out = scratch("never.obj");
+    std::filesystem::remove(out);
+    const std::string cube = scratch("cube_for_errors.obj");
+    write_file(cube, mixed_cube_obj());
+    const std::string truncated = scratch("truncated.glb");
+    write_file(truncated, std::string("glTF\x02\x00\x00\x00\xff\xff\xff\x7f", 12));
+    struct Case {
+        std::string args;
+        int exit_code;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"--in /nonexistent/model.obj --factor 2 --out " + out, 1, "/nonexistent/model.obj"},
+        {"--in " + truncated + " --factor 2 --out " + out, 1, truncated},
+        {"--in " + cube + " --factor 2 --out " + scratch("never.stl"), 2, ".obj, .ply or .glb"},
+        {"--in " + cube + " --factor 2 --edge-length 1 --out " + out, 2, "exactly one of"},
+        {"--in " + cube + " --out " + out, 2, "exactly one of"},
+        {"--in " + cube + " --factor nan --out " + out, 2, "--factor"},
+        {"--in " + cube + " --factor -1 --out " + out, 2, "--factor"},
+        {"--in " + cube + " --dice-rate 2 --out " + out, 2, "--camera"},
+        {"--in " + cube + " --dice-rate 2 --camera 1,2 --out " + out, 2, "--camera"},
+        {"--in " + cube + " --factor 2 --surface smooth --out " + out, 2, "--surface"},
+        {"--in " + cube + " --factor 2 --pattern d3d11-even --out " + out, 2, "--pattern"},
+        {"--in " + cube + " --factor 2", 2, "--out"},
+    };
+    for (const Case& c : cases) {
+        const Run r = ctess_cli("mesh " + c.args);
+        INFO(c.args << "\n" << r.out);
+        CHECK(r.exit_code == c.exit_code);
+        CHECK(r.out.find(c.message) != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(out));
+    }
+}
