@@ -44,8 +44,9 @@ constexpr std::uint32_t cp_max = CTESS_M4_RUN_MAX;
 
 // Output buffers, sized for the largest patch each runtime can give (checked: a case that does not fit fails
 // the run). CP: at most max^2 + 2 vertices and 3 max^2 indices (the size probe's bound, arm_probe_main.cpp);
-// UniformSplit clamps its factors to N^2, and its largest output, at (N^2, N^2, N^2), has N^4 vertices and
-// triangles.
+// UniformSplit runs its cases with factors clamped to N^2 here (the library splits to 32,768, a billion
+// triangles: the deeper splits are tested on the host, tests/uniform/test_uniform_split_deep.cpp), and its
+// largest output, at (N^2, N^2, N^2), has N^4 vertices and triangles.
 constexpr std::uint32_t cp_vertex_capacity = cp_max * cp_max + 2;
 constexpr std::uint32_t split_vertex_capacity = uniform_max * uniform_max * uniform_max * uniform_max;
 constexpr std::uint32_t index_capacity =
@@ -199,8 +200,10 @@ __attribute__((noinline)) void run_uniform(void* context) {
 __attribute__((noinline)) void run_split(void* context) {
     const Job& job = *static_cast<const Job*>(context);
     if (job.phase != Phase::emit) return;
-    const ctess::rt::UniformSplit split(uniform_tables, job.triple->f[0], job.triple->f[1], job.triple->f[2],
-                                        job.options);
+    constexpr float top = static_cast<float>(uniform_max * uniform_max);
+    const auto clamp = [](float f) { return f > top ? top : f; }; // NaN and -inf pass: the library's cases
+    const ctess::rt::UniformSplit split(uniform_tables, clamp(job.triple->f[0]), clamp(job.triple->f[1]),
+                                        clamp(job.triple->f[2]), job.options);
     emit_patch(split, std::span<ctess::uniform::SplitPoint>(split_vertices), *job.result);
 }
 
