@@ -4,7 +4,9 @@
 // past the limits), then patch records tampered with before emit. Properties: setup_patches is ok or a limit;
 // ok totals equal the records' sums; emit_mesh on untouched records is ok, every index names an emitted
 // vertex of its own patch and every barycentric lies in the base triangle; on tampered records it is ok or
-// bad_patch_record, and on any failure nothing is written.
+// bad_patch_record, and on any failure nothing is written. Then quads, arbitrary position ids and PN-AEN
+// adjacency indices (in and out of range) through the welded output (setup_welded, emit_welded_mesh): ok or a
+// limit, every index names a written vertex, and the counts are what emit wrote.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -25,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.dice.eye = {in.float_bits(), in.float_bits(), in.float_bits()};
     if (mode & 2) options.dice.projection_scale = in.float_bits();
     if (mode & 4) options.dice.dice_rate = in.float_bits();
-    options.surface.surface = static_cast<rt::Surface>(in.byte() % 3);
+    options.surface.surface = static_cast<rt::Surface>(in.byte() % 4);
     options.surface.alpha = (mode & 8) ? in.float_bits() : 0.75f;
 
     const unsigned vertex_count = in.byte() % 9;
@@ -93,5 +95,36 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             CTESS_FUZZ_CHECK(i >= r.first_vertex && i < r.first_vertex + r.vertex_count);
         }
     }
+
+    // The welded output of a mixed mesh: the triangles above (at most 8), up to 6 quads, position ids and
+    // adjacency from the input bytes.
+    if (mesh.triangle_count > 8) return 0;
+    std::vector<std::uint32_t> quads(4 * static_cast<std::size_t>(in.byte() % 7));
+    for (std::uint32_t& i : quads) i = (mode & 32) ? in.u32() : in.byte() % (vertex_count + 1);
+    std::vector<std::uint32_t> position_ids(vertex_count);
+    for (std::uint32_t& i : position_ids) i = in.byte() % (vertex_count + 1);
+    std::vector<std::uint32_t> adjacency(12 * (mesh.triangle_count + 2 * (quads.size() / 4)));
+    for (std::uint32_t& i : adjacency) i = (mode & 128) ? in.u32() : in.byte() % (vertex_count + 1);
+    rt::MeshView mixed = mesh;
+    mixed.quad_indices = quads.data();
+    mixed.quad_count = static_cast<std::uint32_t>(quads.size() / 4);
+    mixed.position_ids = position_ids.data();
+    mixed.adjacency = adjacency.data();
+    options.weld.keep_degenerate = (mode & 4) != 0;
+    std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mixed));
+    std::vector<rt::WeldedPatch> patches(mixed.patch_count());
+    rt::WeldedTotals welded;
+    const PipelineStatus ws = rt::setup_welded(tables, mixed, options, edges, patches, welded);
+    if (ws != PipelineStatus::ok) {
+        CTESS_FUZZ_CHECK(ws == PipelineStatus::too_many_vertices || ws == PipelineStatus::too_many_triangles);
+        return 0;
+    }
+    if (welded.vertices > (1u << 18)) return 0;
+    edges.resize(welded.edges);
+    std::vector<rt::TessVertex> wv(welded.vertices);
+    std::vector<std::uint32_t> wi(3 * std::size_t{welded.triangles}, 0xA5A5A5A5u);
+    CTESS_FUZZ_CHECK(rt::emit_welded_mesh(tables, mixed, options, edges, patches, wv, wi) ==
+                     PipelineStatus::ok);
+    for (const std::uint32_t i : wi) CTESS_FUZZ_CHECK(i < welded.vertices);
     return 0;
 }

@@ -15,6 +15,7 @@
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 #include <ctess/runtime/uniform/table_set.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -106,6 +107,40 @@ std::size_t open_edges_by_position(const OutputMesh& mesh) {
     return models::open_edge_count(m, models::build_adjacency(m).position_ids);
 }
 
+// The longest edge of every output triangle in the factor's own unit (DiceRate units for --dice-rate, L for
+// --edge-length: rt::edge_factor of the edge), as median, 99th percentile and maximum. Constant factors have
+// no length unit: empty.
+struct EdgeQuantiles {
+    bool present = false;
+    double median = 0, p99 = 0, max = 0;
+};
+
+EdgeQuantiles longest_edges(const OutputMesh& mesh, const rt::DiceOptions& dice) {
+    EdgeQuantiles q;
+    if (dice.mode == rt::FactorMode::constant || mesh.triangles.empty()) return q;
+    const auto position = [&](std::uint32_t v) {
+        const float* p = &mesh.vertices[8 * std::size_t{v}];
+        return rt::Vec3{p[0], p[1], p[2]};
+    };
+    std::vector<double> longest(mesh.triangle_count());
+    for (std::size_t t = 0; t < longest.size(); ++t) {
+        double l = 0;
+        for (int k = 0; k < 3; ++k)
+            l = std::max<double>(l, rt::edge_factor(position(mesh.triangles[3 * t + k]),
+                                                    position(mesh.triangles[3 * t + (k + 1) % 3]), dice));
+        longest[t] = l;
+    }
+    std::sort(longest.begin(), longest.end());
+    const auto at = [&](double f) {
+        return longest[static_cast<std::size_t>(f * static_cast<double>(longest.size() - 1))];
+    };
+    q.present = true;
+    q.median = at(0.5);
+    q.p99 = at(0.99);
+    q.max = longest.back();
+    return q;
+}
+
 } // namespace
 
 int run_mesh(int argc, char** argv) {
@@ -153,7 +188,7 @@ int run_mesh(int argc, char** argv) {
     view.triangle_count = static_cast<std::uint32_t>(model.triangle_count());
     view.quad_indices = model.quads.data();
     view.quad_count = static_cast<std::uint32_t>(model.quad_count());
-    view.position_ids = adjacency.position_ids.data(); // seams order their edges by position
+    view.position_ids = adjacency.position_ids.data();      // seams order their edges by position
     view.adjacency = adjacency.tessellation_indices.data(); // PN-AEN's neighbours
 
     const rt::CpTableSet& cp = max == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
@@ -206,6 +241,12 @@ int run_mesh(int argc, char** argv) {
             "  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
+        if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
+            text +=
+                fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "
+                            "\"max\": {:.4f}}},\n",
+                            options.dice.mode == rt::FactorMode::camera ? "dice_rate" : "edge_length",
+                            q.median, q.p99, q.max);
         text +=
             fmt::format("  \"seconds\": {{\"load\": {:.6f}, \"adjacency\": {:.6f}, \"setup\": {:.6f}, "
                         "\"emit_and_weld\": {:.6f}, \"write\": {:.6f}, \"total\": {:.6f}}}\n",
