@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include <tiny_gltf.h>
 
@@ -479,6 +481,14 @@ Model load_gltf(std::span<const std::uint8_t> bytes, ModelKind kind, const std::
                               &gltf, &err, &warn, reinterpret_cast<const char*>(bytes.data()), length, dir);
     if (!ok) {
         while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+        // tinygltf rejects a compressed primitive's accessors before the extension can be read: name the
+        // extension from the JSON text (a .glb's JSON chunk is in the same bytes).
+        const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        for (const char* ext : {"KHR_draco_mesh_compression", "EXT_meshopt_compression"})
+            if (text.find(ext) != std::string_view::npos)
+                throw LoadFailure{std::string("uses the glTF extension ") + ext +
+                                  " (compressed geometry), which ctess does not decode (tinygltf: " +
+                                  (err.empty() ? std::string{"unknown error"} : err) + ")"};
         throw LoadFailure{"glTF parse error: " + (err.empty() ? std::string{"unknown"} : err)};
     }
     for (const std::string& ext : gltf.extensionsRequired)
