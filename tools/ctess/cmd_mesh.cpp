@@ -181,6 +181,10 @@ int run_mesh(int argc, char** argv) {
     const std::size_t input_open_edges = models::open_edge_count(model, adjacency.position_ids);
     seconds.adjacency = seconds_since(start);
 
+    // The pipeline counts in 32 bits (the GPU's words); the loaders' own bounds keep models far below.
+    if (model.vertex_count() > 0xFFFFFFFFu || model.triangle_count() > 0xFFFFFFFFu ||
+        model.quad_count() > 0xFFFFFFFFu)
+        throw std::runtime_error(fmt::format("{}: more than 2^32 - 1 vertices or faces", in));
     rt::MeshView view;
     view.vertices = model.vertices.data();
     view.vertex_count = static_cast<std::uint32_t>(model.vertex_count());

@@ -67,6 +67,11 @@ std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment) {
     const std::size_t n = mesh.vertex_count();
     if (n == 0 || mesh.triangles.empty())
         throw std::runtime_error("the tessellated model is empty: nothing to write");
+    // GLB chunk lengths are 32-bit: a larger buffer would be written with wrapped lengths.
+    if (n * 32 + mesh.triangles.size() * 4 > 0xFFFF0000u)
+        throw std::runtime_error(
+            "the tessellated model needs more than 4 GiB, past binary glTF's 32-bit lengths: "
+            "write .ply or .obj");
     tinygltf::Model model;
     model.asset.version = "2.0";
     model.asset.generator = one_line(comment);

@@ -8,6 +8,7 @@
 #include <condition_variable>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
@@ -398,8 +399,13 @@ bool BoundedServer::serve_forever() {
         const auto wait =
             std::chrono::duration_cast<std::chrono::milliseconds>(next - Clock::now()).count() + 1;
         if (::poll(polled.data(), polled.size(), static_cast<int>(std::max<long long>(wait, 0))) < 0 &&
-            errno != EINTR)
-            return false;
+            errno != EINTR) {
+            // Workers may be inside a handler that holds this server: returning would let the caller destroy
+            // it under them. The loop failing ends the process.
+            std::perror("ctess serve: poll");
+            std::fflush(nullptr);
+            std::_Exit(1);
+        }
 
         // Answered requests: the connection waits for its next request, which may already be buffered.
         if (polled[1].revents) {

@@ -40,7 +40,8 @@ class BoundedServer : public httplib::Server {
     // Binds and listens on host:port (port 0: a free port); returns the bound port, or -1.
     int bind_and_listen(const std::string& host, unsigned port);
 
-    // Serves until the process is signalled; returns false only if the loop itself fails.
+    // Serves until the process is signalled. Returns false only before serving (no listening socket, no wake
+    // pipe); once the workers run it never returns, and a failure of the loop itself ends the process (exit 1).
     bool serve_forever();
 
     const ServeLimits& limits() const { return limits_; }

@@ -336,9 +336,14 @@ class GltfReader {
             float* out = model_.vertices.data() + (base + i) * model_vertex_floats;
             double p[3];
             for (int c = 0; c < 3; ++c) p[c] = read_component(positions, i, c);
-            for (int r = 0; r < 3; ++r)
-                out[r] = canonical_zero(static_cast<float>(world[r] * p[0] + world[4 + r] * p[1] +
-                                                           world[8 + r] * p[2] + world[12 + r]));
+            for (int r = 0; r < 3; ++r) {
+                const double d = world[r] * p[0] + world[4 + r] * p[1] + world[8 + r] * p[2] + world[12 + r];
+                // A double past the float range has no float value (converting it is undefined behaviour).
+                if (!(std::fabs(d) <= static_cast<double>(std::numeric_limits<float>::max())))
+                    throw LoadFailure{"vertex " + std::to_string(i) +
+                                      " is outside the float range after its node transform"};
+                out[r] = canonical_zero(static_cast<float>(d));
+            }
             if (has_normals) {
                 double n[3], t[3];
                 for (int c = 0; c < 3; ++c) n[c] = read_component(normals, i, c);

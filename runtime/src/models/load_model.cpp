@@ -21,6 +21,10 @@ static_assert(model_vertex_floats == ctess::rt::mesh_vertex_floats,
 namespace detail {
 
 void append_face(Model& model, const std::uint32_t* corners, unsigned corner_count) {
+    // The same bound as the glTF loader's indices (2^27): an OBJ of long fans could otherwise ask for
+    // billions of triangles from a few GB of text.
+    if (model.triangles.size() + model.quads.size() + corner_count > (std::size_t{1} << 27))
+        throw LoadFailure{"more than 2^27 face indices"};
     const float* v = model.vertices.data();
     for (unsigned i = 0; i < corner_count; ++i)
         for (unsigned j = i + 1; j < corner_count; ++j)

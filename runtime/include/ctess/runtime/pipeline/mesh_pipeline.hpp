@@ -63,12 +63,13 @@ struct MeshView {
     std::uint32_t triangle_count = 0;
     const std::uint32_t* quad_indices = nullptr; // 4 per quad q0 q1 q2 q3, counter-clockwise
     std::uint32_t quad_count = 0;
-    // Optional (null: none). position_ids: vertex_count entries, the first vertex with the same position
+    // Optional (null: none), each as long as stated (as indices holds 3 x triangle_count). position_ids:
+    // vertex_count entries, the first vertex with the same position
     // (models::Adjacency::position_ids); shared edges are then ordered by position, so the two sides of a uv
     // or normal seam evaluate an edge point with the same operations (without them, by vertex index).
     const std::uint32_t* position_ids = nullptr;
-    // adjacency: 12 indices per face triangle, meshopt_generateTessellationIndexBuffer's layout
-    // (models::Adjacency::tessellation_indices): the base triangles, then each quad's (q0, q1, q2) and
+    // adjacency: 12 x (triangle_count + 2 x quad_count) entries, meshopt_generateTessellationIndexBuffer's
+    // layout (models::Adjacency::tessellation_indices): the base triangles, then each quad's (q0, q1, q2) and
     // (q0, q2, q3). Read by Surface::pn_aen; without it PN-AEN treats every edge as a boundary.
     const std::uint32_t* adjacency = nullptr;
     std::uint64_t patch_count() const { return std::uint64_t{triangle_count} + quad_count; }
