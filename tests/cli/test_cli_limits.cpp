@@ -1,6 +1,7 @@
 // The CLI's bounded work and loud failures (docs/cli.md, "Limits" and "Errors and bad input"): every
 // command's work is bounded before it starts, every output is checked through close, and a failed write never
 // leaves a half-written file behind.
+#include "cli/serve_process.hpp"
 #include <catch2/catch.hpp>
 
 #include <arpa/inet.h>
@@ -144,49 +145,8 @@ TEST_CASE("ctess <command> --help prints that command's usage", "[cli]") {
 
 namespace {
 
-// `ctess serve --port 0`, stopped (SIGTERM) when this goes out of scope; port is 0 if it did not start.
-struct Server {
-    pid_t pid = -1;
-    int port = 0;
-    std::string shaders = temp_path("serve_shaders");
-
-    Server() {
-        std::filesystem::create_directories(shaders);
-        int fds[2];
-        REQUIRE(::pipe(fds) == 0);
-        pid = ::fork();
-        REQUIRE(pid >= 0);
-        if (pid == 0) {
-            ::dup2(fds[1], 1);
-            ::close(fds[0]);
-            ::close(fds[1]);
-            ::execl(CTESS_CLI, "ctess", "serve", "--port", "0", "--shaders", shaders.c_str(), nullptr);
-            ::_exit(127);
-        }
-        ::close(fds[1]);
-        // The first line names the bound port; wait at most 10 s for it.
-        std::string line;
-        pollfd p{fds[0], POLLIN, 0};
-        while (line.find('\n') == std::string::npos && ::poll(&p, 1, 10'000) > 0) {
-            char buf[256];
-            const ssize_t n = ::read(fds[0], buf, sizeof buf);
-            if (n <= 0) break;
-            line.append(buf, static_cast<std::size_t>(n));
-        }
-        ::close(fds[0]);
-        const std::size_t at = line.find("127.0.0.1:");
-        if (at != std::string::npos) port = std::atoi(line.c_str() + at + 10);
-    }
-    ~Server() {
-        if (pid > 0) {
-            ::kill(pid, SIGTERM);
-            ::waitpid(pid, nullptr, 0);
-        }
-        std::filesystem::remove_all(shaders);
-    }
-    Server(const Server&) = delete;
-    Server& operator=(const Server&) = delete;
-};
+// `ctess serve --port 0` on a free port, stopped when it goes out of scope (cli/serve_process.hpp).
+using Server = ctess::test::ServeProcess;
 
 struct Reply {
     int status = 0;
