@@ -20,12 +20,14 @@ void require_error(const LoadResult& r, const std::string& name, const std::stri
 const float tri_positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
 // One triangle in a .glb; the accessor's count, the index values and the header's length can be overridden.
-std::string triangle_glb(std::uint16_t third_index = 2, const std::string& count = "3") {
+std::string triangle_glb(std::uint16_t third_index = 2, const std::string& count = "3",
+                         const std::string& node = R"({"mesh":0})") {
     Bytes b;
     for (float f : tri_positions) b.put(f);
     b.put<std::uint16_t>({0, 1, third_index, 0});
     const std::string json =
-        R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[)" + node +
+        R"(],)"
         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
         R"("accessors":[{"bufferView":0,"componentType":5126,"count":)" +
         count +
@@ -116,6 +118,15 @@ TEST_CASE("bad file: NaN or infinite attributes") {
     REQUIRE(load_bytes("v +0 -0 1e-60\nv 1E0 0 0\r\nv 0 1.5e-0 0\nf 1 2 3\n", ModelKind::obj).ok());
     require_error(load_bytes("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n", ModelKind::obj), "test",
                   "line 2: '1e39' is not a finite number");
+}
+
+TEST_CASE("bad file: a node transform that takes a finite position past the float range is an error") {
+    // 1 x 1e39 has no float value; the loader refuses it instead of converting (undefined behaviour).
+    require_error(
+        load_bytes(triangle_glb(2, "3", R"({"mesh":0,"scale":[1e39,1e39,1e39]})"), ModelKind::gltf_binary),
+        "test", "outside the float range after its node transform");
+    REQUIRE(load_bytes(triangle_glb(2, "3", R"({"mesh":0,"scale":[1e30,1e30,1e30]})"), ModelKind::gltf_binary)
+                .ok());
 }
 
 TEST_CASE("bad file: a model whose faces are all degenerate, or with none, is an error") {

@@ -338,8 +338,9 @@ class GltfReader {
             for (int c = 0; c < 3; ++c) p[c] = read_component(positions, i, c);
             for (int r = 0; r < 3; ++r) {
                 const double d = world[r] * p[0] + world[4 + r] * p[1] + world[8 + r] * p[2] + world[12 + r];
-                // A double past the float range has no float value (converting it is undefined behaviour).
-                if (!(std::fabs(d) <= static_cast<double>(std::numeric_limits<float>::max())))
+                // A finite double past the float range has no float value (converting it is undefined
+                // behaviour); NaN and infinities convert, and the model check names them.
+                if (std::isfinite(d) && std::fabs(d) > static_cast<double>(std::numeric_limits<float>::max()))
                     throw LoadFailure{"vertex " + std::to_string(i) +
                                       " is outside the float range after its node transform"};
                 out[r] = canonical_zero(static_cast<float>(d));
