@@ -73,8 +73,9 @@ TEST_CASE("ctess mesh: a closed mixed model with split normals stays closed for 
 }
 
 TEST_CASE("ctess mesh: an open model's boundary is its input boundary, subdivided", "[cli][mesh]") {
-    // A 2 x 1 strip of quads: 6 boundary edges. An edge of uniform factor F has F segments, and a CP edge at a
-    // power of two F too (§1: the top of a token's range), so the output has 6 F open edges and 4 F^2 triangles.
+    // A 2 x 1 strip of quads: 6 boundary edges. An edge of uniform factor F has F segments, and a CP edge at
+    // a power of two F too (§1: the top of a token's range), so the output has 6 F open edges and 4 F^2
+    // triangles.
     const std::string in = scratch("strip.obj");
     write_file(in, "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n");
     for (const std::string pattern : {"cp", "uniform"})

@@ -41,7 +41,8 @@ class BoundedServer : public httplib::Server {
     int bind_and_listen(const std::string& host, unsigned port);
 
     // Serves until the process is signalled. Returns false only before serving (no listening socket, no wake
-    // pipe); once the workers run it never returns, and a failure of the loop itself ends the process (exit 1).
+    // pipe); once the workers run it never returns, and a failure of the loop itself ends the process (exit
+    // 1).
     bool serve_forever();
 
     const ServeLimits& limits() const { return limits_; }
