@@ -178,6 +178,11 @@ TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][me
         {"--in " + cube + " --factor 2 --surface smooth --out " + out, 2, "--surface"},
         {"--in " + cube + " --factor 2 --pattern d3d11-even --out " + out, 2, "--pattern"},
         {"--in " + cube + " --factor 2", 2, "--out"},
+        // 4 quads and 4 triangles at factor 64: 4 x 2 x 4096 + 4 x 4096 = 49,152 triangles, above a limit of
+        // 1,000.
+        {"--in " + cube + " --factor 64 --max-triangles 1000 --out " + out, 1,
+         "49152 triangles, above the limit of 1000"},
+        {"--in " + cube + " --factor 2 --max-triangles 0 --out " + out, 2, "--max-triangles"},
     };
     for (const Case& c : cases) {
         const Run r = ctess_cli("mesh " + c.args);

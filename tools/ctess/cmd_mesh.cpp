@@ -146,7 +146,7 @@ EdgeQuantiles longest_edges(const OutputMesh& mesh, const rt::DiceOptions& dice)
 int run_mesh(int argc, char** argv) {
     const Args args(argc, argv, 2,
                     {"in", "out", "pattern", "max", "factor", "edge-length", "dice-rate", "camera", "fov",
-                     "resolution", "surface", "quad-rule"},
+                     "resolution", "surface", "quad-rule", "max-triangles"},
                     {"stats", "keep-degenerate"});
     const std::string in = args.get("in");
     const std::string out = args.get_or("out", "");
@@ -168,6 +168,12 @@ int run_mesh(int argc, char** argv) {
                             ? rt::QuadRule::longer_pair
                             : rt::QuadRule::as_labelled;
     options.weld.keep_degenerate = args.has("keep-degenerate");
+    // The output is held in memory (about 32 bytes per triangle) before it is written: a bound the user can
+    // raise, so that a factor typed too large is an error, not an allocation the machine cannot give.
+    const unsigned max_triangles =
+        args.has("max-triangles")
+            ? parse_unsigned(args.get("max-triangles"), "--max-triangles", 1, 0xFFFFFFFFu / 3)
+            : mesh_cli_default_max_triangles;
 
     StageSeconds seconds;
     auto start = Clock::now();
@@ -204,6 +210,11 @@ int run_mesh(int argc, char** argv) {
     rt::PipelineStatus status = rt::setup_welded(cp, uniform, view, options, edges, patches, totals);
     if (status != rt::PipelineStatus::ok)
         throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+    if (totals.triangles > max_triangles)
+        throw std::runtime_error(
+            fmt::format("{}: the tessellated model would have {} triangles, above the limit of "
+                        "{} (--max-triangles; lower the factor or raise the limit)",
+                        in, totals.triangles, max_triangles));
     edges.resize(totals.edges);
     seconds.setup = seconds_since(start);
 

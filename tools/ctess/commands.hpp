@@ -26,6 +26,9 @@ int run_mesh(int argc, char** argv); // a model file tessellated and welded (cmd
 // The largest uniform factor `ctess pattern` (and /api/pattern) writes: at most 262,144 triangles.
 inline constexpr unsigned uniform_cli_max_factor = 512;
 
+// The most triangles `ctess mesh` writes unless --max-triangles says otherwise (about 4 GiB in memory).
+inline constexpr unsigned mesh_cli_default_max_triangles = 1u << 27;
+
 // The largest grid `ctess strip` prints (segments per direction): 2,099,200 indices at most.
 inline constexpr unsigned strip_cli_max_segments = 1024;
 int run_strip(int argc, char** argv);
