@@ -156,16 +156,8 @@ struct Reply {
 // One raw HTTP/1.1 request to 127.0.0.1:port (Connection: close), reading at most `limit` bytes, each read
 // bounded by a 10 s timeout.
 Reply http(int port, const std::string& request, std::size_t limit = 64u << 20) {
-    const int s = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int s = ctess::test::connect_loopback(port);
     REQUIRE(s >= 0);
-    timeval tv{10, 0};
-    ::setsockopt(s, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
-    ::setsockopt(s, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(static_cast<std::uint16_t>(port));
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    REQUIRE(::connect(s, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
     for (std::size_t sent = 0; sent < request.size();) {
         const ssize_t n = ::send(s, request.data() + sent, request.size() - sent, MSG_NOSIGNAL);
         REQUIRE(n > 0);

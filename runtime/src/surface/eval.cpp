@@ -62,6 +62,28 @@ SurfacePoint edge_point(const SurfaceCorner& a, const SurfaceCorner& b, float s,
     return out;
 }
 
+// The PN cubic at weights (w0, w1, w2) from its six edge control points b = {b210, b120, b021, b012, b102,
+// b201} (Vlachos et al. 2001): the centre b111 from them, the position, and the quadratic normal field. PN
+// and PN-AEN differ only in b.
+struct PnCubic {
+    Vec3 position, normal;
+};
+
+PnCubic pn_cubic(const SurfaceCorner (&c)[3], const Vec3 (&b)[6], float w0, float w1, float w2) {
+    const Vec3 e = (1.0f / 6.0f) * (((b[0] + b[1]) + (b[2] + b[3])) + (b[4] + b[5]));
+    const Vec3 v = (1.0f / 3.0f) * ((c[0].position + c[1].position) + c[2].position);
+    const Vec3 b111 = e + 0.5f * (e - v);
+    const float q0 = w0 * w0, q1 = w1 * w1, q2 = w2 * w2;
+    const Vec3 pn = (q0 * w0) * c[0].position + (q1 * w1) * c[1].position + (q2 * w2) * c[2].position +
+                    (3.0f * q0 * w1) * b[0] + (3.0f * q1 * w0) * b[1] + (3.0f * q1 * w2) * b[2] +
+                    (3.0f * q2 * w1) * b[3] + (3.0f * q2 * w0) * b[4] + (3.0f * q0 * w2) * b[5] +
+                    (6.0f * w0 * w1 * w2) * b111;
+    const Vec3 nn = q0 * c[0].normal + q1 * c[1].normal + q2 * c[2].normal +
+                    (w0 * w1) * pn_edge_normal(c[0], c[1]) + (w1 * w2) * pn_edge_normal(c[1], c[2]) +
+                    (w2 * w0) * pn_edge_normal(c[2], c[0]);
+    return {pn, nn};
+}
+
 // A point strictly inside the triangle, weights w0 + w1 + w2 = 1.
 SurfacePoint interior_point(const SurfaceCorner (&c)[3], float w0, float w1, float w2,
                             const SurfaceOptions& opt) {
@@ -72,22 +94,13 @@ SurfacePoint interior_point(const SurfaceCorner (&c)[3], float w0, float w1, flo
     out.uv[1] = w0 * c[0].uv[1] + w1 * c[1].uv[1] + w2 * c[2].uv[1];
     Vec3 p = flat_p, n = flat_n;
     if (opt.surface == Surface::pn_triangles) {
-        const Vec3 b210 = pn_edge_point(c[0], c[1]), b120 = pn_edge_point(c[1], c[0]);
-        const Vec3 b021 = pn_edge_point(c[1], c[2]), b012 = pn_edge_point(c[2], c[1]);
-        const Vec3 b102 = pn_edge_point(c[2], c[0]), b201 = pn_edge_point(c[0], c[2]);
-        const Vec3 e = (1.0f / 6.0f) * (((b210 + b120) + (b021 + b012)) + (b102 + b201));
-        const Vec3 v = (1.0f / 3.0f) * ((c[0].position + c[1].position) + c[2].position);
-        const Vec3 b111 = e + 0.5f * (e - v);
-        const float q0 = w0 * w0, q1 = w1 * w1, q2 = w2 * w2;
-        const Vec3 pn = (q0 * w0) * c[0].position + (q1 * w1) * c[1].position + (q2 * w2) * c[2].position +
-                        (3.0f * q0 * w1) * b210 + (3.0f * q1 * w0) * b120 + (3.0f * q1 * w2) * b021 +
-                        (3.0f * q2 * w1) * b012 + (3.0f * q2 * w0) * b102 + (3.0f * q0 * w2) * b201 +
-                        (6.0f * w0 * w1 * w2) * b111;
-        const Vec3 nn = q0 * c[0].normal + q1 * c[1].normal + q2 * c[2].normal +
-                        (w0 * w1) * pn_edge_normal(c[0], c[1]) + (w1 * w2) * pn_edge_normal(c[1], c[2]) +
-                        (w2 * w0) * pn_edge_normal(c[2], c[0]);
-        p = blend(flat_p, pn, opt.alpha);
-        n = blend(flat_n, nn, opt.alpha);
+        const PnCubic pn =
+            pn_cubic(c,
+                     {pn_edge_point(c[0], c[1]), pn_edge_point(c[1], c[0]), pn_edge_point(c[1], c[2]),
+                      pn_edge_point(c[2], c[1]), pn_edge_point(c[2], c[0]), pn_edge_point(c[0], c[2])},
+                     w0, w1, w2);
+        p = blend(flat_p, pn.position, opt.alpha);
+        n = blend(flat_n, pn.normal, opt.alpha);
     } else if (opt.surface == Surface::phong) {
         const Vec3 ph =
             (w0 * w0) * c[0].position + (w1 * w1) * c[1].position + (w2 * w2) * c[2].position +
@@ -279,25 +292,16 @@ SurfacePoint aen_interior_point(const SurfaceCorner (&c)[3], const EdgeNormals (
     const Vec3 flat_n = w0 * c[0].normal + w1 * c[1].normal + w2 * c[2].normal;
     out.uv[0] = w0 * c[0].uv[0] + w1 * c[1].uv[0] + w2 * c[2].uv[0];
     out.uv[1] = w0 * c[0].uv[1] + w1 * c[1].uv[1] + w2 * c[2].uv[1];
-    const Vec3 b210 = aen_control(c[0].position, c[0].normal, en[0].at_from, c[1].position);
-    const Vec3 b120 = aen_control(c[1].position, c[1].normal, en[0].at_to, c[0].position);
-    const Vec3 b021 = aen_control(c[1].position, c[1].normal, en[1].at_from, c[2].position);
-    const Vec3 b012 = aen_control(c[2].position, c[2].normal, en[1].at_to, c[1].position);
-    const Vec3 b102 = aen_control(c[2].position, c[2].normal, en[2].at_from, c[0].position);
-    const Vec3 b201 = aen_control(c[0].position, c[0].normal, en[2].at_to, c[2].position);
-    const Vec3 e = (1.0f / 6.0f) * (((b210 + b120) + (b021 + b012)) + (b102 + b201));
-    const Vec3 v = (1.0f / 3.0f) * ((c[0].position + c[1].position) + c[2].position);
-    const Vec3 b111 = e + 0.5f * (e - v);
-    const float q0 = w0 * w0, q1 = w1 * w1, q2 = w2 * w2;
-    const Vec3 pn = (q0 * w0) * c[0].position + (q1 * w1) * c[1].position + (q2 * w2) * c[2].position +
-                    (3.0f * q0 * w1) * b210 + (3.0f * q1 * w0) * b120 + (3.0f * q1 * w2) * b021 +
-                    (3.0f * q2 * w1) * b012 + (3.0f * q2 * w0) * b102 + (3.0f * q0 * w2) * b201 +
-                    (6.0f * w0 * w1 * w2) * b111;
-    const Vec3 nn = q0 * c[0].normal + q1 * c[1].normal + q2 * c[2].normal +
-                    (w0 * w1) * pn_edge_normal(c[0], c[1]) + (w1 * w2) * pn_edge_normal(c[1], c[2]) +
-                    (w2 * w0) * pn_edge_normal(c[2], c[0]);
-    out.position = without_negative_zero(blend(flat_p, pn, alpha));
-    out.normal = normalize_or_zero(blend(flat_n, nn, alpha));
+    const PnCubic pn = pn_cubic(c,
+                                {aen_control(c[0].position, c[0].normal, en[0].at_from, c[1].position),
+                                 aen_control(c[1].position, c[1].normal, en[0].at_to, c[0].position),
+                                 aen_control(c[1].position, c[1].normal, en[1].at_from, c[2].position),
+                                 aen_control(c[2].position, c[2].normal, en[1].at_to, c[1].position),
+                                 aen_control(c[2].position, c[2].normal, en[2].at_from, c[0].position),
+                                 aen_control(c[0].position, c[0].normal, en[2].at_to, c[2].position)},
+                                w0, w1, w2);
+    out.position = without_negative_zero(blend(flat_p, pn.position, alpha));
+    out.normal = normalize_or_zero(blend(flat_n, pn.normal, alpha));
     return out;
 }
 
