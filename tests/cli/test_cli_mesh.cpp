@@ -88,6 +88,28 @@ TEST_CASE("ctess mesh: an open model's boundary is its input boundary, subdivide
         }
 }
 
+TEST_CASE("ctess mesh: uniform density above N splits (§7.5): closed stays closed, nothing clamped",
+          "[cli][mesh]") {
+    const std::string in = scratch("mixed_cube_split.obj");
+    write_file(in, mixed_cube_obj());
+    for (const char* surface : {"flat", "pn-aen"})
+        for (const char* factors : {"--factor 40", "--edge-length 0.01"}) {
+            const nlohmann::json s =
+                stats(std::string("--in ") + in + " --pattern uniform --surface " + surface + " " + factors);
+            CHECK(s["clamped_edges"] == 0);
+            CHECK(s["output_open_edges"] == 0);
+            // Clamped to N = 16 a face would have at most 16^2 triangles (a quad 2 x 16^2).
+            CHECK(s["output_triangles"].get<long>() > 12 * 16 * 16);
+        }
+    // An edge of factor 100 splits into ceil(100 / 16) = 7 pieces of factor 100 / 7, each diced at 14
+    // (§3.5): 98 segments on each of the strip's 6 boundary edges.
+    const std::string strip = scratch("strip_split.obj");
+    write_file(strip, "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n");
+    const nlohmann::json s = stats("--in " + strip + " --pattern uniform --factor 100");
+    CHECK(s["output_open_edges"] == 6 * 98);
+    CHECK(s["clamped_edges"] == 0);
+}
+
 TEST_CASE("ctess mesh: real closed models stay closed (assimp-testmodels)", "[cli][mesh][real]") {
     const std::vector<std::string> closed = {
         "OBJ/box.obj", "OBJ/testmixed.obj", "glTF2/BoxTextured-glTF/BoxTextured.gltf",

@@ -141,6 +141,14 @@ EdgeQuantiles longest_edges(const OutputMesh& mesh, const rt::DiceOptions& dice)
     return q;
 }
 
+void check_triangle_limit(const std::string& in, std::uint32_t triangles, unsigned max_triangles) {
+    if (triangles > max_triangles)
+        throw std::runtime_error(
+            fmt::format("{}: the tessellated model would have {} triangles, above the limit "
+                        "of {} (--max-triangles; lower the factor or raise the limit)",
+                        in, triangles, max_triangles));
+}
+
 } // namespace
 
 int run_mesh(int argc, char** argv) {
@@ -160,7 +168,8 @@ int run_mesh(int argc, char** argv) {
     const unsigned max = max_factor_from(args);
     rt::PipelineOptions options;
     options.dice = dice_options_from(args);
-    options.pattern = pattern == "cp" ? rt::Pattern::cp : rt::Pattern::uniform;
+    // Uniform density at any factor: patches above the table's N split (docs/algorithm.md §7.5).
+    options.pattern = pattern == "cp" ? rt::Pattern::cp : rt::Pattern::uniform_split;
     options.surface.surface =
         surface_from(choice(args.get_or("surface", "flat"), {"flat", "pn", "pn-aen", "phong"}, "--surface"));
     options.quad_rule = choice(args.get_or("quad-rule", "longer-pair"), {"longer-pair", "as-labelled"},
@@ -204,17 +213,24 @@ int run_mesh(int argc, char** argv) {
     const rt::CpTableSet& cp = max == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
     const rt::UniformTableSet& uniform = rt::uniform_tables;
     start = Clock::now();
+    // The unwelded counts first: they come from the patterns' counts alone, where the weld walks every
+    // patch's output, so a factor typed too large is refused before any patch is tessellated. The welded
+    // output has at most as many triangles.
+    {
+        std::vector<rt::PatchRecord> records(view.patch_count());
+        rt::PipelineTotals unwelded;
+        const rt::PipelineStatus counted = rt::setup_patches(cp, uniform, view, options, records, unwelded);
+        if (counted != rt::PipelineStatus::ok)
+            throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(counted)));
+        check_triangle_limit(in, unwelded.triangles, max_triangles);
+    }
     std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(view));
     std::vector<rt::WeldedPatch> patches(view.patch_count());
     rt::WeldedTotals totals;
     rt::PipelineStatus status = rt::setup_welded(cp, uniform, view, options, edges, patches, totals);
     if (status != rt::PipelineStatus::ok)
         throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
-    if (totals.triangles > max_triangles)
-        throw std::runtime_error(
-            fmt::format("{}: the tessellated model would have {} triangles, above the limit of "
-                        "{} (--max-triangles; lower the factor or raise the limit)",
-                        in, totals.triangles, max_triangles));
+    check_triangle_limit(in, totals.triangles, max_triangles);
     edges.resize(totals.edges);
     seconds.setup = seconds_since(start);
 

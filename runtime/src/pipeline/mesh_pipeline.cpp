@@ -17,6 +17,7 @@
 
 #include <ctess/core/patch_concept.hpp>
 #include <ctess/cp/quad.hpp>
+#include <ctess/runtime/uniform/split.hpp>
 
 namespace ctess::rt {
 
@@ -163,9 +164,13 @@ TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const Pa
 // Distinct interior parameters of one edge's line, ascending, units of cp::fixed_one. The set is
 // mirror-symmetric (§1.2, §3.2), so it is the same measured from either end.
 struct EdgeParams {
-    std::array<std::uint32_t, cp::max_segments + 1> value{};
+    std::vector<std::uint32_t> value; // count used; a split uniform edge has up to 32,767
     unsigned count = 0;
 
+    void reset(std::size_t capacity) {
+        if (value.size() < capacity) value.resize(capacity);
+        count = 0;
+    }
     void finish() {
         std::sort(value.begin(), value.begin() + count);
         count = static_cast<unsigned>(std::unique(value.begin(), value.begin() + count) - value.begin());
@@ -181,6 +186,7 @@ struct EdgeParams {
 // The CP family (docs/algorithm.md §2): rotation by the smallest edge, CP line states, the setup block.
 struct CpFamily {
     using patch_type = CpPatch;
+    static constexpr bool own_diagonal = false; // a quad's diagonal takes q0q1's factor (§7.2)
     const CpTableSet& tables;
 
     // Pattern factors f (rotation already applied) into line states.
@@ -225,7 +231,7 @@ struct CpFamily {
     void params_of_state(cp::LineState state, EdgeParams& out) const {
         std::array<std::uint32_t, cp::max_segments + 1> points{};
         const unsigned n = cp::edge_points(cp::clamp_line_state(state, tables.max_factor), points.data());
-        out.count = 0;
+        out.reset(points.size());
         for (unsigned i = 0; i < n; ++i)
             if (points[i] != 0 && points[i] != one) out.value[out.count++] = points[i];
         out.finish();
@@ -241,6 +247,7 @@ struct CpFamily {
 // The uniform family (§3.4): rotation 0, each base edge's factor rounded and clamped to [1, N].
 struct UniformFamily {
     using patch_type = UniformPatch;
+    static constexpr bool own_diagonal = true; // a quad's diagonal takes its own factor (§7.2)
     const UniformTableSet& tables;
 
     void set_lines(PatchRecord& rec, const float (&f)[3]) const {
@@ -270,7 +277,7 @@ struct UniformFamily {
         return uniform_base_point(patch, i);
     }
     void params_of_factor(std::uint32_t n, EdgeParams& out) const {
-        out.count = 0;
+        out.reset(n);
         for (std::uint32_t i = 1; i < n; ++i)
             out.value[out.count++] = uniform_weight_to_fixed(uniform::edge_parameter(i, n));
         out.finish();
@@ -281,6 +288,100 @@ struct UniformFamily {
     void record_edge_params(const PatchRecord& rec, unsigned k, EdgeParams& out) const {
         params_of_factor(rec.uniform_factor(k), out);
     }
+};
+
+// A UniformSplit (§3.5) in the pipeline's shared, counter-clockwise layout, emitted once, as an indexed
+// patch: the split is a tree walk with no random access, so its points and triangles are kept.
+class SplitPatch {
+  public:
+    using point_type = uniform::SplitPoint;
+    SplitPatch(const UniformTableSet& tables, const PatchRecord& rec)
+        : split_(tables, static_cast<float>(rec.uniform_factor(0)), static_cast<float>(rec.uniform_factor(1)),
+                 static_cast<float>(rec.uniform_factor(2)), uniform_pipeline_options) {
+        const Counts c = split_.counts();
+        points_.resize(c.vertices);
+        indices_.resize(c.index_count());
+        if (!split_.emit(points_, indices_)) points_.clear(), indices_.clear();
+    }
+    Counts counts() const noexcept {
+        return {static_cast<std::uint32_t>(points_.size()), static_cast<std::uint32_t>(indices_.size() / 3)};
+    }
+    bool emit(std::span<point_type> points, std::span<std::uint32_t> indices) const noexcept {
+        if (points.size() < points_.size() || indices.size() < indices_.size()) return false;
+        std::copy(points_.begin(), points_.end(), points.begin());
+        std::copy(indices_.begin(), indices_.end(), indices.begin());
+        return true;
+    }
+    point_type vertex(std::uint32_t i) const noexcept { return points_[i]; }
+    std::array<std::uint32_t, 3> triangle(std::uint32_t p) const noexcept {
+        return {indices_[3 * std::size_t{p}], indices_[3 * std::size_t{p} + 1],
+                indices_[3 * std::size_t{p} + 2]};
+    }
+
+  private:
+    UniformSplit split_;
+    std::vector<point_type> points_;
+    std::vector<std::uint32_t> indices_;
+};
+
+// Uniform density at any factor (§7.5): each base edge's factor rounded and clamped to [1, 32768]
+// (uniform_split_max_factor), patches above N split with the table's own patterns (UniformSplit), their
+// points converted to base weights by to_base_weights. Up to N it is UniformFamily's output exactly.
+struct UniformSplitFamily {
+    using patch_type = SplitPatch;
+    static constexpr bool own_diagonal = true;
+    const UniformTableSet& tables;
+
+    static std::uint32_t factor(float f) { return uniform_factor(f, uniform_split_max_factor); }
+    static UniformSplit split_of(const UniformTableSet& tables, const PatchRecord& rec) {
+        return UniformSplit(tables, static_cast<float>(rec.uniform_factor(0)),
+                            static_cast<float>(rec.uniform_factor(1)),
+                            static_cast<float>(rec.uniform_factor(2)), uniform_pipeline_options);
+    }
+    void set_lines(PatchRecord& rec, const float (&f)[3]) const {
+        for (unsigned k = 0; k < 3; ++k) rec.set_uniform_factor(k, factor(f[k]));
+    }
+    void setup(PatchRecord& rec, const float (&)[3]) const {
+        set_lines(rec, rec.factor);
+        const Counts c = split_of(tables, rec).counts();
+        // Counts past 32 bits come back {0, 0} (split.hpp; none with the shipped tables): as many vertices as
+        // a record can hold, so the totals check refuses the mesh (too_many_vertices) instead of losing the
+        // patch.
+        const bool overflow = c.triangles == 0;
+        rec.vertex_count = overflow ? 0xFFFFFFFFu : c.vertices;
+        rec.triangle_count = overflow ? 0xFFFFFFFFu : c.triangles;
+    }
+    bool clamped(float f) const {
+        return uniform_factor(f, uniform_split_max_factor + 1) > uniform_split_max_factor;
+    }
+    bool record_counts(const PatchRecord& rec, bool culled, Counts& counts) const {
+        if (culled) return true;
+        if (rec.rotation != 0) return false;
+        for (unsigned k = 0; k < 3; ++k)
+            if (rec.uniform_factor(k) < 1 || rec.uniform_factor(k) > uniform_split_max_factor ||
+                rec.t16[k] != 0)
+                return false;
+        counts = split_of(tables, rec).counts();
+        return true;
+    }
+    patch_type patch(const PatchRecord& rec) const { return SplitPatch(tables, rec); }
+    patch_type welded_patch(const PatchRecord& rec) const { return SplitPatch(tables, rec); }
+    static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
+        return to_base_weights(patch.vertex(i));
+    }
+    void params_of_factor(std::uint32_t n, EdgeParams& out) const {
+        const std::uint32_t count = UniformSplit::root_edge_point_count(tables, static_cast<float>(n));
+        points_.resize(count);
+        UniformSplit::root_edge_points(tables, static_cast<float>(n), points_);
+        out.reset(count);
+        for (std::uint32_t i = 1; i + 1 < count; ++i) out.value[out.count++] = to_base_weights(points_[i]).u;
+        out.finish();
+    }
+    void edge_params(float f, EdgeParams& out) const { params_of_factor(factor(f), out); }
+    void record_edge_params(const PatchRecord& rec, unsigned k, EdgeParams& out) const {
+        params_of_factor(rec.uniform_factor(k), out);
+    }
+    mutable std::vector<uniform::SplitPoint> points_; // scratch of params_of_factor
 };
 
 // What a family gives the loops below: an indexed patch type and its setup, record check and base points.
@@ -344,7 +445,7 @@ PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32
     rec.setup[quad_setup_word::q3_factor] = std::bit_cast<std::uint32_t>(f[3]);
     unsigned r;
     float diagonal;
-    if constexpr (std::is_same_v<F, UniformFamily>) {
+    if constexpr (F::own_diagonal) {
         r = uniform_quad_rotation(mesh, w, options.quad_rule);
         diagonal = mesh_edge_factor(mesh, w[(1 + r) % 4], w[(3 + r) % 4], options.dice);
         clamped += family.clamped(diagonal) ? 1u : 0u;
@@ -420,16 +521,32 @@ bool record_counts(const F& family, const MeshView& mesh, std::uint32_t p, const
 }
 
 PipelineStatus check_options(const UniformTableSet* uniform, const PipelineOptions& options) {
-    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
+    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform &&
+        options.pattern != Pattern::uniform_split)
         return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
-    if (options.pattern == Pattern::uniform && uniform == nullptr) return PipelineStatus::no_uniform_tables;
+    if (options.pattern != Pattern::cp && uniform == nullptr) return PipelineStatus::no_uniform_tables;
     const Surface surface = options.surface.surface;
     if (surface != Surface::flat && surface != Surface::pn_triangles && surface != Surface::phong &&
         surface != Surface::pn_aen)
         return PipelineStatus::bad_option;
     return PipelineStatus::ok;
+}
+
+// Runs fn with the family of options.pattern (check_options has accepted it).
+template <class Fn>
+PipelineStatus with_family(const CpTableSet& tables, const UniformTableSet* uniform,
+                           const PipelineOptions& options, Fn&& fn) {
+    switch (options.pattern) {
+    case Pattern::uniform:
+        return fn(UniformFamily{*uniform});
+    case Pattern::uniform_split:
+        return fn(UniformSplitFamily{*uniform, {}});
+    case Pattern::cp:
+        break;
+    }
+    return fn(CpFamily{tables});
 }
 
 template <PipelineFamily F>
@@ -459,9 +576,8 @@ PipelineStatus setup_patches(const CpTableSet& tables, const UniformTableSet* un
                              PipelineTotals& totals) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
-    return options.pattern == Pattern::uniform
-               ? setup_all(UniformFamily{*uniform}, mesh, options, patches, totals)
-               : setup_all(CpFamily{tables}, mesh, options, patches, totals);
+    return with_family(tables, uniform, options,
+                       [&](const auto& family) { return setup_all(family, mesh, options, patches, totals); });
 }
 
 // The corners of a quad in pattern order (q_k = mesh corner (k + rotation) % 4).
@@ -545,9 +661,9 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* unifor
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
-    return options.pattern == Pattern::uniform
-               ? emit_all(UniformFamily{*uniform}, mesh, options, patches, vertices, indices)
-               : emit_all(CpFamily{tables}, mesh, options, patches, vertices, indices);
+    return with_family(tables, uniform, options, [&](const auto& family) {
+        return emit_all(family, mesh, options, patches, vertices, indices);
+    });
 }
 
 // --- The welded output (docs/algorithm.md §7.4) ---
@@ -838,9 +954,9 @@ PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet* uni
     if (patches.size() < mesh.patch_count() || edges.size() < weld_edge_capacity(mesh))
         return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
-    return options.pattern == Pattern::uniform
-               ? setup_welded_all(UniformFamily{*uniform}, mesh, options, edges, patches, totals)
-               : setup_welded_all(CpFamily{tables}, mesh, options, edges, patches, totals);
+    return with_family(tables, uniform, options, [&](const auto& family) {
+        return setup_welded_all(family, mesh, options, edges, patches, totals);
+    });
 }
 
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet* uniform,
@@ -849,9 +965,9 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet*
                                 std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
-    return options.pattern == Pattern::uniform
-               ? emit_welded_all(UniformFamily{*uniform}, mesh, options, edges, patches, vertices, indices)
-               : emit_welded_all(CpFamily{tables}, mesh, options, edges, patches, vertices, indices);
+    return with_family(tables, uniform, options, [&](const auto& family) {
+        return emit_welded_all(family, mesh, options, edges, patches, vertices, indices);
+    });
 }
 
 } // namespace

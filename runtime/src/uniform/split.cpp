@@ -620,6 +620,37 @@ bool UniformSplit::edge_points(std::uint32_t edge, std::span<point_type> out) co
     return written == n; // the same decisions as segments(): always
 }
 
+// A patch with every root edge of factor f: its edge 0 is any root edge of that factor (§3.5).
+UniformSplit::Impl UniformSplit::edge_impl(const UniformTableSet& tables, float f) noexcept {
+    const double r = uniform::round_factor(f, uniform_split_max_factor);
+    return Impl{&tables,
+                PatchOptions{},
+                {r, r, r},
+                uniform_split_interior_tolerance,
+                uniform_split_depth_limit(tables.max_factor, static_cast<std::uint32_t>(r))};
+}
+
+std::uint32_t UniformSplit::root_edge_point_count(const UniformTableSet& tables, float f) noexcept {
+    const Impl impl = edge_impl(tables, f);
+    return impl.segments(impl.root_[0], 0, true) + 1;
+}
+
+bool UniformSplit::root_edge_points(const UniformTableSet& tables, float f,
+                                    std::span<point_type> out) noexcept {
+    const Impl impl = edge_impl(tables, f);
+    const std::uint32_t n = impl.segments(impl.root_[0], 0, true) + 1;
+    if (out.size() < n) return false;
+    const std::array<Impl::Point, 2> ends = impl.root_edge(0);
+    std::uint32_t written = 0;
+    auto put = [&](const Impl::Point& p) {
+        if (written < n) out[written] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1])};
+        ++written;
+    };
+    put(ends[0]);
+    impl.edge_walk(ends[0], ends[1], impl.root_[0], 0, put);
+    return written == n;
+}
+
 void UniformSplit::for_each_leaf(LeafCallback callback, void* context) const noexcept {
     const Impl impl = make_impl();
     Impl::LeafCaller c{callback, context};

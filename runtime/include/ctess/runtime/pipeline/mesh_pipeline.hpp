@@ -4,11 +4,12 @@
 // (indices in provoking-vertex order). The generated GLSL and WGSL shaders run the same steps with the same
 // formulas and the same record layouts; this is the reference they are tested against.
 //
-// Two pattern families (PipelineOptions::pattern): CP (docs/algorithm.md §2, the default) or uniform density
+// Three pattern families (PipelineOptions::pattern): CP (docs/algorithm.md §2, the default); uniform density
 // (§3, uniform_pipeline_patch.hpp): each base triangle gets UniformPatch's pattern of its three edge factors,
-// rounded and clamped to [1, N] of the uniform tables (no splitting above N in the pipeline), with its
-// barycentrics converted exactly to 2^-24 base weights. The uniform pattern needs the overloads that take a
-// UniformTableSet as well; the CP-only overloads refuse it (PipelineStatus::no_uniform_tables).
+// rounded and clamped to [1, N] of the uniform tables, with its barycentrics converted exactly to 2^-24 base
+// weights (the shaders' pattern); or uniform density split at any factor up to 32,768 (§7.5, CPU only). The
+// uniform patterns need the overloads that take a UniformTableSet as well; the CP-only overloads refuse them
+// (PipelineStatus::no_uniform_tables).
 //
 // Counts first, then fills (as OpenSubdiv's Bfr::Tessellation): nothing here allocates. The factors, setup
 // and emit are out of line in ctess::runtime_core (src/pipeline/mesh_pipeline.cpp), compiled with
@@ -76,7 +77,14 @@ struct MeshView {
 };
 
 // The pattern family of every patch; the shaders read it as params word 10 (docs/shaders.md).
-enum class Pattern : std::uint32_t { cp = 0, uniform = 1 };
+enum class Pattern : std::uint32_t {
+    cp = 0,
+    uniform = 1, // uniform density, factors rounded and clamped to the table's N (the shaders' pass)
+    // Uniform density at any factor up to 32,768 (uniform_split_max_factor): patches above N split with the
+    // table's own patterns (UniformSplit, docs/algorithm.md §3.5, §7.5); the same output as uniform up to N.
+    // CPU only: the shaders do not split yet, and its records carry no setup block.
+    uniform_split = 2,
+};
 
 // Which quad edge becomes q0q1, the edge whose factor the CP diagonal takes (docs/algorithm.md §7.2).
 enum class QuadRule : std::uint32_t {
@@ -149,7 +157,7 @@ struct PipelineTotals {
     std::uint32_t vertices = 0;
     std::uint32_t triangles = 0;
     // Patch edges whose factor was above the pattern's maximum and was clamped to it (CP: the tables'
-    // max_factor; uniform: N, where the pipeline does not split, §3.5). Counted once per patch and edge, so
+    // max_factor; uniform: N; uniform_split: 32,768). Counted once per patch and edge, so
     // an edge shared by two faces counts twice; a CP quad counts its 4 edges, a uniform quad its diagonal
     // too. Non-zero means the output is coarser than the factors asked for.
     std::uint32_t clamped_edges = 0;
@@ -162,7 +170,7 @@ enum class PipelineStatus : std::uint8_t {
     too_many_vertices,  // total vertices past max_pipeline_vertices
     too_many_triangles, // total triangles past max_pipeline_triangles
     bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
-    no_uniform_tables,  // Pattern::uniform through an overload without a UniformTableSet
+    no_uniform_tables,  // a uniform pattern through an overload without a UniformTableSet
     bad_option,         // a Pattern, QuadRule or Surface value outside its enum
 };
 

@@ -159,6 +159,13 @@ class UniformSplit {
     // returns false and writes nothing for k > 2 or a span shorter than edge_point_count(k).
     std::uint32_t edge_point_count(std::uint32_t edge) const noexcept;
     bool edge_points(std::uint32_t edge, std::span<point_type> out) const noexcept;
+    // The points every UniformSplit with a root edge of factor f (rounded and clamped as the constructor
+    // does) puts on that edge, as edge_points(0) of a patch with that edge gives them: from (0, 0) to
+    // (uniform_split_fixed_one, 0), both corners included, root_edge_point_count(tables, f) of them. They
+    // depend on the edge alone, so the mesh pipeline numbers a shared edge's points without walking a patch
+    // (docs/algorithm.md §7.4). root_edge_points returns false and writes nothing when out is too short.
+    static std::uint32_t root_edge_point_count(const UniformTableSet& tables, float f) noexcept;
+    static bool root_edge_points(const UniformTableSet& tables, float f, std::span<point_type> out) noexcept;
 
     // One diced subpatch: its pattern (the table's, for its factors rounded and clamped to [1, N]), its
     // factors before rounding (its edges' intrinsic lengths in the root's metric), its corners on the root
@@ -193,6 +200,8 @@ class UniformSplit {
   private:
     struct Impl; // split.cpp
     Impl make_impl() const noexcept;
+    static Impl edge_impl(const UniformTableSet& tables,
+                          float f) noexcept; // all three root edges of factor f
     friend bool uniform_split_detail::emit_checked(const UniformSplit&, std::span<uniform::SplitPoint>,
                                                    std::span<std::uint32_t>) noexcept;
 
