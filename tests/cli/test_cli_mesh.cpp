@@ -58,7 +58,7 @@ TEST_CASE("ctess mesh: a closed mixed model with split normals stays closed for 
           "[cli][mesh]") {
     const std::string in = scratch("mixed_cube.obj");
     write_file(in, mixed_cube_obj());
-    for (const char* pattern : {"cp", "uniform"})
+    for (const char* pattern : {"cp", "uniform", "d3d11-integer", "d3d11-pow2", "d3d11-odd", "d3d11-even"})
         for (const char* surface : {"flat", "pn", "pn-aen", "phong"})
             for (const char* factors :
                  {"--factor 5.5", "--edge-length 0.07", "--dice-rate 2 --camera 2.5,1.7,3.1"}) {
@@ -198,7 +198,7 @@ TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][me
         {"--in " + cube + " --dice-rate 2 --out " + out, 2, "--camera"},
         {"--in " + cube + " --dice-rate 2 --camera 1,2 --out " + out, 2, "--camera"},
         {"--in " + cube + " --factor 2 --surface smooth --out " + out, 2, "--surface"},
-        {"--in " + cube + " --factor 2 --pattern d3d11-even --out " + out, 2, "--pattern"},
+        {"--in " + cube + " --factor 2 --pattern d3d11-quad --out " + out, 2, "--pattern"},
         {"--in " + cube + " --factor 2", 2, "--out"},
         // 4 quads and 4 triangles at factor 64: 4 x 2 x 4096 + 4 x 4096 = 49,152 triangles, above a limit of
         // 1,000.

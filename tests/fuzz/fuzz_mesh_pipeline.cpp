@@ -1,18 +1,20 @@
 // libFuzzer target: the CPU mesh pipeline (runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp) on small
 // arbitrary meshes: vertex floats as any bit pattern (NaN, inf, zero-area triangles), indices in and out of
-// range, any dice and surface options, optionally a base triangle repeated tens of thousands of times (totals
-// past the limits), then patch records tampered with before emit. Properties: setup_patches is ok or a limit;
-// ok totals equal the records' sums; emit_mesh on untouched records is ok, every index names an emitted
-// vertex of its own patch and every barycentric lies in the base triangle; on tampered records it is ok or
-// bad_patch_record, and on any failure nothing is written. Then quads, arbitrary position ids and PN-AEN
-// adjacency indices (in and out of range) through the welded output (setup_welded, emit_welded_mesh): ok or a
-// limit, every index names a written vertex, and the counts are what emit wrote.
+// range, any dice and surface options, every pattern (CP, uniform clamped and split, the D3D11 partitionings,
+// and one value outside the enum, which must be bad_option), optionally a base triangle repeated tens of
+// thousands of times (totals past the limits), then patch records tampered with before emit. Properties:
+// setup_patches is ok or a limit; ok totals equal the records' sums; emit_mesh on untouched records is ok,
+// every index names an emitted vertex of its own patch and every barycentric lies in the base triangle; on
+// tampered records it is ok or bad_patch_record, and on any failure nothing is written. Then quads, arbitrary
+// position ids and PN-AEN adjacency indices (in and out of range) through the welded output (setup_welded,
+// emit_welded_mesh): ok or a limit, every index names a written vertex, and the counts are what emit wrote.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
+#include <ctess/runtime/uniform/table_set.hpp>
 
 #include "fuzz_input.hpp"
 
@@ -29,13 +31,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (mode & 4) options.dice.dice_rate = in.float_bits();
     options.surface.surface = static_cast<rt::Surface>(in.byte() % 4);
     options.surface.alpha = (mode & 8) ? in.float_bits() : 0.75f;
+    const auto pattern_value = in.byte() % 8u; // 7 is past the enum
+    options.pattern = static_cast<rt::Pattern>(pattern_value);
+    // A split patch of factor 32,768 takes a walk of millions of leaves to count: no repeated patches.
+    const bool split = options.pattern == rt::Pattern::uniform_split;
+    const rt::UniformTableSet& uniform = rt::uniform_tables;
 
     const unsigned vertex_count = in.byte() % 9;
     std::vector<float> vertices(std::size_t{vertex_count} * rt::mesh_vertex_floats);
     for (float& x : vertices) x = (mode & 16) ? in.float_bits() : static_cast<float>(in.byte()) - 128.0f;
     std::vector<std::uint32_t> indices(3 * static_cast<std::size_t>(in.byte() % 9));
     for (std::uint32_t& i : indices) i = (mode & 32) ? in.u32() : in.byte() % (vertex_count + 1);
-    if ((mode & 0xC0) == 0xC0 &&
+    if ((mode & 0xC0) == 0xC0 && !split &&
         indices.size() >= 3) { // repeat the first base triangle: up to 65,536 patches
         const std::size_t copies = 1 + (in.byte() | std::size_t{in.byte()} << 8);
         indices.resize(3 * copies);
@@ -46,7 +53,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     std::vector<rt::PatchRecord> records(mesh.triangle_count);
     rt::PipelineTotals totals{1234, 5678};
-    const PipelineStatus setup = rt::setup_patches(tables, mesh, options, records, totals);
+    const PipelineStatus setup = rt::setup_patches(tables, uniform, mesh, options, records, totals);
+    if (pattern_value > 6) {
+        CTESS_FUZZ_CHECK(setup == PipelineStatus::bad_option);
+        return 0;
+    }
     if (setup != PipelineStatus::ok) {
         CTESS_FUZZ_CHECK(setup == PipelineStatus::too_many_vertices ||
                          setup == PipelineStatus::too_many_triangles);
@@ -74,7 +85,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     rt::TessVertex marker;
     marker.u = 0xA5A5A5A5u;
     std::fill(out_v.begin(), out_v.end(), marker);
-    const PipelineStatus emit = rt::emit_mesh(tables, mesh, options, used, out_v, out_i);
+    const PipelineStatus emit = rt::emit_mesh(tables, uniform, mesh, options, used, out_v, out_i);
     if (!tampered) CTESS_FUZZ_CHECK(emit == PipelineStatus::ok);
     if (emit != PipelineStatus::ok) {
         CTESS_FUZZ_CHECK(emit == PipelineStatus::bad_patch_record || emit == PipelineStatus::span_too_small ||
@@ -111,10 +122,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     mixed.position_ids = position_ids.data();
     mixed.adjacency = adjacency.data();
     options.weld.keep_degenerate = (mode & 4) != 0;
+    // The weld keeps one patch's output in scratch: skip meshes whose unwelded output is large (the quads are
+    // new here), as above.
+    {
+        std::vector<rt::PatchRecord> mixed_records(mixed.patch_count());
+        rt::PipelineTotals mixed_totals;
+        if (rt::setup_patches(tables, uniform, mixed, options, mixed_records, mixed_totals) !=
+                PipelineStatus::ok ||
+            mixed_totals.vertices > (1u << 18))
+            return 0;
+    }
     std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mixed));
     std::vector<rt::WeldedPatch> patches(mixed.patch_count());
     rt::WeldedTotals welded;
-    const PipelineStatus ws = rt::setup_welded(tables, mixed, options, edges, patches, welded);
+    const PipelineStatus ws = rt::setup_welded(tables, uniform, mixed, options, edges, patches, welded);
     if (ws != PipelineStatus::ok) {
         CTESS_FUZZ_CHECK(ws == PipelineStatus::too_many_vertices || ws == PipelineStatus::too_many_triangles);
         return 0;
@@ -123,7 +144,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     edges.resize(welded.edges);
     std::vector<rt::TessVertex> wv(welded.vertices);
     std::vector<std::uint32_t> wi(3 * std::size_t{welded.triangles}, 0xA5A5A5A5u);
-    CTESS_FUZZ_CHECK(rt::emit_welded_mesh(tables, mixed, options, edges, patches, wv, wi) ==
+    CTESS_FUZZ_CHECK(rt::emit_welded_mesh(tables, uniform, mixed, options, edges, patches, wv, wi) ==
                      PipelineStatus::ok);
     for (const std::uint32_t i : wi) CTESS_FUZZ_CHECK(i < welded.vertices);
     return 0;

@@ -163,13 +163,20 @@ int run_mesh(int argc, char** argv) {
     const std::string format = out.empty() ? "" : extension_of(out);
     if (!out.empty() && format != "obj" && format != "ply" && format != "glb")
         throw UsageError("--out must end in .obj, .ply or .glb");
-    const std::string pattern = choice(args.get_or("pattern", "cp"), {"cp", "uniform"}, "--pattern");
-    if (pattern == "uniform" && args.has("max")) throw UsageError("--max applies to --pattern cp only");
+    const std::string pattern =
+        choice(args.get_or("pattern", "cp"),
+               {"cp", "uniform", "d3d11-integer", "d3d11-pow2", "d3d11-odd", "d3d11-even"}, "--pattern");
+    if (pattern != "cp" && args.has("max")) throw UsageError("--max applies to --pattern cp only");
     const unsigned max = max_factor_from(args);
     rt::PipelineOptions options;
     options.dice = dice_options_from(args);
     // Uniform density at any factor: patches above the table's N split (docs/algorithm.md §7.5).
-    options.pattern = pattern == "cp" ? rt::Pattern::cp : rt::Pattern::uniform_split;
+    options.pattern = pattern == "cp"              ? rt::Pattern::cp
+                      : pattern == "uniform"       ? rt::Pattern::uniform_split
+                      : pattern == "d3d11-integer" ? rt::Pattern::d3d11_integer
+                      : pattern == "d3d11-pow2"    ? rt::Pattern::d3d11_pow2
+                      : pattern == "d3d11-odd"     ? rt::Pattern::d3d11_fractional_odd
+                                                   : rt::Pattern::d3d11_fractional_even;
     options.surface.surface =
         surface_from(choice(args.get_or("surface", "flat"), {"flat", "pn", "pn-aen", "phong"}, "--surface"));
     options.quad_rule = choice(args.get_or("quad-rule", "longer-pair"), {"longer-pair", "as-labelled"},

@@ -26,7 +26,7 @@ commands:
   strip    --segments U,V [--format json] [--out FILE]            (U, V in [1, 1024])
   surface  --name sphere|torus|ripple [--angle deg] [--distance rel] [--min-level n] [--max-level n]
            [--format json|obj|svg|stats] [--view param|shaded] [--out FILE]   (levels in [0, 18])
-  mesh     --in MODEL(.gltf|.glb|.obj) (--out OUT(.obj|.ply|.glb) | --stats) [--pattern cp|uniform]
+  mesh     --in MODEL(.gltf|.glb|.obj) (--out OUT(.obj|.ply|.glb) | --stats) [--pattern cp|uniform|d3d11-*]
            (--factor F | --edge-length L | --dice-rate PX --camera X,Y,Z [--fov DEG] [--resolution W,H])
            [--surface flat|pn|pn-aen|phong] [--max 64|256] [--quad-rule longer-pair|as-labelled]
            [--keep-degenerate] [--max-triangles N] [--stats]

@@ -17,6 +17,7 @@
 
 #include <ctess/core/patch_concept.hpp>
 #include <ctess/cp/quad.hpp>
+#include <ctess/d3d11/tessellator.hpp>
 #include <ctess/runtime/uniform/split.hpp>
 
 namespace ctess::rt {
@@ -384,6 +385,100 @@ struct UniformSplitFamily {
     mutable std::vector<uniform::SplitPoint> points_; // scratch of params_of_factor
 };
 
+// The reference's TRIANGLE_CW is counter-clockwise in the base weights (w1, w2) that (u, v) become.
+constexpr Winding d3d11_winding = Winding::cw;
+
+// The D3D11 tessellator's triangle domain (§5) on one patch, as an indexed patch. Domain (u, v) are the base
+// weights of w1 and w2 (w0 = 1 - u - v), so Ueq0 is base edge E2, Veq0 is E0 and Weq0 is E1 (§7.6).
+class D3d11Patch {
+  public:
+    using point_type = d3d11::Point;
+    D3d11Patch(const std::array<float, 4>& factors, d3d11::Partitioning partitioning) {
+        const d3d11::TessOptions options{partitioning, d3d11_winding};
+        const Counts c = d3d11::detail::tessellate_tri_into(nullptr, nullptr, factors, options);
+        points_.resize(c.vertices);
+        indices_.resize(c.index_count());
+        d3d11::detail::tessellate_tri_into(points_.data(), indices_.data(), factors, options);
+    }
+    Counts counts() const noexcept {
+        return {static_cast<std::uint32_t>(points_.size()), static_cast<std::uint32_t>(indices_.size() / 3)};
+    }
+    bool emit(std::span<point_type> points, std::span<std::uint32_t> indices) const noexcept {
+        if (points.size() < points_.size() || indices.size() < indices_.size()) return false;
+        std::copy(points_.begin(), points_.end(), points.begin());
+        std::copy(indices_.begin(), indices_.end(), indices.begin());
+        return true;
+    }
+    point_type vertex(std::uint32_t i) const noexcept { return points_[i]; }
+    std::array<std::uint32_t, 3> triangle(std::uint32_t p) const noexcept {
+        return {indices_[3 * std::size_t{p}], indices_[3 * std::size_t{p} + 1],
+                indices_[3 * std::size_t{p} + 2]};
+    }
+
+  private:
+    std::vector<point_type> points_;
+    std::vector<std::uint32_t> indices_;
+};
+
+// The D3D11 patterns (§7.6): each base edge's factor as the tessellator takes it (it clamps to the
+// partitioning's range), a factor that would cull (NaN, zero, negative) raised to 1 so that no face is ever
+// dropped, the inside factor the mean of the three edges in base-edge order (a per-patch value: it moves the
+// interior only).
+struct D3d11Family {
+    using patch_type = D3d11Patch;
+    static constexpr bool own_diagonal = true;
+    d3d11::Partitioning partitioning;
+
+    static float sanitized(float f) { return f > 0.0f ? f : 1.0f; } // NaN compares false: 1
+    static std::array<float, 4> domain_factors(const PatchRecord& rec) {
+        const float f[3] = {std::bit_cast<float>(rec.token[0]), std::bit_cast<float>(rec.token[1]),
+                            std::bit_cast<float>(rec.token[2])};
+        return {f[2], f[0], f[1], (f[0] + f[1] + f[2]) / 3.0f};
+    }
+    void set_lines(PatchRecord& rec, const float (&f)[3]) const {
+        for (unsigned k = 0; k < 3; ++k) rec.token[k] = std::bit_cast<std::uint32_t>(sanitized(f[k]));
+    }
+    void setup(PatchRecord& rec, const float (&)[3]) const {
+        set_lines(rec, rec.factor);
+        const Counts c = d3d11::detail::tessellate_tri_into(nullptr, nullptr, domain_factors(rec),
+                                                            {partitioning, d3d11_winding});
+        rec.vertex_count = c.vertices;
+        rec.triangle_count = c.triangles;
+    }
+    bool clamped(float f) const { return sanitized(f) > d3d11::factor_range(partitioning).hi; }
+    bool record_counts(const PatchRecord& rec, bool culled, Counts& counts) const {
+        if (culled) return true;
+        if (rec.rotation != 0) return false;
+        for (unsigned k = 0; k < 3; ++k)
+            if (!(std::bit_cast<float>(rec.token[k]) > 0.0f) || rec.t16[k] != 0) return false;
+        counts = d3d11::detail::tessellate_tri_into(nullptr, nullptr, domain_factors(rec),
+                                                    {partitioning, d3d11_winding});
+        return true;
+    }
+    patch_type patch(const PatchRecord& rec) const { return D3d11Patch(domain_factors(rec), partitioning); }
+    patch_type welded_patch(const PatchRecord& rec) const { return patch(rec); }
+    static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
+        const d3d11::Point p = patch.vertex(i);
+        constexpr std::uint32_t scale = cp::fixed_one / d3d11::fixed_one; // 2^8: exact
+        return {p.u * scale, p.v * scale};
+    }
+    // The points of an edge of factor f (mirror-symmetric, edge.hpp), scaled exactly to 2^-24.
+    void edge_params(float f, EdgeParams& out) const {
+        const d3d11::FixedFactor factor = d3d11::process_edge_factor(partitioning, sanitized(f));
+        const d3d11::EdgeContext context = d3d11::edge_context(factor);
+        const std::uint32_t n = d3d11::point_count(factor);
+        out.reset(n);
+        for (std::uint32_t p = 0; p < n; ++p) {
+            const std::uint32_t x = d3d11::place_point(context, p) * (cp::fixed_one / d3d11::fixed_one);
+            if (x != 0 && x != one) out.value[out.count++] = x;
+        }
+        out.finish();
+    }
+    void record_edge_params(const PatchRecord& rec, unsigned k, EdgeParams& out) const {
+        edge_params(std::bit_cast<float>(rec.token[k]), out);
+    }
+};
+
 // What a family gives the loops below: an indexed patch type and its setup, record check and base points.
 template <class F>
 concept PipelineFamily = IndexedTessPatch<typename F::patch_type> &&
@@ -521,12 +616,14 @@ bool record_counts(const F& family, const MeshView& mesh, std::uint32_t p, const
 }
 
 PipelineStatus check_options(const UniformTableSet* uniform, const PipelineOptions& options) {
-    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform &&
-        options.pattern != Pattern::uniform_split)
+    if (static_cast<std::uint32_t>(options.pattern) >
+        static_cast<std::uint32_t>(Pattern::d3d11_fractional_even))
         return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
-    if (options.pattern != Pattern::cp && uniform == nullptr) return PipelineStatus::no_uniform_tables;
+    if ((options.pattern == Pattern::uniform || options.pattern == Pattern::uniform_split) &&
+        uniform == nullptr)
+        return PipelineStatus::no_uniform_tables;
     const Surface surface = options.surface.surface;
     if (surface != Surface::flat && surface != Surface::pn_triangles && surface != Surface::phong &&
         surface != Surface::pn_aen)
@@ -543,6 +640,14 @@ PipelineStatus with_family(const CpTableSet& tables, const UniformTableSet* unif
         return fn(UniformFamily{*uniform});
     case Pattern::uniform_split:
         return fn(UniformSplitFamily{*uniform, {}});
+    case Pattern::d3d11_integer:
+        return fn(D3d11Family{d3d11::Partitioning::integer});
+    case Pattern::d3d11_pow2:
+        return fn(D3d11Family{d3d11::Partitioning::pow2});
+    case Pattern::d3d11_fractional_odd:
+        return fn(D3d11Family{d3d11::Partitioning::fractional_odd});
+    case Pattern::d3d11_fractional_even:
+        return fn(D3d11Family{d3d11::Partitioning::fractional_even});
     case Pattern::cp:
         break;
     }

@@ -4,15 +4,16 @@
 // (indices in provoking-vertex order). The generated GLSL and WGSL shaders run the same steps with the same
 // formulas and the same record layouts; this is the reference they are tested against.
 //
-// Three pattern families (PipelineOptions::pattern): CP (docs/algorithm.md §2, the default); uniform density
+// Pattern families (PipelineOptions::pattern): CP (docs/algorithm.md §2, the default); uniform density
 // (§3, uniform_pipeline_patch.hpp): each base triangle gets UniformPatch's pattern of its three edge factors,
 // rounded and clamped to [1, N] of the uniform tables, with its barycentrics converted exactly to 2^-24 base
-// weights (the shaders' pattern); or uniform density split at any factor up to 32,768 (§7.5, CPU only). The
-// uniform patterns need the overloads that take a UniformTableSet as well; the CP-only overloads refuse them
-// (PipelineStatus::no_uniform_tables).
+// weights (the shaders' pattern); uniform density split at any factor up to 32,768 (§7.5, CPU only); or the
+// D3D11 tessellator's patterns (§7.6, CPU only). The uniform patterns need the overloads that take a
+// UniformTableSet as well; the CP-only overloads refuse them (PipelineStatus::no_uniform_tables).
 //
-// Counts first, then fills (as OpenSubdiv's Bfr::Tessellation): nothing here allocates. The factors, setup
-// and emit are out of line in ctess::runtime_core (src/pipeline/mesh_pipeline.cpp), compiled with
+// Counts first, then fills (as OpenSubdiv's Bfr::Tessellation). CP and clamped uniform allocate nothing; the
+// split and D3D11 patterns have no O(1) random access and keep one patch's output at a time. The factors,
+// setup and emit are out of line in ctess::runtime_core (src/pipeline/mesh_pipeline.cpp), compiled with
 // contraction and fast-math off, so that the counts and every shared edge's points are the same whatever
 // the caller's flags (docs/api.md, "Crack-free evaluation").
 //
@@ -84,6 +85,12 @@ enum class Pattern : std::uint32_t {
     // table's own patterns (UniformSplit, docs/algorithm.md §3.5, §7.5); the same output as uniform up to N.
     // CPU only: the shaders do not split yet, and its records carry no setup block.
     uniform_split = 2,
+    // The D3D11 tessellator's triangle domain (docs/algorithm.md §5, §7.6) with the partitioning named, CPU
+    // only: the fixed-function patterns ctess is measured against, on the same mesh and factors.
+    d3d11_integer = 3,
+    d3d11_pow2 = 4,
+    d3d11_fractional_odd = 5,
+    d3d11_fractional_even = 6,
 };
 
 // Which quad edge becomes q0q1, the edge whose factor the CP diagonal takes (docs/algorithm.md §7.2).
@@ -157,9 +164,9 @@ struct PipelineTotals {
     std::uint32_t vertices = 0;
     std::uint32_t triangles = 0;
     // Patch edges whose factor was above the pattern's maximum and was clamped to it (CP: the tables'
-    // max_factor; uniform: N; uniform_split: 32,768). Counted once per patch and edge, so
-    // an edge shared by two faces counts twice; a CP quad counts its 4 edges, a uniform quad its diagonal
-    // too. Non-zero means the output is coarser than the factors asked for.
+    // max_factor; uniform: N; uniform_split: 32,768; D3D11: 64, 63 for fractional_odd). Counted once per
+    // patch and edge, so an edge shared by two faces counts twice; a CP quad counts its 4 edges, a uniform
+    // quad its diagonal too. Non-zero means the output is coarser than the factors asked for.
     std::uint32_t clamped_edges = 0;
 };
 
