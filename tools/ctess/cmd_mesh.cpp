@@ -104,7 +104,7 @@ std::size_t open_edges_by_position(const OutputMesh& mesh) {
     models::Model m;
     m.vertices = mesh.vertices;
     m.triangles = mesh.triangles;
-    return models::open_edge_count(m, models::build_adjacency(m).position_ids);
+    return models::open_edge_count(m, models::position_ids(m));
 }
 
 // The longest edge of every output triangle in the factor's own unit (DiceRate units for --dice-rate, L for

@@ -26,8 +26,7 @@ std::vector<std::uint32_t> triangle_list(const Model& model) {
 
 } // namespace
 
-Adjacency build_adjacency(const Model& model) {
-    Adjacency adjacency;
+std::vector<std::uint32_t> position_ids(const Model& model) {
     const std::size_t vertex_count = model.vertex_count();
     // The shadow index buffer of the index list 0, 1, ..., n - 1 is one position id per vertex; meshoptimizer
     // takes whole triangles, so the list is padded to a multiple of 3 with its last index and cut back after.
@@ -35,12 +34,19 @@ Adjacency build_adjacency(const Model& model) {
     std::vector<std::uint32_t> identity(
         padded, vertex_count == 0 ? 0u : static_cast<std::uint32_t>(vertex_count - 1));
     std::iota(identity.begin(), identity.begin() + static_cast<std::ptrdiff_t>(vertex_count), 0u);
-    adjacency.position_ids.resize(padded);
+    std::vector<std::uint32_t> ids(padded);
     if (vertex_count != 0)
-        meshopt_generateShadowIndexBuffer(adjacency.position_ids.data(), identity.data(), padded,
-                                          model.vertices.data(), vertex_count, 3 * sizeof(float),
+        meshopt_generateShadowIndexBuffer(ids.data(), identity.data(), padded, model.vertices.data(),
+                                          vertex_count, 3 * sizeof(float),
                                           model_vertex_floats * sizeof(float));
-    adjacency.position_ids.resize(vertex_count);
+    ids.resize(vertex_count);
+    return ids;
+}
+
+Adjacency build_adjacency(const Model& model) {
+    Adjacency adjacency;
+    const std::size_t vertex_count = model.vertex_count();
+    adjacency.position_ids = position_ids(model);
     const std::vector<std::uint32_t> list = triangle_list(model);
     for (std::uint32_t index : list)
         if (index >= vertex_count)

@@ -23,6 +23,9 @@ struct Adjacency {
 // Throws std::out_of_range for an index >= model.vertex_count() (load_model never returns one).
 Adjacency build_adjacency(const Model& model);
 
+// Adjacency::position_ids alone (no tessellation index buffer): vertex_count() entries.
+std::vector<std::uint32_t> position_ids(const Model& model);
+
 // Edges (pairs of position ids) used by exactly one face: 0 for a closed model. Triangles give 3 edges, quads
 // their 4 boundary edges (not the split diagonal). Throws std::invalid_argument unless position_ids has
 // model.vertex_count() entries, std::out_of_range for an index >= model.vertex_count().
