@@ -33,11 +33,12 @@ struct Output {
 Output unwelded(const rt::MeshView& mesh, const rt::PipelineOptions& options) {
     std::vector<rt::PatchRecord> patches(mesh.patch_count());
     rt::PipelineTotals totals;
-    REQUIRE(rt::setup_patches(rt::cp_tables, mesh, options, patches, totals) == rt::PipelineStatus::ok);
+    REQUIRE(rt::setup_patches(rt::cp_tables, rt::uniform_tables, mesh, options, patches, totals) ==
+            rt::PipelineStatus::ok);
     Output o;
     o.vertices.resize(totals.vertices);
     o.indices.resize(3 * std::size_t{totals.triangles});
-    REQUIRE(rt::emit_mesh(rt::cp_tables, mesh, options, patches, o.vertices, o.indices) ==
+    REQUIRE(rt::emit_mesh(rt::cp_tables, rt::uniform_tables, mesh, options, patches, o.vertices, o.indices) ==
             rt::PipelineStatus::ok);
     return o;
 }
@@ -46,13 +47,14 @@ Output welded(const rt::MeshView& mesh, const rt::PipelineOptions& options) {
     std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
     std::vector<rt::WeldedPatch> patches(mesh.patch_count());
     rt::WeldedTotals totals;
-    REQUIRE(rt::setup_welded(rt::cp_tables, mesh, options, edges, patches, totals) == rt::PipelineStatus::ok);
+    REQUIRE(rt::setup_welded(rt::cp_tables, rt::uniform_tables, mesh, options, edges, patches, totals) ==
+            rt::PipelineStatus::ok);
     edges.resize(totals.edges);
     Output o;
     o.vertices.resize(totals.vertices);
     o.indices.resize(3 * std::size_t{totals.triangles});
-    REQUIRE(rt::emit_welded_mesh(rt::cp_tables, mesh, options, edges, patches, o.vertices, o.indices) ==
-            rt::PipelineStatus::ok);
+    REQUIRE(rt::emit_welded_mesh(rt::cp_tables, rt::uniform_tables, mesh, options, edges, patches, o.vertices,
+                                 o.indices) == rt::PipelineStatus::ok);
     return o;
 }
 
@@ -268,7 +270,8 @@ TEST_CASE("welded_directions: one direction per position, the normalised sum of 
     CHECK_FALSE(rt::welded_directions(bad, directions));
 }
 
-TEST_CASE("watertight at uv seams and hard edges (§8.2): the chart cube, triangles, quads and mixed") {
+TEST_CASE("watertight at uv seams and hard edges (§8.2): the chart cube, triangles, quads and mixed, CP and "
+          "uniform") {
     for (int faces = 0; faces < 3; ++faces) {
         const models::Model cube = chart_cube(faces);
         const models::Adjacency adjacency = models::build_adjacency(cube);
@@ -282,23 +285,26 @@ TEST_CASE("watertight at uv seams and hard edges (§8.2): the chart cube, triang
         d.directions = directions.data();
         for (const rt::Surface surface :
              {rt::Surface::flat, rt::Surface::pn_triangles, rt::Surface::pn_aen, rt::Surface::phong}) {
-            for (const float factor : {1.0f, 2.5f, 9.3f}) {
-                INFO("faces " << faces << " surface " << static_cast<int>(surface) << " factor " << factor);
-                rt::PipelineOptions options = constant_factor(factor, surface);
-                const Output base = unwelded(mesh, options);
-                options.displacement = &d;
-                const Output moved = unwelded(mesh, options);
-                const PairCheck pairs = check_pairs(base, moved);
-                CHECK(pairs.shared > 0);
-                CHECK(pairs.mismatched == 0);
-                const Output w = welded(mesh, options);
-                CHECK(open_edges_by_position(w) == 0);
-                // It moved: the displaced and undisplaced positions differ somewhere.
-                bool any = false;
-                for (std::size_t i = 0; i < base.vertices.size() && !any; ++i)
-                    any = key_of(base.vertices[i]) != key_of(moved.vertices[i]);
-                CHECK(any);
-            }
+            for (const float factor : {1.0f, 2.5f, 9.3f})
+                for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+                    INFO("faces " << faces << " surface " << static_cast<int>(surface) << " factor " << factor
+                                  << " pattern " << static_cast<int>(pattern));
+                    rt::PipelineOptions options = constant_factor(factor, surface);
+                    options.pattern = pattern;
+                    const Output base = unwelded(mesh, options);
+                    options.displacement = &d;
+                    const Output moved = unwelded(mesh, options);
+                    const PairCheck pairs = check_pairs(base, moved);
+                    CHECK(pairs.shared > 0);
+                    CHECK(pairs.mismatched == 0);
+                    const Output w = welded(mesh, options);
+                    CHECK(open_edges_by_position(w) == 0);
+                    // It moved: the displaced and undisplaced positions differ somewhere.
+                    bool any = false;
+                    for (std::size_t i = 0; i < base.vertices.size() && !any; ++i)
+                        any = key_of(base.vertices[i]) != key_of(moved.vertices[i]);
+                    CHECK(any);
+                }
         }
         // The control: without adjacency every edge samples its own chart, and the seams crack.
         rt::MeshView no_adjacency = mesh;
@@ -376,4 +382,89 @@ TEST_CASE("watertight on a real model with seams and split normals: spider.obj, 
     CHECK(pairs.shared > 0);
     CHECK(pairs.mismatched == 0);
     CHECK(open_edges_by_position(welded(mesh, options)) == open_before);
+}
+
+TEST_CASE("a .glb's displacement image in a buffer view reaches the height map loader (docs/models.md)") {
+    // One triangle and a 2 x 1 grey PNG (texels 0 and 255), both in the BIN chunk.
+    const std::uint8_t png_bytes[] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13, 'I', 'H', 'D',
+                                      'R',  0,   0,   0,   2,    0,    0,    0,    1, 8, 0, 0,  0,   0};
+    // The rest of the PNG (IHDR CRC, IDAT, IEND) is computed by the loader test's encoder in
+    // test_height_map.cpp; here a whole file is written by hand: IHDR's CRC, then one row (filter 0, texels 0
+    // and 255) stored uncompressed in a zlib stream.
+    std::vector<std::uint8_t> png(png_bytes, png_bytes + sizeof png_bytes);
+    auto be32 = [&](std::uint32_t x) {
+        for (int s = 24; s >= 0; s -= 8) png.push_back(static_cast<std::uint8_t>(x >> s));
+    };
+    auto crc = [](const std::uint8_t* p, std::size_t n) {
+        std::uint32_t c = 0xFFFFFFFFu;
+        for (std::size_t i = 0; i < n; ++i) {
+            c ^= p[i];
+            for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+        }
+        return c ^ 0xFFFFFFFFu;
+    };
+    be32(crc(png.data() + 12, 17));
+    const std::uint8_t row[3] = {0, 0, 255};
+    // zlib: header 78 01, one stored block (final, length 3), the row, Adler-32.
+    std::vector<std::uint8_t> z = {0x78, 0x01, 0x01, 3, 0, 0xFC, 0xFF, row[0], row[1], row[2]};
+    std::uint32_t a = 1, b = 0;
+    for (const std::uint8_t x : row) {
+        a = (a + x) % 65521;
+        b = (b + a) % 65521;
+    }
+    for (int s = 24; s >= 0; s -= 8) z.push_back(static_cast<std::uint8_t>(((b << 16) | a) >> s));
+    be32(static_cast<std::uint32_t>(z.size()));
+    const std::size_t idat = png.size();
+    png.insert(png.end(), {'I', 'D', 'A', 'T'});
+    png.insert(png.end(), z.begin(), z.end());
+    be32(crc(png.data() + idat, png.size() - idat));
+    be32(0);
+    const std::size_t iend = png.size();
+    png.insert(png.end(), {'I', 'E', 'N', 'D'});
+    be32(crc(png.data() + iend, 4));
+    const models::HeightMapResult direct = models::load_height_map_from_memory(png, "hand-made");
+    INFO(direct.error.message);
+    REQUIRE(direct.ok());
+    REQUIRE(direct.image->texels == std::vector<float>{0.0f, 1.0f});
+
+    std::vector<std::uint8_t> bin(36);
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::memcpy(bin.data(), positions, 36);
+    bin.insert(bin.end(), png.begin(), png.end());
+    while (bin.size() % 4 != 0) bin.push_back(0);
+    std::string json =
+        R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_displacement"],"buffers":[{"byteLength":)" +
+        std::to_string(bin.size()) + R"(}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},)" +
+        R"({"buffer":0,"byteOffset":36,"byteLength":)" + std::to_string(png.size()) +
+        R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],)" +
+        R"("images":[{"bufferView":1,"mimeType":"image/png"}],"textures":[{"source":0}],)" +
+        R"("materials":[{"extensions":{"KHR_materials_displacement":{"displacementTexture":{"index":0},)" +
+        R"("displacementFactor":2,"displacementOffset":-1}}}],)" +
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],)" +
+        R"("scenes":[{"nodes":[0]}],"scene":0})";
+    while (json.size() % 4 != 0) json.push_back(' ');
+    std::vector<std::uint8_t> glb = {'g', 'l', 'T', 'F', 2, 0, 0, 0, 0, 0, 0, 0};
+    auto le32 = [&](std::uint32_t x) {
+        for (int s = 0; s < 32; s += 8) glb.push_back(static_cast<std::uint8_t>(x >> s));
+    };
+    le32(static_cast<std::uint32_t>(json.size()));
+    glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+    glb.insert(glb.end(), json.begin(), json.end());
+    le32(static_cast<std::uint32_t>(bin.size()));
+    glb.insert(glb.end(), {'B', 'I', 'N', 0});
+    glb.insert(glb.end(), bin.begin(), bin.end());
+    const auto total = static_cast<std::uint32_t>(glb.size());
+    for (int k = 0; k < 4; ++k)
+        glb[8 + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(total >> (8 * k));
+    const models::LoadResult loaded =
+        models::load_model_from_memory(glb, models::ModelKind::gltf_binary, "embedded.glb");
+    INFO(loaded.error.message);
+    REQUIRE(loaded.ok());
+    const models::Model::Displacement& d = loaded.model->displacement;
+    CHECK(d.present);
+    CHECK(d.texture == 0);
+    CHECK(d.image_uri.empty());
+    CHECK(d.factor == 2.0f);
+    CHECK(d.offset == -1.0f);
+    CHECK(d.image_bytes == png);
 }
