@@ -388,9 +388,8 @@ TEST_CASE("a .glb's displacement image in a buffer view reaches the height map l
     // One triangle and a 2 x 1 grey PNG (texels 0 and 255), both in the BIN chunk.
     const std::uint8_t png_bytes[] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13, 'I', 'H', 'D',
                                       'R',  0,   0,   0,   2,    0,    0,    0,    1, 8, 0, 0,  0,   0};
-    // The rest of the PNG (IHDR CRC, IDAT, IEND) is computed by the loader test's encoder in
-    // test_height_map.cpp; here a whole file is written by hand: IHDR's CRC, then one row (filter 0, texels 0
-    // and 255) stored uncompressed in a zlib stream.
+    // The rest by hand: IHDR's CRC, one row (filter 0, texels 0 and 255) as a stored (uncompressed) zlib
+    // block in IDAT, then IEND.
     std::vector<std::uint8_t> png(png_bytes, png_bytes + sizeof png_bytes);
     auto be32 = [&](std::uint32_t x) {
         for (int s = 24; s >= 0; s -= 8) png.push_back(static_cast<std::uint8_t>(x >> s));
