@@ -125,6 +125,11 @@ TEST_CASE("ctess mesh --displace: a closed model with split normals and uv seams
             const nlohmann::json grown =
                 stats(common + " --displace " + map + " --displace-scale 0.05 --displace-grow");
             CHECK(grown["output_open_edges"] == 0);
+            // The map's bound: 0.05 * 253 / 255 (its largest texel), used only with --displace-grow.
+            CHECK(s["displacement"]["width"] == 32);
+            CHECK(std::fabs(s["displacement"]["bound"].get<double>() - 0.05 * 253.0 / 255.0) < 1e-6);
+            CHECK(s["displacement"]["factor_bound"] == 0);
+            CHECK(grown["displacement"]["factor_bound"] == grown["displacement"]["bound"]);
             // Every factor grows (unit edges 6 -> 6.6): CP adds points; a uniform pattern may keep its count
             // ((7, 6, 7) has the 36 triangles of (6, 6, 6)).
             if (std::string(pattern) == "cp")

@@ -349,6 +349,11 @@ int run_mesh(int argc, char** argv) {
             "  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
+        if (displace.on)
+            text += fmt::format("  \"displacement\": {{\"width\": {}, \"height\": {}, \"bound\": {}, "
+                                "\"factor_bound\": {}}},\n",
+                                height_image.width, height_image.height, rt::displacement_bound(displacement),
+                                displacement.factor_bound);
         if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
             text +=
                 fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "
