@@ -195,7 +195,7 @@ DisplacementPatch displacement_patch(const Displacement& d, const MeshView& mesh
     // position), the one whose vertices, taken in position order, are lexicographically smaller. The
     // neighbour sees the same two edges, so it picks the same one.
     for (unsigned k = 0; k < patch.corners; ++k) {
-        std::uint32_t a = vertex[k], b = vertex[(k + 1) % patch.corners];
+        const std::uint32_t a = vertex[k], b = vertex[(k + 1) % patch.corners];
         std::uint32_t pick[2] = {a, b};
         if (mesh.adjacency != nullptr) {
             const std::uint32_t* t = mesh.adjacency + 12 * faces.edge_face[k] + 3 + 2 * faces.edge_slot[k];
