@@ -10,7 +10,9 @@
 #include "model_formats.hpp"
 
 #include <ctess/runtime/cp/table_set.hpp>
+#include <ctess/runtime/displace/displace.hpp>
 #include <ctess/runtime/models/adjacency.hpp>
+#include <ctess/runtime/models/height_map.hpp>
 #include <ctess/runtime/models/model.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 #include <ctess/runtime/uniform/table_set.hpp>
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -95,6 +98,73 @@ rt::Surface surface_from(const std::string& name) {
     return rt::Surface::phong;
 }
 
+float finite_option(const Args& args, const std::string& key, float fallback) {
+    if (!args.has(key)) return fallback;
+    const float f = parse_float(args.get(key), "--" + key);
+    if (!std::isfinite(f)) throw UsageError("--" + key + " must be a finite number");
+    return f;
+}
+
+// The displacement options (docs/cli.md, "Models"): --displace FILE or --displace-gltf, with
+// --displace-scale,
+// --displace-offset, --displace-address and --displace-grow. Checked before anything is loaded.
+struct DisplaceRequest {
+    bool on = false, from_gltf = false, grow = false;
+    std::string file;
+    float scale = 1.0f;
+    bool has_offset = false;
+    float offset = 0.0f;
+    rt::AddressMode address = rt::AddressMode::repeat;
+};
+
+DisplaceRequest displace_request_from(const Args& args) {
+    DisplaceRequest r;
+    if (args.has("displace") && args.has("displace-gltf"))
+        throw UsageError("give one of --displace FILE and --displace-gltf");
+    r.on = args.has("displace") || args.has("displace-gltf");
+    const bool details = args.has("displace-scale") || args.has("displace-offset") ||
+                         args.has("displace-address") || args.has("displace-grow");
+    if (details && !r.on)
+        throw UsageError(
+            "--displace-scale, --displace-offset, --displace-address and --displace-grow go with "
+            "--displace FILE or --displace-gltf");
+    r.from_gltf = args.has("displace-gltf");
+    r.file = args.get_or("displace", "");
+    if (args.has("displace") && r.file.empty()) throw UsageError("--displace needs a height map file");
+    r.scale = finite_option(args, "displace-scale", 1.0f);
+    r.has_offset = args.has("displace-offset");
+    r.offset = finite_option(args, "displace-offset", 0.0f);
+    r.address = choice(args.get_or("displace-address", "repeat"), {"repeat", "clamp"},
+                       "--displace-address") == "repeat"
+                    ? rt::AddressMode::repeat
+                    : rt::AddressMode::clamp;
+    r.grow = args.has("displace-grow");
+    return r;
+}
+
+// The height map the request names: the file, or the model's own KHR_materials_displacement image (an
+// external file next to the model, or one embedded in it).
+models::HeightImage load_displacement_image(const DisplaceRequest& r, const std::string& in,
+                                            const models::Model& model) {
+    models::HeightMapResult image;
+    if (!r.from_gltf) {
+        image = models::load_height_map(r.file);
+    } else {
+        const models::Model::Displacement& d = model.displacement;
+        if (!d.present || d.texture < 0)
+            throw std::runtime_error(
+                in + ": --displace-gltf: the model has no KHR_materials_displacement texture");
+        if (!d.image_uri.empty())
+            image = models::load_height_map((std::filesystem::path(in).parent_path() / d.image_uri).string());
+        else if (!d.image_bytes.empty())
+            image = models::load_height_map_from_memory(d.image_bytes, in + " (embedded displacement image)");
+        else
+            throw std::runtime_error(in + ": --displace-gltf: the displacement texture has no image");
+    }
+    if (!image) throw std::runtime_error(image.error.message);
+    return std::move(*image.image);
+}
+
 struct StageSeconds {
     double load = 0, adjacency = 0, setup = 0, emit = 0, write = 0;
 };
@@ -154,8 +224,9 @@ void check_triangle_limit(const std::string& in, std::uint32_t triangles, unsign
 int run_mesh(int argc, char** argv) {
     const Args args(argc, argv, 2,
                     {"in", "out", "pattern", "max", "factor", "edge-length", "dice-rate", "camera", "fov",
-                     "resolution", "surface", "quad-rule", "max-triangles"},
-                    {"stats", "keep-degenerate"});
+                     "resolution", "surface", "quad-rule", "max-triangles", "displace", "displace-scale",
+                     "displace-offset", "displace-address"},
+                    {"stats", "keep-degenerate", "displace-gltf", "displace-grow"});
     const std::string in = args.get("in");
     const std::string out = args.get_or("out", "");
     const bool stats = args.has("stats");
@@ -190,6 +261,7 @@ int run_mesh(int argc, char** argv) {
         args.has("max-triangles")
             ? parse_unsigned(args.get("max-triangles"), "--max-triangles", 1, 0xFFFFFFFFu / 3)
             : mesh_cli_default_max_triangles;
+    const DisplaceRequest displace = displace_request_from(args);
 
     StageSeconds seconds;
     auto start = Clock::now();
@@ -215,7 +287,28 @@ int run_mesh(int argc, char** argv) {
     view.quad_indices = model.quads.data();
     view.quad_count = static_cast<std::uint32_t>(model.quad_count());
     view.position_ids = adjacency.position_ids.data();      // seams order their edges by position
-    view.adjacency = adjacency.tessellation_indices.data(); // PN-AEN's neighbours
+    view.adjacency = adjacency.tessellation_indices.data(); // PN-AEN's neighbours, dominant edges and corners
+
+    // Displacement (docs/algorithm.md §8): the height map, one direction per position, the options.
+    models::HeightImage height_image;
+    std::vector<float> directions;
+    rt::Displacement displacement;
+    if (displace.on) {
+        start = Clock::now();
+        height_image = load_displacement_image(displace, in, model);
+        directions.resize(3 * model.vertex_count());
+        if (!rt::welded_directions(view, directions))
+            throw std::runtime_error(in + ": cannot compute the displacement directions");
+        displacement.map = height_image.view(displace.address);
+        displacement.scale = displace.scale;
+        displacement.factor = displace.from_gltf ? model.displacement.factor : 1.0f;
+        displacement.offset =
+            displace.has_offset || !displace.from_gltf ? displace.offset : model.displacement.offset;
+        displacement.directions = directions.data();
+        if (displace.grow) displacement.factor_bound = rt::displacement_bound(displacement);
+        options.displacement = &displacement;
+        seconds.load += seconds_since(start);
+    }
 
     const rt::CpTableSet& cp = max == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
     const rt::UniformTableSet& uniform = rt::uniform_tables;
@@ -279,6 +372,11 @@ int run_mesh(int argc, char** argv) {
             "  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
+        if (displace.on)
+            text += fmt::format("  \"displacement\": {{\"width\": {}, \"height\": {}, \"bound\": {}, "
+                                "\"factor_bound\": {}}},\n",
+                                height_image.width, height_image.height, rt::displacement_bound(displacement),
+                                displacement.factor_bound);
         if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
             text +=
                 fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "

@@ -1,6 +1,6 @@
 // ctess's umbrella header for the embedded runtime (one front door per feature: runtime/cp.hpp, uniform.hpp,
-// pipeline.hpp, surface.hpp): O(1) patches over the compile-time tables, the CPU mesh
-// pipeline and crack-free surface evaluation. Link ctess::runtime (the configured tables, named
+// pipeline.hpp, surface.hpp, displace.hpp): O(1) patches over the compile-time tables, the CPU mesh
+// pipeline, crack-free surface evaluation and displacement. Link ctess::runtime (the configured tables, named
 // ctess::rt::cp_tables and ctess::rt::uniform_tables in code), or pick per table set: ctess::runtime_64 /
 // ctess::runtime_256 (cp_tables_64 / cp_tables_256), ctess::uniform_runtime_11 / _16.
 //
@@ -13,6 +13,7 @@
 #include <ctess/ctess.hpp>
 
 #include "runtime/cp.hpp"
+#include "runtime/displace.hpp"
 #include "runtime/pipeline.hpp"
 #include "runtime/surface.hpp"
 #include "runtime/uniform.hpp"

@@ -404,8 +404,11 @@ class GltfReader {
                 out.texture = t;
                 const int source = g_.textures[static_cast<std::size_t>(t)].source;
                 if (source >= 0 && static_cast<std::size_t>(source) < g_.images.size()) {
-                    const std::string& uri = g_.images[static_cast<std::size_t>(source)].uri;
-                    if (uri.rfind("data:", 0) != 0) out.image_uri = uri;
+                    const tinygltf::Image& image = g_.images[static_cast<std::size_t>(source)];
+                    if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0)
+                        out.image_uri = image.uri;
+                    else // a data: uri or a buffer view: keep_image_bytes kept the encoded bytes
+                        out.image_bytes.assign(image.image.begin(), image.image.end());
                 }
             }
         }
@@ -463,9 +466,12 @@ bool write_whole_file(std::string*, const std::string&, const std::vector<unsign
     return false;
 }
 
-// Images are not decoded (only the displacement image's uri is kept); tinygltf keeps the uri.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                void*) {
+// Images are not decoded here: the encoded bytes are kept in Image::image (tinygltf's pixel vector, unused
+// otherwise), so that an embedded displacement image can reach models::load_height_map_from_memory; an
+// external image keeps its uri.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    if (image != nullptr && bytes != nullptr && size > 0) image->image.assign(bytes, bytes + size);
     return true;
 }
 
@@ -476,7 +482,7 @@ Model load_gltf(std::span<const std::uint8_t> bytes, ModelKind kind, const std::
     FileAccess access{base_dir};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&file_exists, &expand_file_path, &read_whole_file, &write_whole_file, &access});
-    loader.SetImageLoader(&skip_image, nullptr);
+    loader.SetImageLoader(&keep_image_bytes, nullptr);
     tinygltf::Model gltf;
     std::string err, warn;
     const auto length = static_cast<unsigned>(bytes.size());

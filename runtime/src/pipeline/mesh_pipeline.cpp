@@ -18,6 +18,7 @@
 #include <ctess/core/patch_concept.hpp>
 #include <ctess/cp/quad.hpp>
 #include <ctess/d3d11/tessellator.hpp>
+#include <ctess/runtime/displace/displace.hpp>
 #include <ctess/runtime/uniform/split.hpp>
 
 namespace ctess::rt {
@@ -57,11 +58,23 @@ struct PatchSurface {
     SurfaceOptions options;
     bool aen = false; // Surface::pn_aen with MeshView::adjacency
     AdjacentEdge adjacent[4];
+    DisplacementPatch displace; // source null: no displacement (docs/algorithm.md §8)
 };
 
 PatchSurface triangle_surface(const MeshView& mesh, std::uint32_t t, const SurfaceCorner (&corner)[3],
-                              const SurfaceOptions& options) {
+                              const PipelineOptions& pipeline) {
+    const SurfaceOptions& options = pipeline.surface;
     PatchSurface ps(options);
+    if (pipeline.displacement != nullptr) {
+        std::uint32_t w[3];
+        PatchFaces faces;
+        for (unsigned k = 0; k < 3; ++k) {
+            w[k] = mesh.indices[std::size_t{t} * 3 + k];
+            faces.corner_face[k] = faces.edge_face[k] = t;
+            faces.corner_slot[k] = faces.edge_slot[k] = k;
+        }
+        ps.displace = displacement_patch(*pipeline.displacement, mesh, 3, w, faces);
+    }
     ps.aen = options.surface == Surface::pn_aen && mesh.adjacency != nullptr;
     if (ps.aen)
         for (unsigned e = 0; e < 3; ++e)
@@ -73,13 +86,29 @@ PatchSurface triangle_surface(const MeshView& mesh, std::uint32_t t, const Surfa
 // (models::build_adjacency): mesh edge 0 and 1 are the first's edges 0 and 1, mesh edges 2 and 3 the second's
 // edges 1 and 2. Pattern edge k (q[k] -> q[k + 1], q in pattern order) is mesh edge (k + rotation) % 4.
 PatchSurface quad_surface(const MeshView& mesh, std::uint32_t q, std::uint32_t rotation,
-                          const SurfaceCorner (&corner)[4], const SurfaceOptions& options) {
+                          const SurfaceCorner (&corner)[4], const PipelineOptions& pipeline) {
+    const SurfaceOptions& options = pipeline.surface;
     PatchSurface ps(options);
-    ps.aen = options.surface == Surface::pn_aen && mesh.adjacency != nullptr;
-    if (!ps.aen) return ps;
     const std::uint64_t first = std::uint64_t{mesh.triangle_count} + 2 * std::uint64_t{q};
     const std::uint64_t face[4] = {first, first, first + 1, first + 1};
     const unsigned edge[4] = {0, 1, 1, 2};
+    if (pipeline.displacement != nullptr) {
+        // Mesh corners q0, q1, q2 are slots 0-2 of (q0, q1, q2), q3 slot 2 of (q0, q2, q3).
+        const unsigned corner_slot[4] = {0, 1, 2, 2};
+        std::uint32_t w[4];
+        PatchFaces faces;
+        for (unsigned k = 0; k < 4; ++k) {
+            const unsigned m = (k + rotation) % 4;
+            w[k] = mesh.quad_indices[std::size_t{q} * 4 + m];
+            faces.corner_face[k] = face[m == 3 ? 2 : 0];
+            faces.corner_slot[k] = corner_slot[m];
+            faces.edge_face[k] = face[m];
+            faces.edge_slot[k] = edge[m];
+        }
+        ps.displace = displacement_patch(*pipeline.displacement, mesh, 4, w, faces);
+    }
+    ps.aen = options.surface == Surface::pn_aen && mesh.adjacency != nullptr;
+    if (!ps.aen) return ps;
     for (unsigned k = 0; k < 4; ++k) {
         const unsigned m = (k + rotation) % 4;
         ps.adjacent[k] = adjacent_edge(mesh, face[m], edge[m], corner[k], corner[(k + 1) % 4]);
@@ -104,8 +133,12 @@ bool base_quad(const MeshView& mesh, std::uint32_t q, std::uint32_t (&w)[4]) {
 
 // The unclamped factor of mesh edge (i, j) and its squared length, endpoints in mesh-index order so that
 // every face sharing the edge computes the same bits (tess_factor.hpp).
-float mesh_edge_factor(const MeshView& mesh, std::uint32_t i, std::uint32_t j, const DiceOptions& dice) {
-    return edge_factor(mesh_position(mesh, i < j ? i : j), mesh_position(mesh, i < j ? j : i), dice);
+float mesh_edge_factor(const MeshView& mesh, std::uint32_t i, std::uint32_t j,
+                       const PipelineOptions& options) {
+    const Vec3 a = mesh_position(mesh, i < j ? i : j), b = mesh_position(mesh, i < j ? j : i);
+    const float f = edge_factor(a, b, options.dice);
+    // Displacement can lengthen the edge: grown by its bound (docs/algorithm.md §8.4).
+    return options.displacement != nullptr ? displaced_edge_factor(*options.displacement, f, a, b) : f;
 }
 
 float mesh_edge_length2(const MeshView& mesh, std::uint32_t i, std::uint32_t j) {
@@ -123,6 +156,7 @@ TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, co
     } else {
         s = evaluate_surface(corner, w, surface.options);
     }
+    displace_triangle_point(surface.displace, w, s); // no-op without displacement (§8)
     return {base.u,
             base.v,
             {s.position.x, s.position.y, s.position.z},
@@ -155,6 +189,7 @@ TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const Pa
     if (!done)
         p = surface.aen ? evaluate_quad_surface_aen(q, surface.adjacent, s, t, surface.options)
                         : evaluate_quad_surface(q, s, t, surface.options);
+    displace_quad_point(surface.displace, s, t, p); // no-op without displacement (§8)
     return {s,
             t,
             {p.position.x, p.position.y, p.position.z},
@@ -532,7 +567,7 @@ PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32
     if (!base_quad(mesh, q, w)) return rec;
     float f[4], length2[4];
     for (unsigned k = 0; k < 4; ++k) {
-        f[k] = mesh_edge_factor(mesh, w[k], w[(k + 1) % 4], options.dice);
+        f[k] = mesh_edge_factor(mesh, w[k], w[(k + 1) % 4], options);
         length2[k] = mesh_edge_length2(mesh, w[k], w[(k + 1) % 4]);
         clamped += family.clamped(f[k]) ? 1u : 0u;
     }
@@ -542,7 +577,7 @@ PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32
     float diagonal;
     if constexpr (F::own_diagonal) {
         r = uniform_quad_rotation(mesh, w, options.quad_rule);
-        diagonal = mesh_edge_factor(mesh, w[(1 + r) % 4], w[(3 + r) % 4], options.dice);
+        diagonal = mesh_edge_factor(mesh, w[(1 + r) % 4], w[(3 + r) % 4], options);
         clamped += family.clamped(diagonal) ? 1u : 0u;
     } else {
         r = cp_quad_rotation(length2, options.quad_rule);
@@ -579,7 +614,7 @@ PatchRecord setup_record(const F& family, const MeshView& mesh, std::uint32_t p,
     if (!base_triangle(mesh, p, w)) return rec;
     float length2[3];
     for (unsigned k = 0; k < 3; ++k) {
-        rec.factor[k] = mesh_edge_factor(mesh, w[k], w[(k + 1) % 3], options.dice);
+        rec.factor[k] = mesh_edge_factor(mesh, w[k], w[(k + 1) % 3], options);
         length2[k] = mesh_edge_length2(mesh, w[k], w[(k + 1) % 3]);
         clamped += family.clamped(rec.factor[k]) ? 1u : 0u;
     }
@@ -627,6 +662,8 @@ PipelineStatus check_options(const UniformTableSet* uniform, const PipelineOptio
     const Surface surface = options.surface.surface;
     if (surface != Surface::flat && surface != Surface::pn_triangles && surface != Surface::phong &&
         surface != Surface::pn_aen)
+        return PipelineStatus::bad_option;
+    if (options.displacement != nullptr && !displacement_valid(*options.displacement))
         return PipelineStatus::bad_option;
     return PipelineStatus::ok;
 }
@@ -724,7 +761,7 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
             base_triangle(mesh, p, w);
             const SurfaceCorner corner[3] = {mesh_corner(mesh, w[0]), mesh_corner(mesh, w[1]),
                                              mesh_corner(mesh, w[2])};
-            const PatchSurface surface = triangle_surface(mesh, p, corner, options.surface);
+            const PatchSurface surface = triangle_surface(mesh, p, corner, options);
             const typename F::patch_type patch = family.patch(rec);
             for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
                 vertices[rec.first_vertex + i] =
@@ -740,8 +777,7 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
         base_quad(mesh, p - mesh.triangle_count, w);
         SurfaceCorner q[4];
         quad_corners(mesh, w, rec.rotation, q);
-        const PatchSurface surface =
-            quad_surface(mesh, p - mesh.triangle_count, rec.rotation, q, options.surface);
+        const PatchSurface surface = quad_surface(mesh, p - mesh.triangle_count, rec.rotation, q, options);
         std::uint32_t first = rec.first_vertex;
         for (unsigned h = 0; h < 2; ++h) {
             const PatchRecord half = half_record(rec, h);
@@ -827,12 +863,12 @@ class PatchWeld {
                 tri[0].corner[k] = w[k];
                 corner[k] = mesh_corner(mesh_, w[k]);
             }
-            surface = triangle_surface(mesh_, p, corner, options_.surface);
+            surface = triangle_surface(mesh_, p, corner, options_);
         } else {
             std::uint32_t w[4];
             base_quad(mesh_, p - mesh_.triangle_count, w);
             quad_corners(mesh_, w, rec.rotation, q);
-            surface = quad_surface(mesh_, p - mesh_.triangle_count, rec.rotation, q, options_.surface);
+            surface = quad_surface(mesh_, p - mesh_.triangle_count, rec.rotation, q, options_);
             const unsigned order[2][3] = {{0, 1, 3}, {2, 3, 1}};
             n = 2;
             for (unsigned h = 0; h < 2; ++h) {
@@ -859,7 +895,7 @@ class PatchWeld {
                 const WeldedEdge key = edge_key(a, b);
                 const auto it = std::lower_bound(edges_.begin(), edges_.end(), key, edge_less);
                 if (it == edges_.end() || it->lo != key.lo || it->hi != key.hi) return false;
-                family_.edge_params(mesh_edge_factor(mesh_, a, b, options_.dice), params_[k]);
+                family_.edge_params(mesh_edge_factor(mesh_, a, b, options_), params_[k]);
                 if (params_[k].count != it->vertex_count) return false;
                 edge_first_[k] = it->first_vertex;
             }
@@ -978,7 +1014,7 @@ PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const Pip
     std::uint64_t vertices = mesh.vertex_count, triangles = 0;
     EdgeParams params;
     for (std::size_t i = 0; i < n; ++i) {
-        family.edge_params(mesh_edge_factor(mesh, edges[i].lo, edges[i].hi, options.dice), params);
+        family.edge_params(mesh_edge_factor(mesh, edges[i].lo, edges[i].hi, options), params);
         edges[i].first_vertex = static_cast<std::uint32_t>(vertices);
         edges[i].vertex_count = params.count;
         vertices += params.count;
@@ -1017,7 +1053,7 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
         if (e.lo > e.hi || e.hi >= mesh.vertex_count || (i > 0 && !edge_less(edges[i - 1], e)) ||
             e.first_vertex != vertices_sum)
             return PipelineStatus::bad_patch_record;
-        family.edge_params(mesh_edge_factor(mesh, e.lo, e.hi, options.dice), params);
+        family.edge_params(mesh_edge_factor(mesh, e.lo, e.hi, options), params);
         if (e.vertex_count != params.count) return PipelineStatus::bad_patch_record;
         vertices_sum += e.vertex_count;
         if (check_pipeline_size(0, vertices_sum, 0) != PipelineStatus::ok)
@@ -1043,7 +1079,14 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
     // Every mesh vertex is output vertex v (also when no face uses it): its corner value.
     for (std::uint32_t v = 0; v < mesh.vertex_count; ++v) {
         const SurfaceCorner c[3] = {mesh_corner(mesh, v), mesh_corner(mesh, v), mesh_corner(mesh, v)};
-        vertices[v] = surface_vertex(c, DomainPoint{0, 0}, PatchSurface{options.surface});
+        PatchSurface corner_surface{options.surface};
+        if (options.displacement != nullptr) {
+            // No face: the dominant vertex by position id (a corner a face reaches is rewritten by it).
+            const std::uint32_t w[3] = {v, v, v};
+            const MeshView own{mesh.vertices, mesh.vertex_count, nullptr, 0, nullptr, 0, mesh.position_ids};
+            corner_surface.displace = displacement_patch(*options.displacement, own, 3, w, PatchFaces{});
+        }
+        vertices[v] = surface_vertex(c, DomainPoint{0, 0}, corner_surface);
     }
     for (std::uint32_t p = 0; p < count; ++p) {
         Counts c;

@@ -3,4 +3,5 @@
 // docs/models.md describes what is read, what is refused and why.
 #pragma once
 #include <ctess/runtime/models/adjacency.hpp>
+#include <ctess/runtime/models/height_map.hpp>
 #include <ctess/runtime/models/model.hpp>

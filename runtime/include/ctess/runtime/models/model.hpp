@@ -26,7 +26,9 @@ struct Model {
     struct Displacement {
         bool present = false;
         std::string image_uri; // the image's uri; empty when the image is embedded or absent
-        int texture = -1;      // index into the glTF file's textures, -1: none
+        // An embedded image's encoded bytes (a data: uri or a buffer view), for load_height_map_from_memory.
+        std::vector<std::uint8_t> image_bytes;
+        int texture = -1; // index into the glTF file's textures, -1: none
         float factor = 1, offset = 0;
     } displacement;
     // Faces whose corners do not have distinct positions (a zero-length edge), dropped and counted here.

@@ -106,12 +106,17 @@ struct WeldOptions {
     bool keep_degenerate = false;
 };
 
+struct Displacement; // displace/displace.hpp
+
 struct PipelineOptions {
     DiceOptions dice{};
     SurfaceOptions surface{};
     Pattern pattern = Pattern::cp;
     QuadRule quad_rule = QuadRule::longer_pair;
     WeldOptions weld{};
+    // Displacement (displace/displace.hpp, docs/algorithm.md §8): null, the default, is none. Applied to
+    // every output vertex of emit_mesh and emit_welded_mesh; its factor_bound also grows the edge factors.
+    const Displacement* displacement = nullptr;
 };
 
 // A quad record (docs/algorithm.md §7.3) has kind == patch_kind_quad; the GPU does not read quads yet. Its

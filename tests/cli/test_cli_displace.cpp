@@ -1,0 +1,226 @@
+// `ctess mesh --displace FILE | --displace-gltf` as a user runs it (docs/cli.md, "Models"; docs/algorithm.md
+// §8): a closed cube with split normals and uv seams stays closed after displacement for every surface, the
+// displacement moves it, --displace-grow adds triangles; a glTF's own KHR_materials_displacement image
+// embedded as a data: uri is read with the file's factor and offset (exact heights on a flat triangle); bad
+// images and bad options fail with nothing written.
+#include "support/cli_run.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <stb/stb_image_write.h>
+
+using ctess::test::ctess_cli;
+using ctess::test::Run;
+
+namespace {
+
+std::string scratch(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / "ctess_test_cli_displace";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+void write_file(const std::string& path, const std::string& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out << bytes;
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void append_bytes(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+}
+
+// A grey PNG of w x h texels from a function of the texel.
+template <class F>
+std::string png(int w, int h, F texel) {
+    std::vector<std::uint8_t> t(static_cast<std::size_t>(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) t[static_cast<std::size_t>(y * w + x)] = texel(x, y);
+    std::string out;
+    REQUIRE(stbi_write_png_to_func(&append_bytes, &out, w, h, 1, t.data(), w) != 0);
+    return out;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t n = static_cast<std::uint8_t>(bytes[i]) << 16;
+        if (i + 1 < bytes.size())
+            n |= static_cast<std::uint32_t>(static_cast<std::uint8_t>(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) n |= static_cast<std::uint8_t>(bytes[i + 2]);
+        out += digits[(n >> 18) & 63];
+        out += digits[(n >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(n >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+// The closed mixed cube of test_cli_mesh.cpp: quads on the sides, triangles top and bottom, one normal per
+// face, every face on the same uv square (so each shared edge is sampled at different uvs by its two faces).
+std::string mixed_cube_obj() {
+    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+    s += "vn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 -1\nvn 0 0 1\n";
+    s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
+    s += "f 1/1/1 2/2/1 6/3/1 5/4/1\nf 2/1/2 3/2/2 7/3/2 6/4/2\nf 3/1/3 4/2/3 8/3/3 7/4/3\nf 4/1/4 1/2/4 "
+         "5/3/4 8/4/4\n";
+    s += "f 1/1/5 4/4/5 3/3/5\nf 1/1/5 3/3/5 2/2/5\nf 5/1/6 6/2/6 7/3/6\nf 5/1/6 7/3/6 8/4/6\n";
+    return s;
+}
+
+nlohmann::json stats(const std::string& args) {
+    const Run r = ctess_cli("mesh --stats " + args);
+    INFO(args << "\n" << r.out);
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out);
+}
+
+// The z coordinates of an OBJ's vertices.
+std::vector<double> obj_z(const std::string& path) {
+    std::istringstream in(read_file(path));
+    std::vector<double> z;
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("v ", 0) == 0) {
+            double x, y, w;
+            std::istringstream(line.substr(2)) >> x >> y >> w;
+            z.push_back(w);
+        }
+    return z;
+}
+
+} // namespace
+
+TEST_CASE("ctess mesh --displace: a closed model with split normals and uv seams stays closed",
+          "[cli][mesh][displace]") {
+    const std::string in = scratch("cube.obj");
+    write_file(in, mixed_cube_obj());
+    const std::string map = scratch("ripple.png");
+    write_file(map,
+               png(32, 32, [](int x, int y) { return static_cast<std::uint8_t>((x * 37 + y * 91) % 256); }));
+    for (const char* surface : {"flat", "pn", "pn-aen", "phong"})
+        for (const char* pattern : {"cp", "uniform"}) {
+            const std::string common =
+                std::string("--in ") + in + " --factor 6 --surface " + surface + " --pattern " + pattern;
+            const nlohmann::json s = stats(common + " --displace " + map + " --displace-scale 0.05");
+            CHECK(s["input_open_edges"] == 0);
+            CHECK(s["output_open_edges"] == 0);
+            const nlohmann::json grown =
+                stats(common + " --displace " + map + " --displace-scale 0.05 --displace-grow");
+            CHECK(grown["output_open_edges"] == 0);
+            // The map's bound: 0.05 * 253 / 255 (its largest texel), used only with --displace-grow.
+            CHECK(s["displacement"]["width"] == 32);
+            CHECK(std::fabs(s["displacement"]["bound"].get<double>() - 0.05 * 253.0 / 255.0) < 1e-6);
+            CHECK(s["displacement"]["factor_bound"] == 0);
+            CHECK(grown["displacement"]["factor_bound"] == grown["displacement"]["bound"]);
+            // Every factor grows (unit edges 6 -> 6.6): CP adds points; a uniform pattern may keep its count
+            // ((7, 6, 7) has the 36 triangles of (6, 6, 6)).
+            if (std::string(pattern) == "cp")
+                CHECK(grown["output_triangles"].get<long>() > s["output_triangles"].get<long>());
+            else
+                CHECK(grown["output_triangles"].get<long>() >= s["output_triangles"].get<long>());
+        }
+    // The displacement moves the surface: the outputs differ from the undisplaced one.
+    const std::string plain = scratch("plain.obj"), moved = scratch("moved.obj");
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 4 --out " + plain).exit_code == 0);
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 4 --displace " + map + " --displace-scale 0.05 --out " +
+                      moved)
+                .exit_code == 0);
+    CHECK(obj_z(plain).size() == obj_z(moved).size());
+    CHECK(obj_z(plain) != obj_z(moved));
+}
+
+TEST_CASE("ctess mesh --displace-gltf: the model's own embedded displacement image, factor and offset",
+          "[cli][mesh][displace]") {
+    // One flat triangle (normals +z, uvs = xy), its material's KHR_materials_displacement texture a 4 x 4 PNG
+    // of 255 in a data: uri, factor 0.5, offset 0.1: every output vertex at z = 1 * 0.5 + 0.1.
+    std::string buffer;
+    const float data[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    buffer.assign(reinterpret_cast<const char*>(data), sizeof data);
+    const std::string image = png(4, 4, [](int, int) { return std::uint8_t{255}; });
+    const std::string gltf =
+        R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_materials_displacement"],
+  "buffers": [{"byteLength": 96, "uri": "data:application/octet-stream;base64,)" +
+        base64(buffer) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 72, "byteLength": 24}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}],
+  "images": [{"uri": "data:image/png;base64,)" +
+        base64(image) + R"("}],
+  "textures": [{"source": 0}],
+  "materials": [{"extensions": {"KHR_materials_displacement": {"displacementTexture": {"index": 0},
+                 "displacementFactor": 0.5, "displacementOffset": 0.1}}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "material": 0}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+    const std::string in = scratch("displaced.gltf"), out = scratch("displaced.obj");
+    write_file(in, gltf);
+    const Run r = ctess_cli("mesh --in " + in + " --factor 5 --displace-gltf --out " + out);
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const std::vector<double> z = obj_z(out);
+    REQUIRE(z.size() > 10);
+    for (const double v : z) CHECK(std::fabs(v - 0.6) <= 1e-6);
+    // --displace-offset overrides the file's offset.
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 5 --displace-gltf --displace-offset 0 --out " + out)
+                .exit_code == 0);
+    for (const double v : obj_z(out)) CHECK(std::fabs(v - 0.5) <= 1e-6);
+}
+
+TEST_CASE("ctess mesh --displace: bad images and options are a clear error and write nothing",
+          "[cli][mesh][displace][bad_input]") {
+    const std::string out = scratch("never.obj");
+    std::filesystem::remove(out);
+    const std::string cube = scratch("cube_errors.obj");
+    write_file(cube, mixed_cube_obj());
+    const std::string good = png(8, 8, [](int x, int) { return static_cast<std::uint8_t>(x * 30); });
+    const std::string truncated = scratch("truncated.png"), empty = scratch("empty.png"),
+                      text = scratch("text.png");
+    write_file(truncated, good.substr(0, good.size() / 2));
+    write_file(empty, "");
+    write_file(text, "this is not an image at all");
+    struct Case {
+        std::string args;
+        int exit_code;
+        std::string message;
+    };
+    const std::string base = "--in " + cube + " --factor 3 --out " + out;
+    const std::vector<Case> cases = {
+        {base + " --displace /nonexistent/height.png", 1, "/nonexistent/height.png: no such file"},
+        {base + " --displace " + truncated, 1, truncated},
+        {base + " --displace " + empty, 1, "empty"},
+        {base + " --displace " + text, 1, "not an image"},
+        {base + " --displace-gltf", 1, "no KHR_materials_displacement texture"},
+        {base + " --displace " + truncated + " --displace-gltf", 2, "one of --displace"},
+        {base + " --displace-scale 2", 2, "go with --displace"},
+        {base + " --displace-grow", 2, "go with --displace"},
+        {base + " --displace " + truncated + " --displace-scale nan", 2, "--displace-scale"},
+        {base + " --displace " + truncated + " --displace-offset inf", 2, "--displace-offset"},
+        {base + " --displace " + truncated + " --displace-address mirror", 2, "--displace-address"},
+    };
+    for (const Case& c : cases) {
+        const Run r = ctess_cli("mesh " + c.args);
+        INFO(c.args << "\n" << r.out);
+        CHECK(r.exit_code == c.exit_code);
+        CHECK(r.out.find(c.message) != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(out));
+    }
+}

@@ -1,0 +1,37 @@
+// libFuzzer: ctess::models::load_height_map_from_memory on arbitrary bytes (PNG and what stb_image reads).
+// Any input gives an image or an error (never a crash, a hang or a sanitizer report); an image keeps the
+// loader's promises (docs/models.md, "Height maps"): sides in [1, 16384], at most 2^26 texels, width * height
+// texels, finite, in [0, 1] unless the file is a Radiance .hdr; and the pipeline's sampler reads it finitely
+// (docs/algorithm.md §8.1).
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include <ctess/runtime/displace/displace.hpp>
+#include <ctess/runtime/models/height_map.hpp>
+
+#include "fuzz_input.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace ctess;
+    const models::HeightMapResult r =
+        models::load_height_map_from_memory(std::span<const std::uint8_t>(data, size));
+    CTESS_FUZZ_CHECK(r.ok() != !r.error.message.empty());
+    if (!r.ok()) return 0;
+    const models::HeightImage& image = *r.image;
+    CTESS_FUZZ_CHECK(image.width >= 1 && image.width <= models::max_height_map_side);
+    CTESS_FUZZ_CHECK(image.height >= 1 && image.height <= models::max_height_map_side);
+    CTESS_FUZZ_CHECK(std::uint64_t{image.width} * image.height <= models::max_height_map_texels);
+    CTESS_FUZZ_CHECK(image.texels.size() == std::size_t{image.width} * image.height);
+    const bool hdr = size >= 2 && data[0] == '#' && data[1] == '?';
+    for (const float t : image.texels) {
+        CTESS_FUZZ_CHECK(std::isfinite(t));
+        if (!hdr) CTESS_FUZZ_CHECK(t >= 0.0f && t <= 1.0f);
+    }
+    for (const rt::AddressMode mode : {rt::AddressMode::repeat, rt::AddressMode::clamp}) {
+        const rt::HeightMap map = image.view(mode);
+        for (const float u : {-1.5f, 0.0f, 0.37f, 1.0f, 2.25f})
+            CTESS_FUZZ_CHECK(std::isfinite(rt::sample_bilinear(map, u, 1.0f - u)));
+    }
+    return 0;
+}
