@@ -116,7 +116,7 @@ TEST_CASE("ctess mesh --displace: a closed model with split normals and uv seams
     write_file(map,
                png(32, 32, [](int x, int y) { return static_cast<std::uint8_t>((x * 37 + y * 91) % 256); }));
     for (const char* surface : {"flat", "pn", "pn-aen", "phong"})
-        for (const char* pattern : {"cp", "uniform"}) {
+        for (const char* pattern : {"cp", "uniform", "d3d11-even", "d3d11-odd"}) {
             const std::string common =
                 std::string("--in ") + in + " --factor 6 --surface " + surface + " --pattern " + pattern;
             const nlohmann::json s = stats(common + " --displace " + map + " --displace-scale 0.05");

@@ -285,8 +285,10 @@ TEST_CASE("watertight at uv seams and hard edges (§8.2): the chart cube, triang
         d.directions = directions.data();
         for (const rt::Surface surface :
              {rt::Surface::flat, rt::Surface::pn_triangles, rt::Surface::pn_aen, rt::Surface::phong}) {
-            for (const float factor : {1.0f, 2.5f, 9.3f})
-                for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+            for (const float factor : {1.0f, 2.5f, 9.3f, 30.0f}) // 30: a split uniform patch
+                for (const rt::Pattern pattern :
+                     {rt::Pattern::cp, rt::Pattern::uniform, rt::Pattern::uniform_split,
+                      rt::Pattern::d3d11_fractional_even}) {
                     INFO("faces " << faces << " surface " << static_cast<int>(surface) << " factor " << factor
                                   << " pattern " << static_cast<int>(pattern));
                     rt::PipelineOptions options = constant_factor(factor, surface);
