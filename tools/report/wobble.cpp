@@ -14,7 +14,8 @@
 //
 //   ./build/release/tools/report/ctess_wobble OUT_DIR [MACHINE_NAME]
 //
-// Writes OUT_DIR/wobble.md and OUT_DIR/wobble_{error,movement}.svg. Exit status 0, or 1 with a message.
+// Writes OUT_DIR/wobble.md, OUT_DIR/wobble_{error,movement}.svg and the displaced plane at one step with CP
+// and D3D11 fractional_even (OUT_DIR/displaced_{cp,d3d11_even}.svg). Exit status 0, or 1 with a message.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -51,8 +52,17 @@ D3 operator-(D3 a, D3 b) {
 D3 operator*(double s, D3 a) {
     return {s * a.x, s * a.y, s * a.z};
 }
+double dot(D3 a, D3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+D3 cross(D3 a, D3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 double length(D3 a) {
-    return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+    return std::sqrt(dot(a, a));
+}
+D3 unit(D3 a) {
+    return (1 / length(a)) * a;
 }
 
 // A scene: base triangles (positions, normals, planar uvs in [0, 1]^2), the displacement amplitude, the
@@ -215,6 +225,7 @@ constexpr double dice_rate = 8;           // pixels per segment: factors stay be
 constexpr double pixels_per_unit = 935.3; // 1080 / (2 tan 30°): 1920 x 1080, 60° vertical field of view
 constexpr unsigned samples_per_triangle = 6;
 constexpr std::size_t sampled_triangles = 96;
+constexpr int render_step = 20; // the README's pictures
 
 // Fixed sample weights inside a base triangle (Halton-like, away from the edges).
 std::array<std::array<double, 2>, samples_per_triangle> sample_weights() {
@@ -239,6 +250,83 @@ struct Result {
     double mean_move = 0, max_move = 0;
     std::size_t pops = 0, moves = 0;
 };
+
+// The scene's displaced tessellation at dolly step k as the camera sees it: a perspective view, flat-shaded
+// triangles drawn far to near with their edges, as an SVG of width x height pixels.
+std::string render(const Scene& scene, const Generator& g, int k, int width, int height) {
+    const rt::MeshView mesh = scene.view();
+    const double d = scene.far * std::pow(scene.near / scene.far, k / double(steps - 1));
+    const D3 eye = scene.centre + d * scene.direction;
+    rt::PipelineOptions o;
+    o.pattern = g.pattern;
+    o.dice.eye = {static_cast<float>(eye.x), static_cast<float>(eye.y), static_cast<float>(eye.z)};
+    o.dice.projection_scale = static_cast<float>(pixels_per_unit);
+    o.dice.dice_rate = static_cast<float>(dice_rate);
+    std::vector<rt::PatchRecord> records(mesh.patch_count());
+    rt::PipelineTotals totals;
+    std::vector<rt::TessVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    if (rt::setup_patches(rt::cp_tables_64, rt::uniform_tables, mesh, o, records, totals) ==
+        rt::PipelineStatus::ok) {
+        vertices.resize(totals.vertices);
+        indices.resize(3 * std::size_t{totals.triangles});
+        rt::emit_mesh(rt::cp_tables_64, rt::uniform_tables, mesh, o, records, vertices, indices);
+    }
+    std::vector<D3> displaced(vertices.size());
+    for (std::uint32_t t = 0; t < mesh.triangle_count; ++t)
+        for (std::uint32_t i = 0; i < records[t].vertex_count; ++i) {
+            const rt::TessVertex& v = vertices[records[t].first_vertex + i];
+            displaced[records[t].first_vertex + i] =
+                scene.surface(t, v.u / double(cp::fixed_one), v.v / double(cp::fixed_one));
+        }
+    // The camera: looking from the eye at the centre, z up; the image spans the plane's bounds.
+    const D3 forward = unit(scene.centre - eye), right = unit(cross(forward, {0, 0, 1})),
+             up = cross(right, forward);
+    const D3 light = unit({-0.8, 0.4, 0.45}); // low, so that the bumps show
+    struct Face {
+        double depth;
+        std::array<std::array<double, 2>, 3> p;
+        double shade;
+    };
+    std::vector<Face> faces;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        Face f{};
+        const D3 a = displaced[indices[t]], b = displaced[indices[t + 1]], c = displaced[indices[t + 2]];
+        const D3 n = cross(b - a, c - a);
+        if (length(n) == 0) continue;
+        f.shade = 0.2 + 0.8 * std::max(0.0, dot(n.z < 0 ? -1.0 * unit(n) : unit(n), light));
+        for (unsigned j = 0; j < 3; ++j) {
+            const D3 q = displaced[indices[t + j]] - eye;
+            const double z = dot(q, forward);
+            f.p[j] = {dot(q, right) / z, -dot(q, up) / z};
+            f.depth += z / 3;
+            for (unsigned e = 0; e < 2; ++e)
+                lo[e] = std::min(lo[e], f.p[j][e]), hi[e] = std::max(hi[e], f.p[j][e]);
+        }
+        faces.push_back(f);
+    }
+    std::sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) { return x.depth > y.depth; });
+    const double scale = std::min((width - 20) / (hi[0] - lo[0]), (height - 40) / (hi[1] - lo[1]));
+    const double x0 = 0.5 * (width - (hi[0] - lo[0]) * scale),
+                 y0 = 30 + 0.5 * (height - 40 - (hi[1] - lo[1]) * scale);
+    std::string svg =
+        fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" "
+                    "font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" "
+                    "height=\"100%\" fill=\"white\"/>\n<text x=\"10\" y=\"20\">{}: {} "
+                    "triangles, DiceRate {} px</text>\n<g stroke=\"#444\" stroke-width=\"0.25\">\n",
+                    width, height, g.name, indices.size() / 3, dice_rate);
+    for (const Face& f : faces) {
+        const int grey = static_cast<int>(255 * f.shade);
+        svg += fmt::format(
+            "<path d=\"M{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}Z\" fill=\"#{:02x}{:02x}{:02x}\"/>\n",
+            x0 + (f.p[0][0] - lo[0]) * scale, y0 + (f.p[0][1] - lo[1]) * scale,
+            x0 + (f.p[1][0] - lo[0]) * scale, y0 + (f.p[1][1] - lo[1]) * scale,
+            x0 + (f.p[2][0] - lo[0]) * scale, y0 + (f.p[2][1] - lo[1]) * scale, grey, grey,
+            std::min(255, grey + 20));
+    }
+    return svg + "</g>\n</svg>\n";
+}
 
 Result run(const Scene& scene, const Generator& g) {
     const rt::MeshView mesh = scene.view();
@@ -423,6 +511,9 @@ int main(int argc, char** argv) {
             }
             md += "\n";
         }
+        // The README's pictures: the displaced plane at one step, CP beside D3D11 fractional_even.
+        write(dir / "displaced_cp.svg", render(scenes[0], generators[0], render_step, 480, 360));
+        write(dir / "displaced_d3d11_even.svg", render(scenes[0], generators[1], render_step, 480, 360));
         write(dir / "wobble_error.svg", line_plot("Displaced plane: error against triangles",
                                                   "output triangles", "error / amplitude", error_series));
         write(dir / "wobble_movement.svg", line_plot("Displaced plane: largest movement per dolly step",
