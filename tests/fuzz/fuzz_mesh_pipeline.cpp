@@ -29,10 +29,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.dice.eye = {in.float_bits(), in.float_bits(), in.float_bits()};
     if (mode & 2) options.dice.projection_scale = in.float_bits();
     if (mode & 4) options.dice.dice_rate = in.float_bits();
-    options.surface.surface = static_cast<rt::Surface>(in.byte() % 4);
+    const unsigned surface_value = in.byte() % 5u; // 4 is past the enum
+    options.surface.surface = static_cast<rt::Surface>(surface_value);
     options.surface.alpha = (mode & 8) ? in.float_bits() : 0.75f;
     const auto pattern_value = in.byte() % 8u; // 7 is past the enum
     options.pattern = static_cast<rt::Pattern>(pattern_value);
+    const unsigned quad_rule_value = (mode & 8) ? in.byte() % 3u : 0u; // 2 is past the enum
+    options.quad_rule = static_cast<rt::QuadRule>(quad_rule_value);
+    const bool bad_option = pattern_value > 6 || surface_value > 3 || quad_rule_value > 1;
     // A split patch of factor 32,768 takes a walk of millions of leaves to count: no repeated patches.
     const bool split = options.pattern == rt::Pattern::uniform_split;
     const rt::UniformTableSet& uniform = rt::uniform_tables;
@@ -54,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<rt::PatchRecord> records(mesh.triangle_count);
     rt::PipelineTotals totals{1234, 5678};
     const PipelineStatus setup = rt::setup_patches(tables, uniform, mesh, options, records, totals);
-    if (pattern_value > 6) {
+    if (bad_option) {
         CTESS_FUZZ_CHECK(setup == PipelineStatus::bad_option);
         return 0;
     }

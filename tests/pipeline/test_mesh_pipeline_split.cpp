@@ -202,6 +202,33 @@ TEST_CASE(
     CHECK_FALSE(rt::UniformSplit::root_edge_points(tables, 100.0f, short_span));
 }
 
+TEST_CASE("uniform_split at 32,768: quads and the welded output are refused from their counts, not emitted") {
+    // One quad (two halves of about 1.07 billion triangles each) and the tetrahedron's welded output: both
+    // past the pipeline's 32-bit vertex words, refused before any pattern is generated (a generated half
+    // would need some 17 GB).
+    Model quad;
+    quad.add(0, 0, 0, 0, 0, 1, 0, 0);
+    quad.add(1, 0, 0, 0, 0, 1, 1, 0);
+    quad.add(1, 1, 0, 0, 0, 1, 1, 1);
+    quad.add(0, 1, 0, 0, 0, 1, 0, 1);
+    quad.quads = {0, 1, 2, 3};
+    rt::PipelineOptions o;
+    o.pattern = rt::Pattern::uniform_split;
+    o.dice.mode = rt::FactorMode::constant;
+    o.dice.constant_factor = 32768.0f;
+    std::vector<rt::PatchRecord> records(1);
+    rt::PipelineTotals totals;
+    CHECK(rt::setup_patches(rt::cp_tables_64, rt::uniform_tables, quad.view(), o, records, totals) ==
+          rt::PipelineStatus::too_many_vertices);
+    for (const Model& m : {quad, tetrahedron()}) {
+        std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(m.view()));
+        std::vector<rt::WeldedPatch> patches(m.view().patch_count());
+        rt::WeldedTotals welded;
+        CHECK(rt::setup_welded(rt::cp_tables_64, rt::uniform_tables, m.view(), o, edges, patches, welded) ==
+              rt::PipelineStatus::too_many_vertices);
+    }
+}
+
 TEST_CASE("uniform_split needs the uniform tables; an unknown pattern is refused") {
     const Model m = tetrahedron();
     rt::PipelineOptions o;

@@ -266,12 +266,14 @@ std::string render(const Scene& scene, const Generator& g, int k, int width, int
     rt::PipelineTotals totals;
     std::vector<rt::TessVertex> vertices;
     std::vector<std::uint32_t> indices;
-    if (rt::setup_patches(rt::cp_tables_64, rt::uniform_tables, mesh, o, records, totals) ==
-        rt::PipelineStatus::ok) {
-        vertices.resize(totals.vertices);
-        indices.resize(3 * std::size_t{totals.triangles});
-        rt::emit_mesh(rt::cp_tables_64, rt::uniform_tables, mesh, o, records, vertices, indices);
-    }
+    if (rt::setup_patches(rt::cp_tables_64, rt::uniform_tables, mesh, o, records, totals) !=
+        rt::PipelineStatus::ok)
+        throw std::runtime_error("setup_patches failed on " + scene.name);
+    vertices.resize(totals.vertices);
+    indices.resize(3 * std::size_t{totals.triangles});
+    if (rt::emit_mesh(rt::cp_tables_64, rt::uniform_tables, mesh, o, records, vertices, indices) !=
+        rt::PipelineStatus::ok)
+        throw std::runtime_error("emit_mesh failed on " + scene.name);
     std::vector<D3> displaced(vertices.size());
     for (std::uint32_t t = 0; t < mesh.triangle_count; ++t)
         for (std::uint32_t i = 0; i < records[t].vertex_count; ++i) {

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <concepts>
 #include <cstdint>
+#include <cstdlib>
+#include <optional>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -256,6 +258,7 @@ struct CpFamily {
         return true;
     }
     patch_type patch(const PatchRecord& rec) const { return patch_of(tables, rec); }
+    Counts counts_of(const PatchRecord& rec) const { return patch(rec).counts(); }
     patch_type welded_patch(const PatchRecord& rec) const {
         return CpPatch(tables, cp::LineState{rec.token[0], rec.t16[0]},
                        cp::LineState{rec.token[1], rec.t16[1]}, cp::LineState{rec.token[2], rec.t16[2]},
@@ -308,6 +311,7 @@ struct UniformFamily {
         return true;
     }
     patch_type patch(const PatchRecord& rec) const { return uniform_patch_of(tables, rec); }
+    Counts counts_of(const PatchRecord& rec) const { return patch(rec).counts(); }
     patch_type welded_patch(const PatchRecord& rec) const { return uniform_patch_of(tables, rec); }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
         return uniform_base_point(patch, i);
@@ -337,7 +341,9 @@ class SplitPatch {
         const Counts c = split_.counts();
         points_.resize(c.vertices);
         indices_.resize(c.index_count());
-        if (!split_.emit(points_, indices_)) points_.clear(), indices_.clear();
+        // The spans are counts() long, so emit() writes them whole (split.hpp); anything else is a broken
+        // invariant, never an output with a silently empty or zeroed patch.
+        if (!split_.emit(points_, indices_)) std::abort();
     }
     Counts counts() const noexcept {
         return {static_cast<std::uint32_t>(points_.size()), static_cast<std::uint32_t>(indices_.size() / 3)};
@@ -379,13 +385,9 @@ struct UniformSplitFamily {
     }
     void setup(PatchRecord& rec, const float (&)[3]) const {
         set_lines(rec, rec.factor);
-        const Counts c = split_of(tables, rec).counts();
-        // Counts past 32 bits come back {0, 0} (split.hpp; none with the shipped tables): as many vertices as
-        // a record can hold, so the totals check refuses the mesh (too_many_vertices) instead of losing the
-        // patch.
-        const bool overflow = c.triangles == 0;
-        rec.vertex_count = overflow ? 0xFFFFFFFFu : c.vertices;
-        rec.triangle_count = overflow ? 0xFFFFFFFFu : c.triangles;
+        const Counts c = counts_of(rec);
+        rec.vertex_count = c.vertices;
+        rec.triangle_count = c.triangles;
     }
     bool clamped(float f) const {
         return uniform_factor(f, uniform_split_max_factor + 1) > uniform_split_max_factor;
@@ -397,10 +399,17 @@ struct UniformSplitFamily {
             if (rec.uniform_factor(k) < 1 || rec.uniform_factor(k) > uniform_split_max_factor ||
                 rec.t16[k] != 0)
                 return false;
-        counts = split_of(tables, rec).counts();
+        counts = counts_of(rec);
         return true;
     }
     patch_type patch(const PatchRecord& rec) const { return SplitPatch(tables, rec); }
+    // The counts from the split's walk, without emitting; counts past 32 bits (which UniformSplit gives as
+    // {0, 0}; none with the shipped tables) as the most a record holds, so that the totals check refuses them
+    // (too_many_vertices) instead of losing the patch.
+    Counts counts_of(const PatchRecord& rec) const {
+        const Counts c = split_of(tables, rec).counts();
+        return c.triangles == 0 ? Counts{0xFFFFFFFFu, 0xFFFFFFFFu} : c;
+    }
     patch_type welded_patch(const PatchRecord& rec) const { return SplitPatch(tables, rec); }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
         return to_base_weights(patch.vertex(i));
@@ -465,18 +474,23 @@ struct D3d11Family {
     d3d11::Partitioning partitioning;
 
     static float sanitized(float f) { return f > 0.0f ? f : 1.0f; } // NaN compares false: 1
-    static std::array<float, 4> domain_factors(const PatchRecord& rec) {
+    // The tessellator's factors {Ueq0, Veq0, Weq0, inside}: base edges E2, E0, E1, and the mean of the three
+    // as the tessellator clamps (and, in the integer modes, rounds) them.
+    std::array<float, 4> domain_factors(const PatchRecord& rec) const {
         const float f[3] = {std::bit_cast<float>(rec.token[0]), std::bit_cast<float>(rec.token[1]),
                             std::bit_cast<float>(rec.token[2])};
-        return {f[2], f[0], f[1], (f[0] + f[1] + f[2]) / 3.0f};
+        const float inside =
+            (d3d11::clamped_edge_float(partitioning, f[0]) + d3d11::clamped_edge_float(partitioning, f[1]) +
+             d3d11::clamped_edge_float(partitioning, f[2])) /
+            3.0f;
+        return {f[2], f[0], f[1], inside};
     }
     void set_lines(PatchRecord& rec, const float (&f)[3]) const {
         for (unsigned k = 0; k < 3; ++k) rec.token[k] = std::bit_cast<std::uint32_t>(sanitized(f[k]));
     }
     void setup(PatchRecord& rec, const float (&)[3]) const {
         set_lines(rec, rec.factor);
-        const Counts c = d3d11::detail::tessellate_tri_into(nullptr, nullptr, domain_factors(rec),
-                                                            {partitioning, d3d11_winding});
+        const Counts c = counts_of(rec);
         rec.vertex_count = c.vertices;
         rec.triangle_count = c.triangles;
     }
@@ -486,11 +500,14 @@ struct D3d11Family {
         if (rec.rotation != 0) return false;
         for (unsigned k = 0; k < 3; ++k)
             if (!(std::bit_cast<float>(rec.token[k]) > 0.0f) || rec.t16[k] != 0) return false;
-        counts = d3d11::detail::tessellate_tri_into(nullptr, nullptr, domain_factors(rec),
-                                                    {partitioning, d3d11_winding});
+        counts = counts_of(rec);
         return true;
     }
     patch_type patch(const PatchRecord& rec) const { return D3d11Patch(domain_factors(rec), partitioning); }
+    Counts counts_of(const PatchRecord& rec) const {
+        return d3d11::detail::tessellate_tri_into(nullptr, nullptr, domain_factors(rec),
+                                                  {partitioning, d3d11_winding});
+    }
     patch_type welded_patch(const PatchRecord& rec) const { return patch(rec); }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
         const d3d11::Point p = patch.vertex(i);
@@ -523,6 +540,7 @@ concept PipelineFamily = IndexedTessPatch<typename F::patch_type> &&
     f.set_lines(rec, l);
     { f.clamped(0.0f) } -> std::same_as<bool>;
     { f.record_counts(crec, true, counts) } -> std::same_as<bool>;
+    { f.counts_of(crec) } -> std::same_as<Counts>;
     { f.patch(crec) } -> std::same_as<typename F::patch_type>;
     { f.welded_patch(crec) } -> std::same_as<typename F::patch_type>;
     { f.base_point(p, crec, 0u) } -> std::same_as<DomainPoint>;
@@ -597,9 +615,13 @@ PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32
         rec.setup[quad_setup_word::b_token + k] = b.token[k];
         rec.setup[quad_setup_word::b_t16 + k] = b.t16[k];
     }
-    const Counts ca = family.patch(a).counts(), cb = family.patch(b).counts();
-    rec.vertex_count = ca.vertices + cb.vertices;
-    rec.triangle_count = ca.triangles + cb.triangles;
+    // Counted, not emitted; a sum past 32 bits saturates, so the totals check refuses it.
+    const Counts ca = family.counts_of(a), cb = family.counts_of(b);
+    const auto saturated = [](std::uint64_t x) {
+        return x < 0xFFFFFFFFu ? static_cast<std::uint32_t>(x) : 0xFFFFFFFFu;
+    };
+    rec.vertex_count = saturated(std::uint64_t{ca.vertices} + cb.vertices);
+    rec.triangle_count = saturated(std::uint64_t{ca.triangles} + cb.triangles);
     return rec;
 }
 
@@ -881,9 +903,11 @@ class PatchWeld {
         // Pass 1: corners and edge points directly, interior points collected and ranked.
         std::uint32_t offset[2] = {0, 0}, total = 0;
         inner_.clear();
+        // Each half's pattern once per run: the split and D3D11 patterns generate their whole output.
+        std::optional<typename F::patch_type> patches[2];
         for (unsigned h = 0; h < n; ++h) {
             const WeldTriangle& t = tri[h];
-            const typename F::patch_type patch = family_.welded_patch(t.rec);
+            const typename F::patch_type& patch = patches[h].emplace(family_.welded_patch(t.rec));
             const Counts c = patch.counts();
             offset[h] = total;
             total += c.vertices;
@@ -929,7 +953,7 @@ class PatchWeld {
         // Pass 2: the vertices (when asked) and the kept triangles.
         for (unsigned h = 0; h < n; ++h) {
             const WeldTriangle& t = tri[h];
-            const typename F::patch_type patch = family_.welded_patch(t.rec);
+            const typename F::patch_type& patch = *patches[h];
             const Counts c = patch.counts();
             const std::uint32_t* map = map_.data() + offset[h];
             if (!vertices.empty()) {
@@ -998,13 +1022,21 @@ PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const Pip
         return s;
     const auto count = static_cast<std::uint32_t>(mesh.patch_count());
     // The distinct edges, sorted by their vertex indices, numbered by prefix sums after the mesh's vertices.
+    // The unwelded counts first (counted, never emitted), checked against the limits as they add up: the weld
+    // below generates every patch's pattern, so a mesh too large for the pipeline is refused before any is.
     std::size_t n = 0;
     std::uint32_t clamped = 0;
+    std::uint64_t unwelded_vertices = 0, unwelded_triangles = 0;
     for (std::uint32_t p = 0; p < count; ++p) {
         WeldedEdge e[4];
         const unsigned m = patch_edges(mesh, p, e);
         for (unsigned k = 0; k < m; ++k) edges[n++] = e[k];
-        (void)setup_record(family, mesh, p, options, clamped);
+        const PatchRecord rec = setup_record(family, mesh, p, options, clamped);
+        unwelded_vertices += rec.vertex_count;
+        unwelded_triangles += rec.triangle_count;
+        if (const PipelineStatus s = check_pipeline_size(0, unwelded_vertices, unwelded_triangles);
+            s != PipelineStatus::ok)
+            return s;
     }
     std::sort(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n), edge_less);
     n = static_cast<std::size_t>(

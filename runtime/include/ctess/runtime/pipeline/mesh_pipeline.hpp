@@ -1,8 +1,8 @@
-// The CP mesh pipeline on the CPU: per-edge tessellation factors (tess_factor.hpp), the orientation rule per
+// The mesh pipeline on the CPU: per-edge tessellation factors (tess_factor.hpp), the orientation rule per
 // base triangle (cp_orientation.hpp), per-patch counts and their exclusive prefix sum, then every output
 // vertex (exact barycentrics, then position, normal and uv by surface_eval.hpp) and every output triangle
-// (indices in provoking-vertex order). The generated GLSL and WGSL shaders run the same steps with the same
-// formulas and the same record layouts; this is the reference they are tested against.
+// (CP: indices in provoking-vertex order). The generated GLSL and WGSL shaders run the same steps with the
+// same formulas and the same record layouts; this is the reference they are tested against.
 //
 // Pattern families (PipelineOptions::pattern): CP (docs/algorithm.md §2, the default); uniform density
 // (§3, uniform_pipeline_patch.hpp): each base triangle gets UniformPatch's pattern of its three edge factors,
@@ -24,12 +24,12 @@
 //   std::vector<std::uint32_t> indices(3 * std::size_t{totals.triangles});
 //   emit_mesh(cp_tables_64, mesh, options, patches, vertices, indices);
 //
-// Quads (MeshView::quad_indices, docs/algorithm.md §7.2-7.3): each is two CP or uniform halves along a
-// diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (uniform); quads are evaluated
-// with every surface (evaluate_quad_surface inside, the exact edge rule of evaluate_surface on their edges),
-// so a mixed mesh is watertight where triangles meet quads. PN-AEN reads MeshView::adjacency
-// (docs/algorithm.md §6.1); the GPU shaders have flat, PN and Phong triangles only. A welded, indexed output:
-// setup_welded / emit_welded_mesh at the end of this header.
+// Quads (MeshView::quad_indices, docs/algorithm.md §7.2-7.3): each is two triangle halves of the patch's
+// pattern along a diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (the others);
+// quads are evaluated with every surface (evaluate_quad_surface inside, the exact edge rule of
+// evaluate_surface on their edges), so a mixed mesh is watertight where triangles meet quads. PN-AEN reads
+// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders have flat, PN and Phong triangles only. A
+// welded, indexed output: setup_welded / emit_welded_mesh at the end of this header.
 //
 // Bad input: a base triangle or quad with a vertex index >= vertex_count is culled (no vertices, no
 // triangles); factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors:
@@ -183,7 +183,7 @@ enum class PipelineStatus : std::uint8_t {
     too_many_triangles, // total triangles past max_pipeline_triangles
     bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
     no_uniform_tables,  // a uniform pattern through an overload without a UniformTableSet
-    bad_option,         // a Pattern, QuadRule or Surface value outside its enum
+    bad_option,         // a Pattern, QuadRule or Surface value outside its enum, or an invalid Displacement
 };
 
 // The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
@@ -298,9 +298,12 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& unifor
 //
 // The patterns are the unwelded pipeline's (setup_patches), in the shared layout: the same triangles, with
 // the triangles whose welded corners repeat an index dropped unless options.weld.keep_degenerate. Culled
-// faces (an index >= vertex_count) add nothing. setup_welded and emit_welded_mesh allocate one scratch
-// buffer, the largest patch's vertex count of 32-bit words. emit_welded_mesh checks the edge list and the
-// patch records against the mesh first (bad_patch_record) and writes nothing on any failure.
+// faces (an index >= vertex_count) add nothing. setup_welded counts the unwelded output first and refuses a
+// mesh whose unwelded counts pass the pipeline's limits, before any pattern is generated. setup_welded and
+// emit_welded_mesh keep one patch at a time in scratch: its slot map and interior points (about 20 bytes per
+// vertex), and for the split and D3D11 patterns its whole output (8 bytes per point, 12 per triangle).
+// emit_welded_mesh checks the edge list and the patch records against the mesh first (bad_patch_record) and
+// writes nothing on any failure.
 
 // One mesh edge of the welded output: its endpoints (lo < hi, or lo == hi for a degenerate face) and its
 // interior points' vertex range.

@@ -163,7 +163,7 @@ class UniformSplit {
     // does) puts on that edge, as edge_points(0) of a patch with that edge gives them: from (0, 0) to
     // (uniform_split_fixed_one, 0), both corners included, root_edge_point_count(tables, f) of them. They
     // depend on the edge alone, so the mesh pipeline numbers a shared edge's points without walking a patch
-    // (docs/algorithm.md §7.4). root_edge_points returns false and writes nothing when out is too short.
+    // (docs/algorithm.md §7.5). root_edge_points returns false and writes nothing when out is too short.
     static std::uint32_t root_edge_point_count(const UniformTableSet& tables, float f) noexcept;
     static bool root_edge_points(const UniformTableSet& tables, float f, std::span<point_type> out) noexcept;
 
