@@ -503,22 +503,28 @@ struct UniformSplit::Impl {
         const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
                                              rounded(s.factor[2])};
         const std::uint32_t boundary = r[0] + r[1] + r[2];
+        std::uint32_t largest = 0; // of the boundary numbers
         for (std::uint32_t i = 0; i < boundary; ++i) {
             int j = 0;
             std::uint32_t step = 0;
             number[i] = locate(point[i], r, j, step) ? edges[j].at(step) : 0;
+            largest = number[i] > largest ? number[i] : largest;
         }
-        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = w.next + (i - boundary);
-        w.next += n.vertices - boundary;
+        // The interior points are numbered in a row: mapped straight into the output, no scatter.
+        const std::uint32_t interior = n.vertices - boundary, first_interior = w.next;
+        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = first_interior + (i - boundary);
+        w.next += interior;
         // Every number is checked before any point is written: a leaf is written whole or not at all.
-        for (std::uint32_t i = 0; i < n.vertices; ++i)
-            if (number[i] >= w.vertices.size()) {
-                w.ok = false;
-                return;
-            }
-        map_points(s, std::span<const uniform::Point>(point, n.vertices),
-                   std::span<uniform::SplitPoint>(mapped, n.vertices));
-        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = mapped[i];
+        if ((boundary != 0 && largest >= w.vertices.size()) ||
+            (interior != 0 && std::uint64_t{first_interior} + interior > w.vertices.size())) {
+            w.ok = false;
+            return;
+        }
+        map_points(s, std::span<const uniform::Point>(point, boundary),
+                   std::span<uniform::SplitPoint>(mapped, boundary));
+        for (std::uint32_t i = 0; i < boundary; ++i) w.vertices[number[i]] = mapped[i];
+        map_points(s, std::span<const uniform::Point>(point + boundary, interior),
+                   w.vertices.subspan(first_interior, interior));
         for (std::uint32_t& index : indices) index = number[index];
         w.t += n.index_count();
     }
