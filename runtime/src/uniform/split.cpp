@@ -46,14 +46,14 @@ union Uninitialised {
     Uninitialised() noexcept {}
 };
 
-// The map of map_points() in unsigned 32-bit arithmetic. Corner k is 65534 a_k + b_k (0 <= b_k < 65534),
-// so a point's exact sum w c0 + u c1 + v c2 (w + u + v = 65534) is 65534 (w a0 + u a1 + v a2) + B with
-// B = w b0 + u b1 + v b2 <= 65534 x 65533 < 2^32: the quotient by 65534 is base + u du + v dv + B / 65534
-// (base = 65534 a0, du = a1 - a0, dv = a2 - a0; modulo 2^32, exact, as the result is a root point below 2^32)
-// and the remainder B % 65534. At depth 0 and 1 every b_k is 0 (with_remainders = false). Returns whether any
-// remainder was a tie (half), whose rounding depends on the root edges: the caller redoes those with map().
-// On x86-64 with GCC or Clang a second build for AVX2 (a 32-bit vector multiply; SSE2 emulates it), chosen
-// at run time as CpPatchSetup::emit does.
+// The map of map_points() in unsigned 32-bit arithmetic (docs/algorithm.md §3.5). Corner k is 65534 a_k + b_k
+// (0 <= b_k < 65534), so a point's exact sum w c0 + u c1 + v c2 (w + u + v = 65534) is 65534 (w a0 + u a1 + v
+// a2) + B with B = w b0 + u b1 + v b2 <= 65534 x 65533 < 2^32: the quotient by 65534 is base + u du + v dv +
+// B / 65534 (base = 65534 a0, du = a1 - a0, dv = a2 - a0; modulo 2^32, exact, as the result is a root point
+// below 2^32) and the remainder B % 65534. At depth 0 and 1 every b_k is 0 (with_remainders = false). Returns
+// whether any remainder was a tie (half), whose rounding depends on the root edges: the caller redoes those
+// with map(). On x86-64 with GCC or Clang a second build for AVX2 (a 32-bit vector multiply; SSE2 emulates
+// it), chosen at run time as CpPatchSetup::emit does.
 struct Map32 {
     std::uint32_t base[2], du[2], dv[2];
     std::uint32_t b[3][2];
