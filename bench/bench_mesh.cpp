@@ -5,6 +5,13 @@
 // near the eye have far more). The patches are cut into one contiguous range per thread; each thread runs the
 // library's own per-patch functions on its range, so the library stays allocation- and thread-free. Counters:
 // triangles per second and the thread count (compare 1 and 2 threads for scaling).
+//
+// mesh_pipeline/torus100k/*: what `ctess mesh --factor 8` does with a 100,352-face closed mesh (a torus
+// written here: no uv or normal seams, every edge shared by two faces), one stage per benchmark on the
+// calling thread: setup_patches, emit_mesh (the unwelded pipeline), setup_welded, emit_welded_mesh (what
+// ctess mesh runs), and a memcpy of each stage's output bytes, so that the stages can be read against the
+// cost of only writing their output. Counter tri/s: the stage's output triangles per second (setup included
+// in its own line only).
 #include <ctess/core/config.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
@@ -12,6 +19,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <numbers>
 #include <thread>
 #include <vector>
 
@@ -120,7 +129,192 @@ void mesh_pipeline(benchmark::State& state) {
     state.counters["patches"] = static_cast<double>(mesh.triangle_count);
 }
 
+// A closed torus of 224 x 224 quads, two triangles each (100,352 faces, 50,176 vertices), radii 3 and 1,
+// counter-clockwise seen from outside; the last ring and column wrap to the first (no seam vertices).
+struct Torus {
+    static constexpr std::uint32_t rings = 224, sides = 224;
+    std::vector<float> vertices;
+    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t>
+        position_ids; // every vertex its own position, as models::build_adjacency gives
+    Torus() {
+        constexpr float major = 3.0f, minor = 1.0f, two_pi = 2.0f * std::numbers::pi_v<float>;
+        for (std::uint32_t r = 0; r < rings; ++r) {
+            const float a = two_pi * static_cast<float>(r) / rings;
+            for (std::uint32_t s = 0; s < sides; ++s) {
+                const float b = two_pi * static_cast<float>(s) / sides;
+                const float nx = std::cos(a) * std::cos(b), ny = std::sin(a) * std::cos(b), nz = std::sin(b);
+                const float v[rt::mesh_vertex_floats] = {major * std::cos(a) + minor * nx,
+                                                         major * std::sin(a) + minor * ny,
+                                                         minor * nz,
+                                                         nx,
+                                                         ny,
+                                                         nz,
+                                                         static_cast<float>(r) / rings,
+                                                         static_cast<float>(s) / sides};
+                vertices.insert(vertices.end(), v, v + rt::mesh_vertex_floats);
+            }
+        }
+        auto at = [](std::uint32_t r, std::uint32_t s) { return (r % rings) * sides + s % sides; };
+        for (std::uint32_t r = 0; r < rings; ++r) {
+            for (std::uint32_t s = 0; s < sides; ++s) {
+                const std::uint32_t a = at(r, s), b = at(r + 1, s), c = at(r + 1, s + 1), d = at(r, s + 1);
+                indices.insert(indices.end(), {a, b, c, a, c, d});
+            }
+        }
+        position_ids.resize(vertices.size() / rt::mesh_vertex_floats);
+        for (std::uint32_t i = 0; i < position_ids.size(); ++i) position_ids[i] = i;
+    }
+    rt::MeshView view() const {
+        rt::MeshView m;
+        m.vertices = vertices.data();
+        m.vertex_count = static_cast<std::uint32_t>(position_ids.size());
+        m.indices = indices.data();
+        m.triangle_count = static_cast<std::uint32_t>(indices.size() / 3);
+        m.position_ids = position_ids.data();
+        return m;
+    }
+};
+
+// ctess mesh --factor 8 --surface flat: one constant factor on every edge.
+rt::PipelineOptions torus_options() {
+    rt::PipelineOptions options;
+    options.dice.mode = rt::FactorMode::constant;
+    options.dice.constant_factor = 8.0f;
+    return options;
+}
+
+// One torus and the buffers of both pipelines, made once for every torus benchmark.
+struct TorusRun {
+    Torus torus;
+    rt::MeshView mesh = torus.view();
+    rt::PipelineOptions options = torus_options();
+    std::vector<rt::PatchRecord> patches;
+    rt::PipelineTotals totals;
+    std::vector<rt::TessVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    std::vector<rt::WeldedEdge> edges;
+    std::vector<rt::WeldedPatch> welded_patches;
+    rt::WeldedTotals welded_totals;
+    std::vector<rt::TessVertex> welded_vertices;
+    std::vector<std::uint32_t> welded_indices;
+    bool ok = true;
+    TorusRun()
+        : patches(mesh.patch_count()), edges(rt::weld_edge_capacity(mesh)),
+          welded_patches(mesh.patch_count()) {
+        ok = rt::setup_patches(tables(), mesh, options, patches, totals) == rt::PipelineStatus::ok &&
+             rt::setup_welded(tables(), mesh, options, edges, welded_patches, welded_totals) ==
+                 rt::PipelineStatus::ok;
+        vertices.resize(totals.vertices);
+        indices.resize(3 * std::size_t{totals.triangles});
+        welded_vertices.resize(welded_totals.vertices);
+        welded_indices.resize(3 * std::size_t{welded_totals.triangles});
+        ok = ok &&
+             rt::emit_mesh(tables(), mesh, options, patches, vertices, indices) == rt::PipelineStatus::ok &&
+             rt::emit_welded_mesh(tables(), mesh, options, std::span(edges).first(welded_totals.edges),
+                                  welded_patches, welded_vertices, welded_indices) == rt::PipelineStatus::ok;
+    }
+    std::size_t output_bytes() const {
+        return vertices.size() * sizeof(rt::TessVertex) + indices.size() * sizeof(std::uint32_t);
+    }
+    std::size_t welded_output_bytes() const {
+        return welded_vertices.size() * sizeof(rt::TessVertex) +
+               welded_indices.size() * sizeof(std::uint32_t);
+    }
+};
+
+TorusRun& torus_run() {
+    static TorusRun run; // about 280 MB of output buffers, made on first use
+    return run;
+}
+
+void torus_counters(benchmark::State& state, std::uint32_t triangles, std::size_t bytes) {
+    state.counters["tri/s"] =
+        benchmark::Counter(static_cast<double>(triangles) * static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate);
+    state.counters["tris"] = static_cast<double>(triangles);
+    state.counters["out_bytes"] = static_cast<double>(bytes);
+}
+
+enum class TorusStage {
+    setup_patches,
+    emit_mesh,
+    memcpy_mesh,
+    setup_welded,
+    emit_welded_mesh,
+    memcpy_welded
+};
+
+template <TorusStage stage>
+void torus_stage(benchmark::State& state) {
+    TorusRun& run = torus_run();
+    if (!run.ok) {
+        state.SkipWithError("the pipeline refused the torus");
+        return;
+    }
+    bool ok = true;
+    const bool welded = stage == TorusStage::setup_welded || stage == TorusStage::emit_welded_mesh ||
+                        stage == TorusStage::memcpy_welded;
+    const std::size_t bytes = welded ? run.welded_output_bytes() : run.output_bytes();
+    // The memcpy's source: a copy of the stage's output (its vertices, then its indices) in one buffer.
+    std::vector<unsigned char> source, target;
+    if constexpr (stage == TorusStage::memcpy_mesh || stage == TorusStage::memcpy_welded) {
+        source.resize(bytes), target.resize(bytes);
+        const auto& v = welded ? run.welded_vertices : run.vertices;
+        const auto& i = welded ? run.welded_indices : run.indices;
+        std::memcpy(source.data(), v.data(), v.size() * sizeof(rt::TessVertex));
+        std::memcpy(source.data() + v.size() * sizeof(rt::TessVertex), i.data(),
+                    i.size() * sizeof(std::uint32_t));
+        std::memcpy(target.data(), source.data(),
+                    bytes); // every page of the target touched before the timing
+    }
+    for (auto _ : state) {
+        if constexpr (stage == TorusStage::setup_patches) {
+            rt::PipelineTotals totals;
+            ok = ok && rt::setup_patches(tables(), run.mesh, run.options, run.patches, totals) ==
+                           rt::PipelineStatus::ok;
+        } else if constexpr (stage == TorusStage::emit_mesh) {
+            ok = ok && rt::emit_mesh(tables(), run.mesh, run.options, run.patches, run.vertices,
+                                     run.indices) == rt::PipelineStatus::ok;
+        } else if constexpr (stage == TorusStage::setup_welded) {
+            rt::WeldedTotals totals;
+            ok = ok && rt::setup_welded(tables(), run.mesh, run.options, run.edges, run.welded_patches,
+                                        totals) == rt::PipelineStatus::ok;
+        } else if constexpr (stage == TorusStage::emit_welded_mesh) {
+            ok = ok &&
+                 rt::emit_welded_mesh(tables(), run.mesh, run.options,
+                                      std::span(run.edges).first(run.welded_totals.edges), run.welded_patches,
+                                      run.welded_vertices, run.welded_indices) == rt::PipelineStatus::ok;
+        } else {
+            std::memcpy(target.data(), source.data(), bytes);
+        }
+        benchmark::ClobberMemory();
+    }
+    if (!ok) state.SkipWithError("the pipeline refused its own buffers");
+    torus_counters(state, welded ? run.welded_totals.triangles : run.totals.triangles, bytes);
+}
+
 } // namespace
+
+// One core: each stage on the calling thread.
+BENCHMARK(torus_stage<TorusStage::setup_patches>)
+    ->Name("mesh_pipeline/torus100k/setup_patches")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(torus_stage<TorusStage::emit_mesh>)
+    ->Name("mesh_pipeline/torus100k/emit_mesh")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(torus_stage<TorusStage::memcpy_mesh>)
+    ->Name("mesh_pipeline/torus100k/memcpy_mesh")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(torus_stage<TorusStage::setup_welded>)
+    ->Name("mesh_pipeline/torus100k/setup_welded")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(torus_stage<TorusStage::emit_welded_mesh>)
+    ->Name("mesh_pipeline/torus100k/emit_welded_mesh")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(torus_stage<TorusStage::memcpy_welded>)
+    ->Name("mesh_pipeline/torus100k/memcpy_welded")
+    ->Unit(benchmark::kMillisecond);
 
 // Real time: the threads' CPU time is not the main thread's.
 BENCHMARK(mesh_pipeline)

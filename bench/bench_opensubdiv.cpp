@@ -60,5 +60,5 @@ void osd_triangle(benchmark::State& state) {
 
 } // namespace
 
-BENCHMARK(osd_emit)->Name("opensubdiv/emit")->Apply(bench::bulk_factor_sets);
+BENCHMARK(osd_emit)->Name("opensubdiv/emit")->Apply(bench::bulk_factor_sets)->Apply(bench::large_factor_sets);
 BENCHMARK(osd_triangle)->Name("opensubdiv/triangle")->Apply(bench::random_factor_sets);

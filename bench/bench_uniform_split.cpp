@@ -1,5 +1,5 @@
 // UniformSplit (docs/algorithm.md §3.5) on the bulk factor sets above N = 16, both layouts (its shared layout
-// welds the subpatches), construction included.
+// welds the subpatches), construction included; also at the large factor sets (256 and 4,096).
 #include <ctess/runtime/uniform/split.hpp>
 
 #include <benchmark/benchmark.h>
@@ -17,7 +17,9 @@ using ctess::rt::UniformSplit;
 
 BENCHMARK(uniform_emit<UniformSplit, Layout::provoking>)
     ->Name("uniform/split_emit")
-    ->Apply(uniform_factor_sets<false>);
+    ->Apply(uniform_factor_sets<false>)
+    ->Apply(ctess::bench::large_factor_sets);
 BENCHMARK(uniform_emit<UniformSplit, Layout::shared>)
     ->Name("uniform/split_emit_shared")
-    ->Apply(uniform_factor_sets<false>);
+    ->Apply(uniform_factor_sets<false>)
+    ->Apply(ctess::bench::large_factor_sets);

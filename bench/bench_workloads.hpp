@@ -20,6 +20,15 @@ inline void bulk_factor_sets(benchmark::internal::Benchmark* b) {
     for (const auto& f : bulk_factors) b->Args({f[0], f[1], f[2]});
 }
 
+// Large factors, for the generators that take them (UniformSplit up to 32,768, OpenSubdiv): one patch of
+// 65,536 and one of 16.8 M triangles (at 4,096 one iteration writes about 330 MB, so few iterations run).
+inline constexpr std::int64_t large_factors[][3] = {{256, 256, 256}, {4096, 4096, 4096}};
+
+inline void large_factor_sets(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"f0", "f1", "f2"});
+    for (const auto& f : large_factors) b->Args({f[0], f[1], f[2]});
+}
+
 // Random access: the bulk sets plus one with a T0 edge (f1 = 1), which takes the collapse path.
 inline void random_factor_sets(benchmark::internal::Benchmark* b) {
     bulk_factor_sets(b);

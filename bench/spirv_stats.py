@@ -5,7 +5,10 @@
 
 For each emit pass of max 64: the instructions of the per-patch setup an emit workgroup runs (the call tree of
 `record_patch`, as glslang emits it, one function per GLSL function), and the whole pass after `spirv-opt -O`
-(everything inlined into main). Needs spirv-dis and spirv-opt (Debian spirv-tools).
+(everything inlined into main). Then, per pattern, the call tree of the function one invocation runs per
+output element (CP: patch_vertex / patch_triangle, uniform density: uniform_vertex / uniform_triangle): the
+static instructions per output vertex and per output triangle, beside the per-patch setup above (surface
+evaluation excluded; loops counted once). Needs spirv-dis and spirv-opt (Debian spirv-tools).
 """
 import os
 import re
@@ -14,6 +17,9 @@ import sys
 import tempfile
 
 PASSES = ["patch_setup", "emit_vertices", "emit_triangles"]
+# The function one invocation runs per output element of a pass, per pattern (shaders/ctess_mesh.comp.glsl).
+ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex"},
+           "emit_triangles": {"cp": "patch_triangle", "uniform": "uniform_triangle"}}
 NOT_INSTRUCTIONS = {"OpFunction", "OpFunctionParameter", "OpFunctionEnd", "OpLabel", "OpLine", "OpNoLine"}
 
 
@@ -41,6 +47,15 @@ def functions(spv):
         if call:
             out[name][1].add(call.group(1))
     return out
+
+
+def function_named(spv, name):
+    """The %id of the function whose GLSL name (OpName up to its parenthesis) is name, or None."""
+    text = subprocess.run(["spirv-dis", "--no-color", spv], check=True, capture_output=True, text=True).stdout
+    for m in re.finditer(r'OpName (%\S+) "([^"(]*)\(', text):
+        if m.group(2) == name:
+            return m.group(1)
+    return None
 
 
 def tree_size(funcs, root):
@@ -75,6 +90,19 @@ def main():
             root = next((f for f in funcs if f.startswith("%record_patch")), None)
             setup = "—" if root is None else "%d, %d" % tree_size(funcs, root)
             print(f"| {d} | {p} | {setup} | {optimized_size(spv)} |")
+    print()
+    print("| shaders | pass | pattern | per-element call tree (instructions, functions) |")
+    print("|---|---|---|---|")
+    for d in sys.argv[1:]:
+        for p, by_pattern in ELEMENT.items():
+            spv = f"{d}/ctess_mesh_64_{p}.spv"
+            if not os.path.exists(spv):
+                spv = f"{d}/ctess_cp_64_{p}.spv"
+            funcs = functions(spv)
+            for pattern, name in by_pattern.items():
+                root = function_named(spv, name)
+                size = "—" if root is None else "%d, %d" % tree_size(funcs, root)
+                print(f"| {d} | {p} | {pattern} `{name}` | {size} |")
     return 0
 
 

@@ -383,3 +383,58 @@ TEST_CASE("uniform split deep (§3.5): a root edge of any factor up to 32768 car
         }
     }
 }
+
+// The map of a leaf's points into the root below depth 1 (§3.5; split.hpp, "Output"), written from the rule:
+// the exact sum w c0 + u c1 + v c2 over 65534 rounded to nearest, a tie half to even on the root's edges (a
+// point lies on root edge j when every corner it weights does) and half up inside. emit() computes it in
+// 32-bit pieces with a fallback for ties; this checks every provoking-layout vertex against the rule, on
+// patches whose leaves reach depth 2 and 3, where corners are not multiples of 65534 and ties occur.
+TEST_CASE(
+    "uniform split deep (§3.5): every emitted point below depth 1 is its leaf's point rounded by the rule",
+    "[uniform][split][deep]") {
+    constexpr std::int64_t unit = ctess::uniform::fixed_one, half = unit / 2;
+    auto root_edges = [](const std::array<std::int64_t, 2>& c) {
+        return (c[1] == 0 ? 1u : 0u) | (c[0] + c[1] == std::int64_t(one) ? 2u : 0u) | (c[0] == 0 ? 4u : 0u);
+    };
+    std::uint64_t deep_leaves = 0, ties_on_edges = 0, ties_inside = 0;
+    const float cases[][3] = {{300, 300, 300}, {1000, 700, 300}, {5000, 77, 4999}, {257, 3000, 1234.5f}};
+    for (const auto& f : cases) {
+        for (const Winding winding : {Winding::ccw, Winding::cw}) {
+            const UniformSplit s(ctess::rt::uniform_tables_16, f[0], f[1], f[2],
+                                 {Layout::provoking, winding});
+            REQUIRE(s.depth() >= 2);
+            const auto e = ctess::test::emit_all(s);
+            std::size_t next = 0;
+            s.for_each_leaf([&](const UniformSplit::Leaf& leaf) {
+                deep_leaves += leaf.depth >= 2 ? 1u : 0u;
+                for (std::uint32_t i = 0; i < leaf.patch.counts().vertices; ++i) {
+                    const ctess::uniform::Point d = leaf.patch.vertex(i);
+                    const std::int64_t weight[3] = {unit - d.u - d.v, d.u, d.v};
+                    std::uint32_t edges = 7;
+                    for (int k = 0; k < 3; ++k)
+                        if (weight[k] != 0) edges &= root_edges(leaf.corners[static_cast<std::size_t>(k)]);
+                    std::int64_t expected[2] = {};
+                    for (std::size_t c = 0; c < 2; ++c) {
+                        std::int64_t sum = 0;
+                        for (std::size_t k = 0; k < 3; ++k) sum += weight[k] * leaf.corners[k][c];
+                        const std::int64_t q = sum / unit, r = sum % unit;
+                        const bool tie = r == half;
+                        ties_on_edges += tie && edges != 0 ? 1u : 0u;
+                        ties_inside += tie && edges == 0 ? 1u : 0u;
+                        expected[c] = q + (r > half || (tie && (edges == 0 || q % 2 != 0)) ? 1 : 0);
+                    }
+                    REQUIRE(next < e.vertices.size());
+                    INFO("factors " << f[0] << ", " << f[1] << ", " << f[2] << ", vertex " << next);
+                    REQUIRE(e.vertices[next].u == static_cast<std::uint32_t>(expected[0]));
+                    REQUIRE(e.vertices[next].v == static_cast<std::uint32_t>(expected[1]));
+                    ++next;
+                }
+            });
+            REQUIRE(next == e.vertices.size());
+        }
+    }
+    // The cases reach the paths the rule distinguishes: deep leaves, and ties inside and on the root's edges.
+    CHECK(deep_leaves > 0);
+    CHECK(ties_inside > 0);
+    CHECK(ties_on_edges > 0);
+}

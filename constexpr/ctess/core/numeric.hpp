@@ -1,6 +1,7 @@
 // Exact numeric helpers usable in constant expressions: float classification, rounding to fixed point,
 // bit tricks. Nothing here depends on <cmath>, whose functions are not constexpr in C++20.
 #pragma once
+#include <bit>
 #include <cstdint>
 
 namespace ctess {
@@ -51,13 +52,9 @@ constexpr std::uint64_t shift_round_half_even(std::uint64_t n, unsigned s) {
     return (r > half || (r == half && (q & 1u) != 0)) ? q + 1 : q;
 }
 
+// floor(log2(x)), 0 for x <= 1: one bit scan (the runtime clamps every patch's factors through it).
 constexpr unsigned floor_log2(std::uint32_t x) {
-    unsigned r = 0;
-    while (x > 1) {
-        x >>= 1;
-        ++r;
-    }
-    return r;
+    return x > 1 ? static_cast<unsigned>(std::bit_width(x)) - 1u : 0u;
 }
 
 constexpr bool is_pow2(std::uint32_t x) {

@@ -120,77 +120,69 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
         const std::uint32_t k = i < head ? i : head;
         return c[k] + (i - k);
     };
-    // Column 0 as (0, v) pairs: column i is (u_i, min(v_j, K - u_i)), two rows a vector.
-    alignas(16) std::uint32_t column0[2 * cp::max_segments + 4];
+    // Column 0 as (0, v) pairs: column i is (u_i, min(v_j, K - u_i)), W / 2 rows a vector. Written to the
+    // output in the same loop: a separate memcpy of n2 points was a `rep movsq`, whose start-up cost is a
+    // large part of a small patch. The pairs past n2 are zero: the columns read whole vectors.
+    constexpr std::uint32_t half = W / 2;
+    // A typedef: GCC drops a dependent vector_size on an alias declaration (S would be a plain int).
+    typedef std::int32_t S __attribute__((vector_size(sizeof(V))));
+    static_assert(sizeof(S) == sizeof(V));
+    alignas(32) std::uint32_t column0[2 * (cp::max_segments + half)];
     column0[0] = 0, column0[1] = 0;
+    out_v[0] = {0, 0};
     for (std::uint32_t j = 1; j < n2; ++j) {
+        const std::uint32_t v = CpPatchSetup::interior_point(p.e_[2], p.e_[2].points[j - 1]);
         column0[2 * j] = 0;
-        column0[2 * j + 1] = CpPatchSetup::interior_point(p.e_[2], p.e_[2].points[j - 1]);
+        column0[2 * j + 1] = v;
+        out_v[j] = {0, v};
     }
-    std::memcpy(out_v, column0, sizeof(DomainPoint) * n2);
+    store(column0 + 2 * n2, V{});
     const bool copies = p.copy_mask_ != 0;
     DomainPoint* copy = out_v + p.unique_;
+    DomainPoint* const copies_end = out_v + p.vertices_;
+    V even; // all ones in the u lanes
+    even_lanes(even);
     for (std::uint32_t i = 1; i < n0; ++i) {
         const std::uint32_t u = CpPatchSetup::interior_point(p.e_[0], p.e_[0].points[i - 1]);
         const std::uint32_t top = clamp > u ? clamp - u : 0u;
         const std::uint32_t first_row = start(i), rows = start(i + 1) - first_row;
         DomainPoint* col = out_v + first_row;
-        // v grows with the row, so the rows above the clamp line K - u are a suffix: usually the top row or
-        // none. Below it a pair of rows is column 0's pair with u put in; the rest take the clamp.
-        std::uint32_t free_rows = rows;
-        while (free_rows > 0 && column0[2 * free_rows - 1] > top) --free_rows;
-        V lane_u;
-        even_lanes(lane_u);
-        lane_u &= V{} + u;
-        auto one = [&](std::uint32_t j) {
-            const std::uint32_t v = column0[2 * j + 1];
-            return DomainPoint{u, v < top ? v : top};
-        };
-        std::uint32_t j = 0;
-        if (copies && i < head) { // rows 0..rows-2 provoke a triangle of strip i - 1 too: copies
-            const std::uint32_t pairs_end = free_rows < rows - 1 ? free_rows : rows - 1;
-            for (; j + W / 2 <= pairs_end; j += W / 2) {
-                V w;
-                load(w, column0 + 2 * j);
-                w |= lane_u;
-                store(col + j, w);
-                store(copy + j, w);
-            }
-            if constexpr (W > 4) { // two more rows in a 16-byte vector
-                if (j + 2 <= pairs_end) {
-                    u32x4 w;
-                    load(w, column0 + 2 * j);
-                    w |= u32x4{u, 0, u, 0};
-                    store(col + j, w);
-                    store(copy + j, w);
-                    j += 2;
+        // Every row is column 0's pair with u put in and v clamped to K - u (the rows above the clamp line,
+        // usually the top one or none, take K - u): an or and a min, whole vectors, no scalar tail. The
+        // stores run up to half - 1 points past the column, into the next column or e1's points (n1 + 1 >= 4
+        // points), which are written after it. The min is signed (SSE2 compares signed 32-bit lanes only):
+        // every coordinate is at most 2^24, and the u lanes' limit is 2^31 - 1.
+        const V lane_u = even & u, limit = (even & 0x7FFFFFFFu) | top;
+        const std::uint32_t vectors = (rows + half - 1) / half;
+        // Rows 0..rows-2 of a column i < h provoke a triangle of strip i - 1 too: copies, in the same
+        // stores while whole vectors stay inside the vertex span (the next column's copies overwrite the
+        // rest); the last columns' copies row by row.
+        const bool with_copies = copies && i < head;
+        const bool whole_copies = with_copies && copy + vectors * half <= copies_end;
+        for (std::uint32_t k = 0; k < vectors; ++k) {
+            V w;
+            load(w, column0 + 2 * half * k);
+            w |= lane_u;
+            w = (S)w < (S)limit ? w : limit;
+            store(col + half * k, w);
+            if (whole_copies) store(copy + half * k, w);
+        }
+        if (with_copies) {
+            if (!whole_copies) {
+                for (std::uint32_t j = 0; j + 1 < rows; ++j) {
+                    const std::uint32_t v = column0[2 * j + 1];
+                    copy[j] = {u, v < top ? v : top}; // not re-read from col: a store-forwarding stall
                 }
-            }
-            for (; j < rows; ++j) {
-                const DomainPoint q = one(j); // not re-read from col: that would stall on store forwarding
-                col[j] = q;
-                if (j + 1 < rows) copy[j] = q;
             }
             copy += rows - 1;
-        } else {
-            for (; j + W / 2 <= free_rows; j += W / 2) {
-                V w;
-                load(w, column0 + 2 * j);
-                store(col + j, w | lane_u);
-            }
-            if constexpr (W > 4) {
-                if (j + 2 <= free_rows) {
-                    u32x4 w;
-                    load(w, column0 + 2 * j);
-                    store(col + j, w | u32x4{u, 0, u, 0});
-                    j += 2;
-                }
-            }
-            for (; j < rows; ++j) col[j] = one(j);
         }
     }
-    for (std::uint32_t b = 0; b <= n1; ++b)
-        out_v[e1_offset + b] = CpPatchSetup::e1_point(CpPatchSetup::point(p.e_[1], b));
+    // e1's points: its two corners, then the interior points without point()'s selects.
+    DomainPoint* const e1 = out_v + e1_offset;
+    e1[0] = CpPatchSetup::e1_point(0);
+    for (std::uint32_t b = 1; b < n1; ++b)
+        e1[b] = CpPatchSetup::e1_point(CpPatchSetup::interior_point(p.e_[1], p.e_[1].points[b - 1]));
+    e1[n1] = CpPatchSetup::e1_point(cp::fixed_one);
 
     // Strips: cells (A_j, B_j, A_{j+1}), (B_j, B_{j+1}, A_{j+1}), then the fan (A_j, B_{nb-1}, A_{j+1}),
     // A_j's copy first in columns i >= 1 (provoking layout).
@@ -244,20 +236,28 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
         }
         if (i >= 1) next_copy += na - 1;
     }
-    // Zipper: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point b; a gap bit says which side steps,
-    // chosen by selects (the bits are a coin toss to a branch predictor).
+    // Zipper: L_a = top of column n0-1-a = C_{n0-a} - 1, R_b = e1 point b; a gap bit says which side steps.
+    // Triangle q is (L_{a+1} on a step on L, else R_{b+1}; L_a; R_b): the tops first, so that the loop is
+    // two loads and a select per triangle (the bits are a coin toss to a branch predictor).
+    std::uint32_t tops[cp::max_segments + 1];
+    for (std::uint32_t i = 0; i < head; ++i) tops[n0 - i] = c[i] - 1u; // C_i - 1 for i < h
+    for (std::uint32_t i = head; i <= n0; ++i) tops[n0 - i] = c[head] + (i - head) - 1u;
     const std::uint32_t* const gap = p.gap_;
-    std::uint32_t la = start(n0) - 1, a = 0, rb = e1_offset;
-    for (std::uint32_t q = 0, zipper = p.zipper_; q < zipper; ++q) {
-        const std::uint32_t w = gap[q / cp::tables::gap_bits_per_word];
-        const std::uint32_t step = (w >> (q % cp::tables::gap_bits_per_word)) & 1u;
-        const std::uint32_t on_l = 0u - step; // masks: GCC turns the ternaries into a branch
-        a += step;
-        const std::uint32_t next = start(n0 - a) - 1;
-        o[0] = (next & on_l) | ((rb + 1) & ~on_l), o[1 + swap] = la, o[2 - swap] = rb;
-        la = (next & on_l) | (la & ~on_l);
-        rb += step ^ 1u;
-        o += 3;
+    std::uint32_t a = 0, rb = e1_offset;
+    // One gap word per gap_bits_per_word triangles, its bits shifted out one per triangle.
+    for (std::uint32_t q = 0, zipper = p.zipper_; q < zipper; q += cp::tables::gap_bits_per_word) {
+        std::uint32_t bits = gap[q / cp::tables::gap_bits_per_word];
+        const std::uint32_t left = zipper - q;
+        const std::uint32_t run = left < cp::tables::gap_bits_per_word ? left : cp::tables::gap_bits_per_word;
+        for (std::uint32_t k = 0; k < run; ++k) {
+            const std::uint32_t step = bits & 1u;
+            bits >>= 1;
+            const std::uint32_t on_l = 0u - step; // a mask: GCC turns the ternary into a branch
+            o[0] = (tops[a + 1] & on_l) | ((rb + 1) & ~on_l), o[1 + swap] = tops[a], o[2 - swap] = rb;
+            a += step;
+            rb += step ^ 1u;
+            o += 3;
+        }
     }
 }
 

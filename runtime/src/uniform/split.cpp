@@ -37,6 +37,64 @@ constexpr PatternBounds pattern_bounds() {
     return b;
 }
 constexpr PatternBounds bounds = pattern_bounds();
+
+// Storage for N points without the zeroing of their default member initialisers: a std::array<Point, N>
+// zeroed all N (hundreds) for every leaf, and only counts().vertices of them are written, then read.
+template <class T, std::size_t N>
+union Uninitialised {
+    T item[N];
+    Uninitialised() noexcept {}
+};
+
+// The map of map_points() in unsigned 32-bit arithmetic (docs/algorithm.md §3.5). Corner k is 65534 a_k + b_k
+// (0 <= b_k < 65534), so a point's exact sum w c0 + u c1 + v c2 (w + u + v = 65534) is 65534 (w a0 + u a1 + v
+// a2) + B with B = w b0 + u b1 + v b2 <= 65534 x 65533 < 2^32: the quotient by 65534 is base + u du + v dv +
+// B / 65534 (base = 65534 a0, du = a1 - a0, dv = a2 - a0; modulo 2^32, exact, as the result is a root point
+// below 2^32) and the remainder B % 65534. At depth 0 and 1 every b_k is 0 (with_remainders = false). Returns
+// whether any remainder was a tie (half), whose rounding depends on the root edges: the caller redoes those
+// with map(). On x86-64 with GCC or Clang a second build for AVX2 (a 32-bit vector multiply; SSE2 emulates
+// it), chosen at run time as CpPatchSetup::emit does.
+struct Map32 {
+    std::uint32_t base[2], du[2], dv[2];
+    std::uint32_t b[3][2];
+};
+template <bool with_remainders>
+inline bool map32_body(const Map32& m, const uniform::Point* in, std::size_t count,
+                       uniform::SplitPoint* out) noexcept {
+    constexpr std::uint32_t one = uniform::fixed_one, half = one / 2;
+    std::uint32_t ties = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t u = in[i].u, v = in[i].v;
+        std::uint32_t xy[2];
+        for (int k = 0; k < 2; ++k) {
+            xy[k] = m.base[k] + u * m.du[k] + v * m.dv[k];
+            if constexpr (with_remainders) {
+                const std::uint32_t w = one - u - v;
+                const std::uint32_t b = w * m.b[0][k] + u * m.b[1][k] + v * m.b[2][k];
+                const std::uint32_t q = b / one, r = b - q * one;
+                xy[k] += q + (r > half ? 1u : 0u);
+                ties |= r == half ? 1u : 0u;
+            }
+        }
+        out[i] = {xy[0], xy[1]};
+    }
+    return ties != 0;
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+template <bool with_remainders>
+__attribute__((target("avx2"))) bool map32_avx2(const Map32& m, const uniform::Point* in, std::size_t count,
+                                                uniform::SplitPoint* out) noexcept {
+    return map32_body<with_remainders>(m, in, count, out);
+}
+#endif
+template <bool with_remainders>
+bool map32(const Map32& m, const uniform::Point* in, std::size_t count, uniform::SplitPoint* out) noexcept {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if ((__builtin_cpu_init(), __builtin_cpu_supports("avx2")))
+        return map32_avx2<with_remainders>(m, in, count, out);
+#endif
+    return map32_body<with_remainders>(m, in, count, out);
+}
 } // namespace
 
 // The walks over the split tree, on a copy of the patch's settings.
@@ -78,14 +136,14 @@ struct UniformSplit::Impl {
                 ok = false;
                 return;
             }
-            std::array<uniform::Point, bounds.provoking> local;
-            if (!p.emit(std::span<uniform::Point>(local.data(), n.vertices),
+            Uninitialised<uniform::Point, bounds.provoking> local;
+            if (!p.emit(std::span<uniform::Point>(local.item, n.vertices),
                         indices.subspan(t, n.index_count()),
                         v)) { // the stack buffer fits every pattern
                 ok = false;
                 return;
             }
-            self.map_points(s, std::span<const uniform::Point>(local.data(), n.vertices),
+            self.map_points(s, std::span<const uniform::Point>(local.item, n.vertices),
                             vertices.subspan(v, n.vertices));
             v += n.vertices, t += n.index_count();
         }
@@ -151,33 +209,35 @@ struct UniformSplit::Impl {
                (p[0] == 0 ? 4u : 0u);
     }
 
-    // map() of every point of in, written to out (as long as in). When every corner is a multiple of 65534
-    // (always at depth 0 and 1: a corner there is the root's pattern point times 65534) the exact sum divided
-    // by 65534 is w a0 + u a1 + v a2 = 65534 a0 + u (a1 - a0) + v (a2 - a0) with a = corner / 65534, a point
-    // of the root below 65534^2 < 2^32: unsigned 32-bit arithmetic (modulo 2^32, exact) gives the same
-    // integers.
+    // map() of every point of in, written to out (as long as in), in unsigned 32-bit arithmetic (Map32
+    // above): the same integers. Corners that are multiples of 65534 (always at depth 0 and 1: a corner there
+    // is the root's pattern point times 65534) have no remainders; below, a tie's rounding reads the root
+    // edges, so a leaf with a tie is redone by map().
     void map_points(const Sub& s, std::span<const uniform::Point> in,
                     std::span<uniform::SplitPoint> out) const noexcept {
         constexpr std::int64_t unit = uniform::fixed_one;
         bool multiples = true;
-        for (const Point& c : s.corner) multiples = multiples && c[0] % unit == 0 && c[1] % unit == 0;
-        if (!multiples) {
+        Map32 m;
+        std::uint32_t a[3][2];
+        for (int c = 0; c < 3; ++c) {
+            for (int k = 0; k < 2; ++k) {
+                const std::int64_t x = s.corner[c][k]; // 0 <= x <= 65534^2
+                a[c][k] = static_cast<std::uint32_t>(x / unit);
+                m.b[c][k] = static_cast<std::uint32_t>(x % unit);
+                multiples = multiples && m.b[c][k] == 0;
+            }
+        }
+        for (int k = 0; k < 2; ++k)
+            m.base[k] = a[0][k] * uniform::fixed_one, m.du[k] = a[1][k] - a[0][k],
+            m.dv[k] = a[2][k] - a[0][k];
+        const bool ties = multiples ? map32<false>(m, in.data(), in.size(), out.data())
+                                    : map32<true>(m, in.data(), in.size(), out.data());
+        if (ties) { // rare (depth 2 and below only): map() rounds each tie by the root edges
             for (std::size_t i = 0; i < in.size(); ++i) {
                 const Point q = map(s, in[i]);
                 out[i] = {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1])};
             }
-            return;
         }
-        std::uint32_t base[2], du[2], dv[2];
-        for (int k = 0; k < 2; ++k) {
-            const auto a0 = static_cast<std::uint32_t>(s.corner[0][k] / unit),
-                       a1 = static_cast<std::uint32_t>(s.corner[1][k] / unit),
-                       a2 = static_cast<std::uint32_t>(s.corner[2][k] / unit);
-            base[k] = a0 * uniform::fixed_one, du[k] = a1 - a0, dv[k] = a2 - a0;
-        }
-        for (std::size_t i = 0; i < in.size(); ++i)
-            out[i] = {base[0] + in[i].u * du[0] + in[i].v * dv[0],
-                      base[1] + in[i].u * du[1] + in[i].v * dv[1]};
     }
 
     // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
@@ -249,10 +309,12 @@ struct UniformSplit::Impl {
     // share is the pattern-sized point array.
     struct SplitPattern {
         UniformPatch patch;
-        std::array<uniform::Point, bounds.vertices> point;
+        Uninitialised<uniform::Point, bounds.vertices> points; // the first counts().vertices written
+        const uniform::Point* point = points.item;
         explicit SplitPattern(const UniformPatch& p) noexcept : patch(p) {
-            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) point[i] = p.vertex(i);
+            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) points.item[i] = p.vertex(i);
         }
+        SplitPattern(const SplitPattern&) = delete; // point points into itself
     };
     SplitPattern split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
         return SplitPattern(UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw}));
@@ -421,9 +483,11 @@ struct UniformSplit::Impl {
     // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
     // written at their numbers, the indices renumbered in place.
     void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        std::array<uniform::Point, bounds.vertices> point;       // local
-        std::array<uniform::SplitPoint, bounds.vertices> mapped; // on the root
-        std::array<std::uint32_t, bounds.vertices> number;       // local vertex -> global
+        Uninitialised<uniform::Point, bounds.vertices> local;
+        Uninitialised<uniform::SplitPoint, bounds.vertices> on_root;
+        uniform::Point* const point = local.item;          // local
+        uniform::SplitPoint* const mapped = on_root.item;  // on the root
+        std::array<std::uint32_t, bounds.vertices> number; // local vertex -> global
         const UniformPatch p = leaf_patch(s);
         const Counts n = p.counts();
         if (!w.ok || n.index_count() > w.indices.size() - w.t) {
@@ -431,7 +495,7 @@ struct UniformSplit::Impl {
             return;
         }
         const std::span<std::uint32_t> indices = w.indices.subspan(w.t, n.index_count());
-        if (!p.emit(std::span<uniform::Point>(point.data(), n.vertices), indices)) { // the stack buffer fits
+        if (!p.emit(std::span<uniform::Point>(point, n.vertices), indices)) { // the stack buffer fits
             w.ok = false;
             return;
         }
@@ -439,22 +503,28 @@ struct UniformSplit::Impl {
         const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
                                              rounded(s.factor[2])};
         const std::uint32_t boundary = r[0] + r[1] + r[2];
+        std::uint32_t largest = 0; // of the boundary numbers
         for (std::uint32_t i = 0; i < boundary; ++i) {
             int j = 0;
             std::uint32_t step = 0;
             number[i] = locate(point[i], r, j, step) ? edges[j].at(step) : 0;
+            largest = number[i] > largest ? number[i] : largest;
         }
-        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = w.next + (i - boundary);
-        w.next += n.vertices - boundary;
+        // The interior points are numbered in a row: mapped straight into the output, no scatter.
+        const std::uint32_t interior = n.vertices - boundary, first_interior = w.next;
+        for (std::uint32_t i = boundary; i < n.vertices; ++i) number[i] = first_interior + (i - boundary);
+        w.next += interior;
         // Every number is checked before any point is written: a leaf is written whole or not at all.
-        for (std::uint32_t i = 0; i < n.vertices; ++i)
-            if (number[i] >= w.vertices.size()) {
-                w.ok = false;
-                return;
-            }
-        map_points(s, std::span<const uniform::Point>(point.data(), n.vertices),
-                   std::span<uniform::SplitPoint>(mapped.data(), n.vertices));
-        for (std::uint32_t i = 0; i < n.vertices; ++i) w.vertices[number[i]] = mapped[i];
+        if ((boundary != 0 && largest >= w.vertices.size()) ||
+            (interior != 0 && std::uint64_t{first_interior} + interior > w.vertices.size())) {
+            w.ok = false;
+            return;
+        }
+        map_points(s, std::span<const uniform::Point>(point, boundary),
+                   std::span<uniform::SplitPoint>(mapped, boundary));
+        for (std::uint32_t i = 0; i < boundary; ++i) w.vertices[number[i]] = mapped[i];
+        map_points(s, std::span<const uniform::Point>(point + boundary, interior),
+                   w.vertices.subspan(first_interior, interior));
         for (std::uint32_t& index : indices) index = number[index];
         w.t += n.index_count();
     }
