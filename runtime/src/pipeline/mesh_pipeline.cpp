@@ -330,21 +330,12 @@ struct UniformFamily {
     }
 };
 
-// A UniformSplit (§3.5) in the pipeline's shared, counter-clockwise layout, emitted once, as an indexed
-// patch: the split is a tree walk with no random access, so its points and triangles are kept.
-class SplitPatch {
+// A pattern generated whole, kept as an indexed patch: for the families without O(1) random access
+// (UniformSplit's tree walk, the D3D11 tessellator), whose points and triangles are written once per use.
+template <class Point>
+class StoredPatch {
   public:
-    using point_type = uniform::SplitPoint;
-    SplitPatch(const UniformTableSet& tables, const PatchRecord& rec)
-        : split_(tables, static_cast<float>(rec.uniform_factor(0)), static_cast<float>(rec.uniform_factor(1)),
-                 static_cast<float>(rec.uniform_factor(2)), uniform_pipeline_options) {
-        const Counts c = split_.counts();
-        points_.resize(c.vertices);
-        indices_.resize(c.index_count());
-        // The spans are counts() long, so emit() writes them whole (split.hpp); anything else is a broken
-        // invariant, never an output with a silently empty or zeroed patch.
-        if (!split_.emit(points_, indices_)) std::abort();
-    }
+    using point_type = Point;
     Counts counts() const noexcept {
         return {static_cast<std::uint32_t>(points_.size()), static_cast<std::uint32_t>(indices_.size() / 3)};
     }
@@ -360,10 +351,27 @@ class SplitPatch {
                 indices_[3 * std::size_t{p} + 2]};
     }
 
-  private:
-    UniformSplit split_;
+  protected:
+    void resize(Counts c) {
+        points_.resize(c.vertices);
+        indices_.resize(c.index_count());
+    }
     std::vector<point_type> points_;
     std::vector<std::uint32_t> indices_;
+};
+
+// A UniformSplit (§3.5) in the pipeline's shared, counter-clockwise layout.
+class SplitPatch : public StoredPatch<uniform::SplitPoint> {
+  public:
+    SplitPatch(const UniformTableSet& tables, const PatchRecord& rec) {
+        const UniformSplit split(tables, static_cast<float>(rec.uniform_factor(0)),
+                                 static_cast<float>(rec.uniform_factor(1)),
+                                 static_cast<float>(rec.uniform_factor(2)), uniform_pipeline_options);
+        resize(split.counts());
+        // The spans are counts() long, so emit() writes them whole (split.hpp); anything else is a broken
+        // invariant, never an output with a silently empty or zeroed patch.
+        if (!split.emit(points_, indices_)) std::abort();
+    }
 };
 
 // Uniform density at any factor (§7.5): each base edge's factor rounded and clamped to [1, 32768]
@@ -434,34 +442,13 @@ constexpr Winding d3d11_winding = Winding::cw;
 
 // The D3D11 tessellator's triangle domain (§5) on one patch, as an indexed patch. Domain (u, v) are the base
 // weights of w1 and w2 (w0 = 1 - u - v), so Ueq0 is base edge E2, Veq0 is E0 and Weq0 is E1 (§7.6).
-class D3d11Patch {
+class D3d11Patch : public StoredPatch<d3d11::Point> {
   public:
-    using point_type = d3d11::Point;
     D3d11Patch(const std::array<float, 4>& factors, d3d11::Partitioning partitioning) {
         const d3d11::TessOptions options{partitioning, d3d11_winding};
-        const Counts c = d3d11::detail::tessellate_tri_into(nullptr, nullptr, factors, options);
-        points_.resize(c.vertices);
-        indices_.resize(c.index_count());
+        resize(d3d11::detail::tessellate_tri_into(nullptr, nullptr, factors, options));
         d3d11::detail::tessellate_tri_into(points_.data(), indices_.data(), factors, options);
     }
-    Counts counts() const noexcept {
-        return {static_cast<std::uint32_t>(points_.size()), static_cast<std::uint32_t>(indices_.size() / 3)};
-    }
-    bool emit(std::span<point_type> points, std::span<std::uint32_t> indices) const noexcept {
-        if (points.size() < points_.size() || indices.size() < indices_.size()) return false;
-        std::copy(points_.begin(), points_.end(), points.begin());
-        std::copy(indices_.begin(), indices_.end(), indices.begin());
-        return true;
-    }
-    point_type vertex(std::uint32_t i) const noexcept { return points_[i]; }
-    std::array<std::uint32_t, 3> triangle(std::uint32_t p) const noexcept {
-        return {indices_[3 * std::size_t{p}], indices_[3 * std::size_t{p} + 1],
-                indices_[3 * std::size_t{p} + 2]};
-    }
-
-  private:
-    std::vector<point_type> points_;
-    std::vector<std::uint32_t> indices_;
 };
 
 // The D3D11 patterns (§7.6): each base edge's factor as the tessellator takes it (it clamps to the
