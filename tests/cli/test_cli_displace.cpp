@@ -3,6 +3,7 @@
 // displacement moves it, --displace-grow adds triangles; a glTF's own KHR_materials_displacement image
 // embedded as a data: uri is read with the file's factor and offset (exact heights on a flat triangle); bad
 // images and bad options fail with nothing written.
+#include "mesh_cli_support.hpp"
 #include "support/cli_run.hpp"
 
 #include <cmath>
@@ -19,19 +20,18 @@
 #include <stb/stb_image_write.h>
 
 using ctess::test::ctess_cli;
+using ctess::test::mixed_cube_obj;
 using ctess::test::Run;
+using ctess::test::write_file;
 
 namespace {
 
 std::string scratch(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "ctess_test_cli_displace";
-    std::filesystem::create_directories(dir);
-    return (dir / name).string();
+    return ctess::test::scratch_path("ctess_test_cli_displace", name);
 }
 
-void write_file(const std::string& path, const std::string& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    out << bytes;
+nlohmann::json stats(const std::string& args) {
+    return ctess::test::mesh_stats(args);
 }
 
 std::string read_file(const std::string& path) {
@@ -71,25 +71,6 @@ std::string base64(const std::string& bytes) {
         out += i + 2 < bytes.size() ? digits[n & 63] : '=';
     }
     return out;
-}
-
-// The closed mixed cube of test_cli_mesh.cpp: quads on the sides, triangles top and bottom, one normal per
-// face, every face on the same uv square (so each shared edge is sampled at different uvs by its two faces).
-std::string mixed_cube_obj() {
-    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
-    s += "vn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 -1\nvn 0 0 1\n";
-    s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
-    s += "f 1/1/1 2/2/1 6/3/1 5/4/1\nf 2/1/2 3/2/2 7/3/2 6/4/2\nf 3/1/3 4/2/3 8/3/3 7/4/3\nf 4/1/4 1/2/4 "
-         "5/3/4 8/4/4\n";
-    s += "f 1/1/5 4/4/5 3/3/5\nf 1/1/5 3/3/5 2/2/5\nf 5/1/6 6/2/6 7/3/6\nf 5/1/6 7/3/6 8/4/6\n";
-    return s;
-}
-
-nlohmann::json stats(const std::string& args) {
-    const Run r = ctess_cli("mesh --stats " + args);
-    INFO(args << "\n" << r.out);
-    REQUIRE(r.exit_code == 0);
-    return nlohmann::json::parse(r.out);
 }
 
 // The z coordinates of an OBJ's vertices.

@@ -3,6 +3,7 @@
 // triangles, by exact position) for every pattern, surface and factor mode; an open model's boundary is its
 // input boundary subdivided; PN-AEN closes the cracks plain PN opens at split normals; outputs read back; bad
 // input fails with nothing written.
+#include "mesh_cli_support.hpp"
 #include "support/cli_run.hpp"
 
 #include <cstdio>
@@ -15,40 +16,20 @@
 #include <nlohmann/json.hpp>
 
 using ctess::test::ctess_cli;
+using ctess::test::mixed_cube_obj;
 using ctess::test::Run;
+using ctess::test::write_file;
 
 namespace {
 
 const std::string assimp_models = "/usr/share/assimp/models";
 
 std::string scratch(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "ctess_test_cli_mesh";
-    std::filesystem::create_directories(dir);
-    return (dir / name).string();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
+    return ctess::test::scratch_path("ctess_test_cli_mesh", name);
 }
 
 nlohmann::json stats(const std::string& args) {
-    const Run r = ctess_cli("mesh --stats " + args);
-    INFO(args << "\n" << r.out);
-    REQUIRE(r.exit_code == 0);
-    return nlohmann::json::parse(r.out);
-}
-
-// A closed mixed model: a unit cube whose four sides are quads and whose top and bottom are two triangles
-// each, with one normal per face (split normals on every edge) and per-face uvs (uv seams everywhere).
-std::string mixed_cube_obj() {
-    std::string s = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
-    s += "vn 0 -1 0\nvn 1 0 0\nvn 0 1 0\nvn -1 0 0\nvn 0 0 -1\nvn 0 0 1\n";
-    s += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n";
-    s += "f 1/1/1 2/2/1 6/3/1 5/4/1\nf 2/1/2 3/2/2 7/3/2 6/4/2\nf 3/1/3 4/2/3 8/3/3 7/4/3\nf 4/1/4 1/2/4 "
-         "5/3/4 8/4/4\n";
-    s += "f 1/1/5 4/4/5 3/3/5\nf 1/1/5 3/3/5 2/2/5\nf 5/1/6 6/2/6 7/3/6\nf 5/1/6 7/3/6 8/4/6\n";
-    return s;
+    return ctess::test::mesh_stats(args);
 }
 
 } // namespace
