@@ -2,6 +2,8 @@
 // first (stbi_info_from_memory) and the size limits checked before any texel is decoded.
 #include <ctess/runtime/models/height_map.hpp>
 
+#include "load_common.hpp"
+
 #include <algorithm>
 #include <climits>
 #include <filesystem>
@@ -112,22 +114,9 @@ HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes,
 HeightMapResult load_height_map(const std::string& path) {
     HeightMapResult result;
     try {
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec)) {
-            result.error.message = path + ": no such file";
-            return result;
-        }
-        const std::uintmax_t size = std::filesystem::file_size(path, ec);
-        if (ec || size > max_height_file_bytes) {
-            result.error.message = path + ": cannot read the file size, or the file is larger than 1 GiB";
-            return result;
-        }
-        std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-        std::ifstream in(path, std::ios::binary);
-        if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()))) {
-            result.error.message = path + ": read error";
-            return result;
-        }
+        std::vector<std::uint8_t> bytes;
+        result.error.message = detail::read_file_bytes(path, max_height_file_bytes, "1 GiB", bytes);
+        if (!result.error.message.empty()) return result;
         return decode(bytes, path);
     } catch (const std::bad_alloc&) {
         result.error.message = path + ": out of memory";

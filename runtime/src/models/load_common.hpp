@@ -4,11 +4,30 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include <ctess/runtime/models/model.hpp>
 
 namespace ctess::models::detail {
+
+// The whole file at path, for the loaders: an empty string, or the problem ("PATH: no such file", too large
+// for max_bytes, a read error). May throw std::bad_alloc, which the callers turn into their error.
+inline std::string read_file_bytes(const std::string& path, std::uintmax_t max_bytes, const char* limit_name,
+                                   std::vector<std::uint8_t>& bytes) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return path + ": no such file";
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || size > max_bytes)
+        return path + ": cannot read the file size, or the file is larger than " + limit_name;
+    bytes.resize(static_cast<std::size_t>(size));
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+        return path + ": read error";
+    return {};
+}
 
 // Thrown inside the loaders only; load_model turns it into a LoadError (nothing escapes).
 struct LoadFailure {

@@ -129,24 +129,12 @@ LoadResult load_model(const std::string& path) {
                 path + ": unknown model extension '" + ext + "' (expected .gltf, .glb or .obj)";
             return result;
         }
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec)) {
-            result.error.message = path + ": no such file";
-            return result;
-        }
-        const std::uintmax_t size = std::filesystem::file_size(path, ec);
         // tinygltf takes a 32-bit length; the bound also keeps the allocation below what the file can
         // justify.
-        if (ec || size > std::numeric_limits<std::uint32_t>::max()) {
-            result.error.message = path + ": cannot read the file size, or the file is larger than 4 GiB";
-            return result;
-        }
-        std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-        std::ifstream in(path, std::ios::binary);
-        if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()))) {
-            result.error.message = path + ": read error";
-            return result;
-        }
+        std::vector<std::uint8_t> bytes;
+        result.error.message =
+            detail::read_file_bytes(path, std::numeric_limits<std::uint32_t>::max(), "4 GiB", bytes);
+        if (!result.error.message.empty()) return result;
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
         return load_checked(bytes, kind, path, &base_dir);
     } catch (const std::bad_alloc&) {
