@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -31,6 +32,23 @@ inline nlohmann::json mesh_stats(const std::string& args) {
     INFO(args << "\n" << r.out);
     REQUIRE(r.exit_code == 0);
     return nlohmann::json::parse(r.out);
+}
+
+// A command that must be refused: its exit code, a part of its message, and no file at out afterwards.
+struct RefusedCase {
+    std::string args; // after `ctess mesh`
+    int exit_code;
+    std::string message;
+};
+
+inline void check_refused(const std::vector<RefusedCase>& cases, const std::string& out) {
+    for (const RefusedCase& c : cases) {
+        const Run r = ctess_cli("mesh " + c.args);
+        INFO(c.args << "\n" << r.out);
+        CHECK(r.exit_code == c.exit_code);
+        CHECK(r.out.find(c.message) != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(out));
+    }
 }
 
 // A closed mixed model: a unit cube whose four sides are quads and whose top and bottom are two triangles

@@ -178,13 +178,8 @@ TEST_CASE("ctess mesh --displace: bad images and options are a clear error and w
     write_file(truncated, good.substr(0, good.size() / 2));
     write_file(empty, "");
     write_file(text, "this is not an image at all");
-    struct Case {
-        std::string args;
-        int exit_code;
-        std::string message;
-    };
     const std::string base = "--in " + cube + " --factor 3 --out " + out;
-    const std::vector<Case> cases = {
+    const std::vector<ctess::test::RefusedCase> cases = {
         {base + " --displace /nonexistent/height.png", 1, "/nonexistent/height.png: no such file"},
         {base + " --displace " + truncated, 1, truncated},
         {base + " --displace " + empty, 1, "empty"},
@@ -197,11 +192,5 @@ TEST_CASE("ctess mesh --displace: bad images and options are a clear error and w
         {base + " --displace " + truncated + " --displace-offset inf", 2, "--displace-offset"},
         {base + " --displace " + truncated + " --displace-address mirror", 2, "--displace-address"},
     };
-    for (const Case& c : cases) {
-        const Run r = ctess_cli("mesh " + c.args);
-        INFO(c.args << "\n" << r.out);
-        CHECK(r.exit_code == c.exit_code);
-        CHECK(r.out.find(c.message) != std::string::npos);
-        CHECK_FALSE(std::filesystem::exists(out));
-    }
+    ctess::test::check_refused(cases, out);
 }

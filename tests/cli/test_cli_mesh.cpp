@@ -163,12 +163,7 @@ TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][me
     write_file(cube, mixed_cube_obj());
     const std::string truncated = scratch("truncated.glb");
     write_file(truncated, std::string("glTF\x02\x00\x00\x00\xff\xff\xff\x7f", 12));
-    struct Case {
-        std::string args;
-        int exit_code;
-        std::string message;
-    };
-    const std::vector<Case> cases = {
+    const std::vector<ctess::test::RefusedCase> cases = {
         {"--in /nonexistent/model.obj --factor 2 --out " + out, 1, "/nonexistent/model.obj"},
         {"--in " + truncated + " --factor 2 --out " + out, 1, truncated},
         {"--in " + cube + " --factor 2 --out " + scratch("never.stl"), 2, ".obj, .ply or .glb"},
@@ -187,11 +182,5 @@ TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][me
          "49152 triangles, above the limit of 1000"},
         {"--in " + cube + " --factor 2 --max-triangles 0 --out " + out, 2, "--max-triangles"},
     };
-    for (const Case& c : cases) {
-        const Run r = ctess_cli("mesh " + c.args);
-        INFO(c.args << "\n" << r.out);
-        CHECK(r.exit_code == c.exit_code);
-        CHECK(r.out.find(c.message) != std::string::npos);
-        CHECK_FALSE(std::filesystem::exists(out));
-    }
+    ctess::test::check_refused(cases, out);
 }

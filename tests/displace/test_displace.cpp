@@ -169,12 +169,18 @@ rt::PipelineOptions constant_factor(float f, rt::Surface surface) {
     return o;
 }
 
+// The right triangle (0,0,0), (1,0,0), (0,1,0) in z = 0, normal +z, uv = xy.
+rt::MeshView unit_triangle() {
+    static const float vertices[3 * 8] = {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0,
+                                          0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1};
+    static const std::uint32_t triangle[3] = {0, 1, 2};
+    return {vertices, 3, triangle, 1};
+}
+
 } // namespace
 
 TEST_CASE("displacement on a flat triangle: exact heights along the normal, gradient normals (§8.3)") {
-    const float vertices[3 * 8] = {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1};
-    const std::uint32_t tri[3] = {0, 1, 2};
-    const rt::MeshView mesh{vertices, 3, tri, 1};
+    const rt::MeshView mesh = unit_triangle();
     rt::PipelineOptions options = constant_factor(7.5f, rt::Surface::flat);
     rt::Displacement d;
     d.function = &constant_quarter;
@@ -214,9 +220,7 @@ TEST_CASE("displacement on a flat triangle: exact heights along the normal, grad
 }
 
 TEST_CASE("displacement grows edge factors by its bound (§8.4); bad displacement options are refused") {
-    const float vertices[3 * 8] = {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1};
-    const std::uint32_t tri[3] = {0, 1, 2};
-    const rt::MeshView mesh{vertices, 3, tri, 1};
+    const rt::MeshView mesh = unit_triangle();
     rt::PipelineOptions options = constant_factor(4.0f, rt::Surface::flat);
     rt::Displacement d;
     d.function = &constant_quarter;

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 #include <new>
+#include <type_traits>
 
 #include <stb/stb_image.h>
 
@@ -69,32 +70,31 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
     image.width = static_cast<std::uint32_t>(w);
     image.height = static_cast<std::uint32_t>(h);
     const std::size_t count = std::size_t{image.width} * image.height;
-    int dw = 0, dh = 0, dc = 0;
-    if (stbi_is_hdr_from_memory(bytes.data(), length)) {
-        std::unique_ptr<float, StbFree<float>> data(
-            stbi_loadf_from_memory(bytes.data(), length, &dw, &dh, &dc, 0));
-        if (!data || dw != w || dh != h || dc <= 0)
-            return fail("cannot decode the image (" + stb_reason() + ")");
+    int decoded_w = 0, decoded_h = 0, decoded_channels = 0;
+    // The first channel of what stb_image decoded, divided by the format's largest value (1 for .hdr floats).
+    bool decoded = false;
+    const auto first_channel = [&](auto* raw, float divisor) {
+        using T = std::remove_pointer_t<decltype(raw)>;
+        const std::unique_ptr<T, StbFree<T>> data(raw);
+        if (!data || decoded_w != w || decoded_h != h || decoded_channels <= 0) return;
         image.texels.resize(count);
         for (std::size_t i = 0; i < count; ++i)
-            image.texels[i] = data.get()[i * static_cast<std::size_t>(dc)];
-    } else if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
-        std::unique_ptr<stbi_us, StbFree<stbi_us>> data(
-            stbi_load_16_from_memory(bytes.data(), length, &dw, &dh, &dc, 0));
-        if (!data || dw != w || dh != h || dc <= 0)
-            return fail("cannot decode the image (" + stb_reason() + ")");
-        image.texels.resize(count);
-        for (std::size_t i = 0; i < count; ++i)
-            image.texels[i] = static_cast<float>(data.get()[i * static_cast<std::size_t>(dc)]) / 65535.0f;
-    } else {
-        std::unique_ptr<stbi_uc, StbFree<stbi_uc>> data(
-            stbi_load_from_memory(bytes.data(), length, &dw, &dh, &dc, 0));
-        if (!data || dw != w || dh != h || dc <= 0)
-            return fail("cannot decode the image (" + stb_reason() + ")");
-        image.texels.resize(count);
-        for (std::size_t i = 0; i < count; ++i)
-            image.texels[i] = static_cast<float>(data.get()[i * static_cast<std::size_t>(dc)]) / 255.0f;
-    }
+            image.texels[i] =
+                static_cast<float>(data.get()[i * static_cast<std::size_t>(decoded_channels)]) / divisor;
+        decoded = true;
+    };
+    if (stbi_is_hdr_from_memory(bytes.data(), length))
+        first_channel(
+            stbi_loadf_from_memory(bytes.data(), length, &decoded_w, &decoded_h, &decoded_channels, 0), 1.0f);
+    else if (stbi_is_16_bit_from_memory(bytes.data(), length))
+        first_channel(
+            stbi_load_16_from_memory(bytes.data(), length, &decoded_w, &decoded_h, &decoded_channels, 0),
+            65535.0f);
+    else
+        first_channel(
+            stbi_load_from_memory(bytes.data(), length, &decoded_w, &decoded_h, &decoded_channels, 0),
+            255.0f);
+    if (!decoded) return fail("cannot decode the image (" + stb_reason() + ")");
     result.image = std::move(image);
     return result;
 }
@@ -102,28 +102,16 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
 } // namespace
 
 HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
-    try {
-        return decode(bytes, name);
-    } catch (const std::bad_alloc&) {
-        HeightMapResult r;
-        r.error.message = name + ": out of memory";
-        return r;
-    }
+    return detail::guarded_load<HeightMapResult>(name, [&] { return decode(bytes, name); });
 }
 
 HeightMapResult load_height_map(const std::string& path) {
-    HeightMapResult result;
-    try {
+    return detail::guarded_load<HeightMapResult>(path, [&] {
+        HeightMapResult result;
         std::vector<std::uint8_t> bytes;
         result.error.message = detail::read_file_bytes(path, max_height_file_bytes, "1 GiB", bytes);
-        if (!result.error.message.empty()) return result;
-        return decode(bytes, path);
-    } catch (const std::bad_alloc&) {
-        result.error.message = path + ": out of memory";
-    } catch (const std::exception& e) {
-        result.error.message = path + ": " + e.what();
-    }
-    return result;
+        return result.error.message.empty() ? decode(bytes, path) : result;
+    });
 }
 
 } // namespace ctess::models

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,23 @@ inline std::string read_file_bytes(const std::string& path, std::uintmax_t max_b
 struct LoadFailure {
     std::string problem;
 };
+
+// The loaders' one error boundary: runs load() and turns what escapes it into the result's error, "NAME:
+// problem" (a LoadFailure's problem, "out of memory", or the exception's message). Nothing escapes.
+template <class Result, class Load>
+Result guarded_load(const std::string& name, Load&& load) {
+    Result failed;
+    try {
+        return load();
+    } catch (const LoadFailure& failure) {
+        failed.error.message = name + ": " + failure.problem;
+    } catch (const std::bad_alloc&) {
+        failed.error.message = name + ": out of memory";
+    } catch (const std::exception& e) {
+        failed.error.message = name + ": " + e.what();
+    }
+    return failed;
+}
 
 // A position with -0.0 written as +0.0, so that meshoptimizer's bitwise position equality (Adjacency) joins
 // the two zeros.

@@ -87,22 +87,16 @@ std::string content_problem(std::span<const std::uint8_t> bytes, ModelKind kind)
 
 LoadResult load_checked(std::span<const std::uint8_t> bytes, ModelKind kind, const std::string& name,
                         const std::string* base_dir) {
-    LoadResult result;
-    try {
+    return detail::guarded_load<LoadResult>(name, [&] {
         if (std::string problem = content_problem(bytes, kind); !problem.empty())
             throw detail::LoadFailure{problem};
         Model model =
             kind == ModelKind::obj ? detail::load_obj(bytes) : detail::load_gltf(bytes, kind, base_dir);
         detail::check_model(model);
+        LoadResult result;
         result.model = std::move(model);
-    } catch (const detail::LoadFailure& failure) {
-        result.error.message = name + ": " + failure.problem;
-    } catch (const std::bad_alloc&) {
-        result.error.message = name + ": out of memory";
-    } catch (const std::exception& e) {
-        result.error.message = name + ": " + e.what();
-    }
-    return result;
+        return result;
+    });
 }
 
 } // namespace
@@ -113,10 +107,10 @@ LoadResult load_model_from_memory(std::span<const std::uint8_t> bytes, ModelKind
 }
 
 LoadResult load_model(const std::string& path) {
-    LoadResult result;
-    try {
+    return detail::guarded_load<LoadResult>(path, [&] {
         std::string ext = std::filesystem::path(path).extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+        LoadResult result;
         ModelKind kind;
         if (ext == ".gltf")
             kind = ModelKind::gltf_text;
@@ -137,12 +131,7 @@ LoadResult load_model(const std::string& path) {
         if (!result.error.message.empty()) return result;
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
         return load_checked(bytes, kind, path, &base_dir);
-    } catch (const std::bad_alloc&) {
-        result.error.message = path + ": out of memory";
-    } catch (const std::exception& e) {
-        result.error.message = path + ": " + e.what();
-    }
-    return result;
+    });
 }
 
 } // namespace ctess::models

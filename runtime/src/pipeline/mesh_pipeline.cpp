@@ -363,10 +363,7 @@ class StoredPatch {
 // A UniformSplit (§3.5) in the pipeline's shared, counter-clockwise layout.
 class SplitPatch : public StoredPatch<uniform::SplitPoint> {
   public:
-    SplitPatch(const UniformTableSet& tables, const PatchRecord& rec) {
-        const UniformSplit split(tables, static_cast<float>(rec.uniform_factor(0)),
-                                 static_cast<float>(rec.uniform_factor(1)),
-                                 static_cast<float>(rec.uniform_factor(2)), uniform_pipeline_options);
+    explicit SplitPatch(const UniformSplit& split) {
         resize(split.counts());
         // The spans are counts() long, so emit() writes them whole (split.hpp); anything else is a broken
         // invariant, never an output with a silently empty or zeroed patch.
@@ -410,7 +407,7 @@ struct UniformSplitFamily {
         counts = counts_of(rec);
         return true;
     }
-    patch_type patch(const PatchRecord& rec) const { return SplitPatch(tables, rec); }
+    patch_type patch(const PatchRecord& rec) const { return SplitPatch(split_of(tables, rec)); }
     // The counts from the split's walk, without emitting; counts past 32 bits (which UniformSplit gives as
     // {0, 0}; none with the shipped tables) as the most a record holds, so that the totals check refuses them
     // (too_many_vertices) instead of losing the patch.
@@ -418,7 +415,7 @@ struct UniformSplitFamily {
         const Counts c = split_of(tables, rec).counts();
         return c.triangles == 0 ? Counts{0xFFFFFFFFu, 0xFFFFFFFFu} : c;
     }
-    patch_type welded_patch(const PatchRecord& rec) const { return SplitPatch(tables, rec); }
+    patch_type welded_patch(const PatchRecord& rec) const { return patch(rec); }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
         return to_base_weights(patch.vertex(i));
     }

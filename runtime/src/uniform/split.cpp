@@ -391,6 +391,23 @@ struct UniformSplit::Impl {
                : j == 1 ? std::array<Point, 2>{c[1], c[2]}
                         : std::array<Point, 2>{c[0], c[2]};
     }
+    // The points on root edge j, both corners included: root_edge_count(j) of them, written by the decisions
+    // of segments() (edge_points, root_edge_points). False, nothing written, when out is too short.
+    std::uint32_t root_edge_count(std::uint32_t j) const noexcept { return segments(root_[j], 0, true) + 1; }
+    bool write_root_edge(std::uint32_t j, std::span<uniform::SplitPoint> out) const noexcept {
+        const std::uint32_t n = root_edge_count(j);
+        if (out.size() < n) return false;
+        const std::array<Point, 2> ends = root_edge(j);
+        std::uint32_t written = 0;
+        auto put = [&](const Point& p) {
+            if (written < n)
+                out[written] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1])};
+            ++written;
+        };
+        put(ends[0]);
+        edge_walk(ends[0], ends[1], root_[j], 0, put);
+        return written == n; // the same decisions as segments(): always
+    }
 
     // --- The shared layout (§3.5): one vertex per exact position, numbered by the node that owns it. ---
 
@@ -671,23 +688,11 @@ UniformSplit::Impl UniformSplit::make_impl() const noexcept {
 }
 
 std::uint32_t UniformSplit::edge_point_count(std::uint32_t edge) const noexcept {
-    if (edge > 2 || overflow_) return 0;
-    return make_impl().segments(root_[edge], 0, true) + 1;
+    return edge > 2 || overflow_ ? 0 : make_impl().root_edge_count(edge);
 }
 
 bool UniformSplit::edge_points(std::uint32_t edge, std::span<point_type> out) const noexcept {
-    const std::uint32_t n = edge_point_count(edge);
-    if (n == 0 || out.size() < n) return false;
-    const Impl impl = make_impl();
-    const std::array<Impl::Point, 2> ends = impl.root_edge(edge);
-    std::uint32_t written = 0;
-    auto put = [&](const Impl::Point& p) {
-        if (written < n) out[written] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1])};
-        ++written;
-    };
-    put(ends[0]);
-    impl.edge_walk(ends[0], ends[1], root_[edge], 0, put);
-    return written == n; // the same decisions as segments(): always
+    return edge <= 2 && !overflow_ && make_impl().write_root_edge(edge, out);
 }
 
 // A patch with every root edge of factor f: its edge 0 is any root edge of that factor (§3.5).
@@ -701,24 +706,12 @@ UniformSplit::Impl UniformSplit::edge_impl(const UniformTableSet& tables, float 
 }
 
 std::uint32_t UniformSplit::root_edge_point_count(const UniformTableSet& tables, float f) noexcept {
-    const Impl impl = edge_impl(tables, f);
-    return impl.segments(impl.root_[0], 0, true) + 1;
+    return edge_impl(tables, f).root_edge_count(0);
 }
 
 bool UniformSplit::root_edge_points(const UniformTableSet& tables, float f,
                                     std::span<point_type> out) noexcept {
-    const Impl impl = edge_impl(tables, f);
-    const std::uint32_t n = impl.segments(impl.root_[0], 0, true) + 1;
-    if (out.size() < n) return false;
-    const std::array<Impl::Point, 2> ends = impl.root_edge(0);
-    std::uint32_t written = 0;
-    auto put = [&](const Impl::Point& p) {
-        if (written < n) out[written] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1])};
-        ++written;
-    };
-    put(ends[0]);
-    impl.edge_walk(ends[0], ends[1], impl.root_[0], 0, put);
-    return written == n;
+    return edge_impl(tables, f).write_root_edge(0, out);
 }
 
 void UniformSplit::for_each_leaf(LeafCallback callback, void* context) const noexcept {
