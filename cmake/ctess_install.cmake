@@ -16,6 +16,10 @@ if(CTESS_HAVE_MODELS)
   install(TARGETS ctess_models EXPORT ctessTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
+if(CTESS_HAVE_VULKAN)
+  install(TARGETS ctess_vulkan EXPORT ctessTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
 install(EXPORT ctessTargets NAMESPACE ctess:: DESTINATION ${CTESS_INSTALL_CMAKEDIR})
 
 # The `ctess` CLI (docs/cli.md) and the viewer it serves; `ctess serve` looks for the viewer and the shaders

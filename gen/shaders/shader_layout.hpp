@@ -2,8 +2,8 @@
 // (docs/shaders.md, "Generated constants"): record and vertex layouts, setup block words, params words,
 // pattern and surface codes, workgroup sizes, dispatch limits and the fixed-point units. Each value is taken
 // from its C++ definition (PatchRecord, setup_word, TessVertex, Pattern, ...) or, for the few that exist only
-// on the GPU side (params words, the prefix sum's workgroup), defined here and checked against the C++ that
-// depends on them.
+// on the GPU side (params words, workgroup sizes), from the hosts' header
+// <ctess/runtime/gpu/shader_interface.hpp>.
 //
 // ctess_gen_shaders writes every entry as a `const` line into both shader languages (the {{CONSTANTS}}
 // placeholder of shaders/ctess_mesh.*) and into <name>.layout.json under "constants"; the C++ GPU host
@@ -18,6 +18,7 @@
 
 #include <ctess/cp/line.hpp>
 #include <ctess/runtime/cp/setup_block.hpp>
+#include <ctess/runtime/gpu/shader_interface.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 #include <ctess/runtime/surface/eval.hpp>
 #include <ctess/runtime/uniform/pipeline_words.hpp>
@@ -26,30 +27,13 @@
 
 namespace ctess::gen {
 
-// The params buffer (binding 0), one u32 word each; floats as their bits (docs/shaders.md, "Passes and
-// bindings").
-namespace param_word {
-inline constexpr std::uint32_t patch_count = 0;
-inline constexpr std::uint32_t surface = 1;      // rt::Surface
-inline constexpr std::uint32_t alpha = 2;        // float
-inline constexpr std::uint32_t factor_scale = 3; // float, DiceOptions::factor_scale()
-inline constexpr std::uint32_t eye = 4;          // 3 floats
-inline constexpr std::uint32_t mesh_vertex_count = 7;
-inline constexpr std::uint32_t first_patch = 8; // the emit passes' patch range [first, end)
-inline constexpr std::uint32_t end_patch = 9;
-inline constexpr std::uint32_t pattern = 10; // rt::Pattern
-inline constexpr std::uint32_t words = 11;
-} // namespace param_word
-
-// Workgroup sizes. The setup pass's is the C++ limit's (rt::max_pipeline_patches counts in it); the prefix
-// sum is one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations); the emit passes
-// loop over a patch's vertices and triangles in steps of their workgroup.
-inline constexpr std::uint32_t setup_workgroup = rt::patch_setup_workgroup;
-inline constexpr std::uint32_t scan_workgroup = 128;
-inline constexpr std::uint32_t emit_workgroup = 64;
-// The prefix sum writes both totals as this marker when they do not fit in u32 (hosts refuse them).
-inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
-inline constexpr std::uint32_t totals_words = 2; // after the last record: total vertices, total triangles
+// The params words, workgroup sizes and totals are the hosts' (<ctess/runtime/gpu/shader_interface.hpp>).
+namespace param_word = rt::gpu::param_word;
+using rt::gpu::emit_workgroup;
+using rt::gpu::scan_workgroup;
+using rt::gpu::setup_workgroup;
+using rt::gpu::totals_overflow;
+using rt::gpu::totals_words;
 
 // The thresholds of uniform::round_factor (constexpr/ctess/uniform/factor.hpp), the one rounding rule of
 // uniform factors, which the shaders' uniform_factor runs line for line on the float's bits: below 1.5f (and
@@ -124,17 +108,17 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"VERTEX_UV", CTESS_WORD_OF(rt::TessVertex, uv), "rt::TessVertex::uv"},
     ShaderConstant{"MESH_VERTEX_FLOATS", rt::mesh_vertex_floats, "rt::mesh_vertex_floats"},
     // the params buffer
-    ShaderConstant{"PARAM_PATCH_COUNT", param_word::patch_count, "gen::param_word::patch_count"},
-    ShaderConstant{"PARAM_SURFACE", param_word::surface, "gen::param_word::surface"},
-    ShaderConstant{"PARAM_ALPHA", param_word::alpha, "gen::param_word::alpha"},
-    ShaderConstant{"PARAM_FACTOR_SCALE", param_word::factor_scale, "gen::param_word::factor_scale"},
-    ShaderConstant{"PARAM_EYE", param_word::eye, "gen::param_word::eye"},
+    ShaderConstant{"PARAM_PATCH_COUNT", param_word::patch_count, "rt::gpu::param_word::patch_count"},
+    ShaderConstant{"PARAM_SURFACE", param_word::surface, "rt::gpu::param_word::surface"},
+    ShaderConstant{"PARAM_ALPHA", param_word::alpha, "rt::gpu::param_word::alpha"},
+    ShaderConstant{"PARAM_FACTOR_SCALE", param_word::factor_scale, "rt::gpu::param_word::factor_scale"},
+    ShaderConstant{"PARAM_EYE", param_word::eye, "rt::gpu::param_word::eye"},
     ShaderConstant{"PARAM_MESH_VERTEX_COUNT", param_word::mesh_vertex_count,
-                   "gen::param_word::mesh_vertex_count"},
-    ShaderConstant{"PARAM_FIRST_PATCH", param_word::first_patch, "gen::param_word::first_patch"},
-    ShaderConstant{"PARAM_END_PATCH", param_word::end_patch, "gen::param_word::end_patch"},
-    ShaderConstant{"PARAM_PATTERN", param_word::pattern, "gen::param_word::pattern"},
-    ShaderConstant{"PARAMS_WORDS", param_word::words, "gen::param_word::words"},
+                   "rt::gpu::param_word::mesh_vertex_count"},
+    ShaderConstant{"PARAM_FIRST_PATCH", param_word::first_patch, "rt::gpu::param_word::first_patch"},
+    ShaderConstant{"PARAM_END_PATCH", param_word::end_patch, "rt::gpu::param_word::end_patch"},
+    ShaderConstant{"PARAM_PATTERN", param_word::pattern, "rt::gpu::param_word::pattern"},
+    ShaderConstant{"PARAMS_WORDS", param_word::words, "rt::gpu::param_word::words"},
     // option codes
     ShaderConstant{"PATTERN_CP", static_cast<std::uint32_t>(rt::Pattern::cp), "rt::Pattern::cp"},
     ShaderConstant{"PATTERN_UNIFORM", static_cast<std::uint32_t>(rt::Pattern::uniform),
@@ -145,11 +129,11 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"SURFACE_PHONG", static_cast<std::uint32_t>(rt::Surface::phong), "rt::Surface::phong"},
     // workgroups, dispatch limits and the totals
     ShaderConstant{"SETUP_GROUP", setup_workgroup, "rt::patch_setup_workgroup"},
-    ShaderConstant{"SCAN_GROUP", scan_workgroup, "gen::scan_workgroup"},
-    ShaderConstant{"EMIT_GROUP", emit_workgroup, "gen::emit_workgroup"},
+    ShaderConstant{"SCAN_GROUP", scan_workgroup, "rt::gpu::scan_workgroup"},
+    ShaderConstant{"EMIT_GROUP", emit_workgroup, "rt::gpu::emit_workgroup"},
     ShaderConstant{"MAX_DISPATCH_WORKGROUPS", rt::max_dispatch_workgroups, "rt::max_dispatch_workgroups"},
-    ShaderConstant{"TOTALS_WORDS", totals_words, "gen::totals_words"},
-    ShaderConstant{"TOTALS_OVERFLOW", totals_overflow, "gen::totals_overflow"},
+    ShaderConstant{"TOTALS_WORDS", totals_words, "rt::gpu::totals_words"},
+    ShaderConstant{"TOTALS_OVERFLOW", totals_overflow, "rt::gpu::totals_overflow"},
     // the uniform-factor rule (the shaders' uniform_factor)
     ShaderConstant{"UNIFORM_ROUND_FROM_BITS", uniform_round_from_bits, "uniform::round_factor: 1.5f"},
     ShaderConstant{"F32_INFINITY_BITS", f32_infinity_bits, "uniform::round_factor: +inf"},
@@ -164,7 +148,5 @@ static_assert(offsetof(rt::PatchRecord, triangle_count) == offsetof(rt::PatchRec
 static_assert(offsetof(rt::PatchRecord, first_triangle) == offsetof(rt::PatchRecord, first_vertex) + 4);
 static_assert(offsetof(rt::PatchRecord, setup) + 4 * rt::setup_word::words == sizeof(rt::PatchRecord));
 static_assert(rt::max_pipeline_patches == std::uint64_t{rt::max_dispatch_workgroups} * setup_workgroup);
-static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
-              param_word::pattern + 1 == param_word::words);
 
 } // namespace ctess::gen

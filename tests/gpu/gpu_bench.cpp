@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -71,7 +72,8 @@ int main(int argc, char** argv) {
                             {"50 k-patch grid, PN", big}};
     constexpr int repeats = 3;
     try {
-        VkCompute vk;
+        std::vector<std::unique_ptr<vulkan::Runner>> runners;
+        for (const Build& b : builds) runners.push_back(std::make_unique<vulkan::Runner>(b.dir, 64));
         std::printf("| scene | patches | vertices | triangles | backend | build | median ms (of %d) |\n"
                     "|---|---|---|---|---|---|---|\n",
                     repeats);
@@ -84,7 +86,7 @@ int main(int argc, char** argv) {
                     for (std::size_t b = 0; b < builds.size(); ++b) {
                         const PipelineOutput gpu =
                             backend[0] == 'l'
-                                ? run_vulkan(vk, builds[b].dir, 64, s.scene)
+                                ? run_vulkan(*runners[b], s.scene)
                                 : run_dawn(CTESS_NODE, CTESS_RUN_WGSL, builds[b].dir, 64, s.scene,
                                            std::string(CTESS_WORK_DIR) + "/bench_" + builds[b].label);
                         if (r < 0 && !same_output(cpu, gpu)) return 1;

@@ -1,5 +1,6 @@
-// Runs the CP mesh pipeline on Vulkan (the generated GLSL as SPIR-V) and on Dawn (the generated WGSL, through
-// node), with every output as the GPU buffers lay it out (pipeline_output.hpp).
+// Runs the mesh pipeline on Vulkan (the generated GLSL as SPIR-V, through the installed host
+// <ctess/runtime/gpu/vulkan.hpp>) and on Dawn (the generated WGSL, through node and the installed
+// ctess_webgpu.mjs), with every output as the GPU buffers lay it out (pipeline_output.hpp).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -8,13 +9,11 @@
 
 #include <ctess/runtime/cp/table_set.hpp>
 
+#include <ctess/runtime/gpu/vulkan.hpp>
+
 #include "pipeline_output.hpp"
-#include "vk_compute.hpp"
 
 namespace ctess::gpu_test {
-
-// The record size the generated shaders in dir use (their layout.json).
-std::uint32_t layout_patch_words(const std::string& dir, unsigned max_factor);
 
 // How a host dispatches: at most max_workgroups per dispatch (the passes stride over the rest; 65,535 is the
 // one-dispatch limit), and with counts_only only the setup and prefix-sum passes run (no outputs).
@@ -26,8 +25,7 @@ struct RunLimits {
 inline constexpr std::uint32_t totals_overflow = gen::totals_overflow;
 
 // Both throw std::runtime_error on failure, and when the totals overflow (unless counts_only).
-PipelineOutput run_vulkan(VkCompute& vk, const std::string& shader_dir, unsigned max_factor,
-                          const Scene& scene, RunLimits limits = {});
+PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits limits = {});
 // Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back. `node` is a shell
 // command prefix: the node binary, optionally preceded by environment assignments (the backend,
 // tests/gpu/CMakeLists.txt).

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <ctess/runtime/gpu/shader_interface.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 #include "gpu_scenes.hpp"
@@ -44,26 +45,10 @@ struct PipelineOutput {
     std::uint32_t total_triangles() const { return static_cast<std::uint32_t>(indices.size() / 3); }
 };
 
-// The params buffer (gen::param_word, docs/shaders.md): patch count, surface, alpha bits, factor scale bits,
-// eye xyz bits, mesh vertex count, the patch range [first, end) of the emit passes (all of them here), the
-// pattern.
-inline constexpr std::size_t pipeline_param_words = gen::param_word::words;
+// The params buffer (rt::gpu::param_word, docs/shaders.md), the emit range covering every patch.
+inline constexpr std::size_t pipeline_param_words = rt::gpu::param_word::words;
 inline std::array<std::uint32_t, pipeline_param_words> pipeline_params(const Scene& scene) {
-    namespace w = gen::param_word;
-    const rt::PipelineOptions& o = scene.options;
-    std::array<std::uint32_t, pipeline_param_words> p{};
-    p[w::patch_count] = scene.patch_count();
-    p[w::surface] = static_cast<std::uint32_t>(o.surface.surface);
-    p[w::alpha] = float_bits(o.surface.alpha);
-    p[w::factor_scale] = float_bits(o.dice.factor_scale());
-    p[w::eye] = float_bits(o.dice.eye.x);
-    p[w::eye + 1] = float_bits(o.dice.eye.y);
-    p[w::eye + 2] = float_bits(o.dice.eye.z);
-    p[w::mesh_vertex_count] = static_cast<std::uint32_t>(scene.vertices.size() / rt::mesh_vertex_floats);
-    p[w::first_patch] = 0u;
-    p[w::end_patch] = scene.patch_count();
-    p[w::pattern] = static_cast<std::uint32_t>(o.pattern);
-    return p;
+    return rt::gpu::pipeline_params(scene.view(), scene.options);
 }
 
 // The CPU pipeline with the scene's options; the uniform pattern uses the configured uniform tables

@@ -32,12 +32,15 @@ extern "C" const char* __asan_default_options() {
     return "detect_leaks=0";
 }
 namespace {
-VkCompute& device() {
-    static std::unique_ptr<VkCompute> vk = std::make_unique<VkCompute>();
-    return *vk;
+// One device and pipeline per maximum factor, made on first use and kept for the whole run.
+vulkan::Runner& runner(unsigned max_factor) {
+    static std::unique_ptr<vulkan::Runner> runners[2];
+    std::unique_ptr<vulkan::Runner>& r = runners[max_factor == 64 ? 0 : 1];
+    if (!r) r = std::make_unique<vulkan::Runner>(CTESS_SHADER_DIR, max_factor);
+    return *r;
 }
 PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char*, RunLimits limits = {}) {
-    return run_vulkan(device(), CTESS_SHADER_DIR, max_factor, scene, limits);
+    return run_vulkan(runner(max_factor), scene, limits);
 }
 #elif defined(CTESS_GPU_DAWN)
 const char* const backend_name = CTESS_GPU_BACKEND_NAME;

@@ -1,0 +1,115 @@
+// What a host of the generated mesh pipeline shaders (docs/shaders.md) binds and writes: the seven storage
+// bindings, the params words, the workgroup sizes and the totals after the patch records. The shaders get
+// these numbers from gen/shaders/shader_layout.hpp, which takes them from here, so the C++ hosts
+// (<ctess/runtime/gpu/vulkan.hpp>), the JS host (ctess_webgpu.mjs, through layout.json) and the shaders share
+// one source. No GPU API here: a host for any API includes this header.
+//
+//   const auto params = ctess::rt::gpu::pipeline_params(mesh, options); // binding 0
+//   // binding 4: patch_buffer_words(mesh.triangle_count) words; the prefix sum writes the totals after the
+//   // records: totals_words(...) below reads them back.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
+
+namespace ctess::rt::gpu {
+
+// Set 0 (Vulkan) / group 0 (WebGPU), every binding a storage buffer (docs/shaders.md, "Passes and bindings").
+namespace binding {
+inline constexpr std::uint32_t params = 0;        // param_word::words u32, read
+inline constexpr std::uint32_t tables = 1;        // the table blob, read
+inline constexpr std::uint32_t mesh_vertices = 2; // mesh_vertex_floats floats per vertex, read
+inline constexpr std::uint32_t mesh_indices = 3;  // 3 per base triangle, read
+inline constexpr std::uint32_t patches = 4;       // PatchRecord per triangle, then the totals, read/write
+inline constexpr std::uint32_t out_vertices = 5;  // TessVertex per output vertex, written
+inline constexpr std::uint32_t out_indices = 6;   // 3 per output triangle, written
+inline constexpr std::uint32_t count = 7;
+} // namespace binding
+
+// The params buffer (binding 0), one u32 word each; floats as their bits.
+namespace param_word {
+inline constexpr std::uint32_t patch_count = 0;
+inline constexpr std::uint32_t surface = 1;      // rt::Surface
+inline constexpr std::uint32_t alpha = 2;        // float
+inline constexpr std::uint32_t factor_scale = 3; // float, DiceOptions::factor_scale()
+inline constexpr std::uint32_t eye = 4;          // 3 floats
+inline constexpr std::uint32_t mesh_vertex_count = 7;
+inline constexpr std::uint32_t first_patch = 8; // the emit passes' patch range [first, end)
+inline constexpr std::uint32_t end_patch = 9;
+inline constexpr std::uint32_t pattern = 10; // rt::Pattern
+inline constexpr std::uint32_t words = 11;
+} // namespace param_word
+static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
+              param_word::pattern + 1 == param_word::words);
+
+// Workgroup sizes. The setup pass's is the C++ limit's (rt::max_pipeline_patches counts in it); the prefix
+// sum is one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations); the emit passes run
+// a workgroup per patch and loop over its vertices and triangles in steps of their workgroup.
+inline constexpr std::uint32_t setup_workgroup = patch_setup_workgroup;
+inline constexpr std::uint32_t scan_workgroup = 128;
+inline constexpr std::uint32_t emit_workgroup = 64;
+// After the last record: total vertices, total triangles. The prefix sum writes both as totals_overflow when
+// they do not fit in u32; hosts recount the records' counts in 64 bits and refuse such a mesh.
+inline constexpr std::uint32_t totals_words = 2;
+inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
+
+inline constexpr std::uint32_t patch_words = sizeof(PatchRecord) / 4;
+inline constexpr std::uint32_t vertex_words = sizeof(TessVertex) / 4;
+
+// Words of binding 4 for patch_count base triangles: the records, then the totals.
+constexpr std::uint64_t patch_buffer_words(std::uint64_t patch_count) {
+    return patch_count * patch_words + totals_words;
+}
+
+// Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride
+// over the rest; rt::max_dispatch_workgroups is the one-dispatch limit every Vulkan and WebGPU device
+// allows).
+constexpr std::uint32_t setup_workgroups(std::uint32_t patch_count,
+                                         std::uint32_t max_workgroups = max_dispatch_workgroups) {
+    const std::uint32_t groups = patch_count / setup_workgroup + (patch_count % setup_workgroup != 0);
+    return groups < max_workgroups ? groups : max_workgroups;
+}
+constexpr std::uint32_t emit_workgroups(std::uint32_t patch_count,
+                                        std::uint32_t max_workgroups = max_dispatch_workgroups) {
+    return patch_count < max_workgroups ? patch_count : max_workgroups;
+}
+
+// The params of a run over mesh's base triangles with options (quads and the split and D3D11 patterns are CPU
+// only: a host refuses them, see gpu_options_status), the emit range covering every patch.
+inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshView& mesh,
+                                                                    const PipelineOptions& options) {
+    const auto bits = [](float f) {
+        std::uint32_t u;
+        std::memcpy(&u, &f, 4);
+        return u;
+    };
+    std::array<std::uint32_t, param_word::words> p{};
+    p[param_word::patch_count] = mesh.triangle_count;
+    p[param_word::surface] = static_cast<std::uint32_t>(options.surface.surface);
+    p[param_word::alpha] = bits(options.surface.alpha);
+    p[param_word::factor_scale] = bits(options.dice.factor_scale());
+    p[param_word::eye] = bits(options.dice.eye.x);
+    p[param_word::eye + 1] = bits(options.dice.eye.y);
+    p[param_word::eye + 2] = bits(options.dice.eye.z);
+    p[param_word::mesh_vertex_count] = mesh.vertex_count;
+    p[param_word::first_patch] = 0;
+    p[param_word::end_patch] = mesh.triangle_count;
+    p[param_word::pattern] = static_cast<std::uint32_t>(options.pattern);
+    return p;
+}
+
+// Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (quads, the
+// uniform_split and D3D11 patterns, the PN-AEN surface, displacement), or too_many_patches.
+constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
+    if (mesh.quad_count != 0 || options.displacement != nullptr) return PipelineStatus::bad_option;
+    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
+        return PipelineStatus::bad_option;
+    if (options.surface.surface != Surface::flat && options.surface.surface != Surface::pn_triangles &&
+        options.surface.surface != Surface::phong)
+        return PipelineStatus::bad_option;
+    return check_pipeline_size(mesh.triangle_count, 0, 0);
+}
+
+} // namespace ctess::rt::gpu

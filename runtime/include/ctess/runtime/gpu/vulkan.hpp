@@ -1,0 +1,131 @@
+// The mesh pipeline on Vulkan (ctess::vulkan; docs/shaders.md, "Hosts"): the generated SPIR-V of
+// share/ctess/shaders (ctess_SHADER_DIR) as four compute pipelines, in two layers.
+//
+// MeshPipeline is for a renderer: it creates the pipelines on your VkDevice and records the passes into your
+// command buffer; you own the buffers (device-local or not), the descriptor set and the synchronisation.
+//
+//   ctess::vulkan::MeshPipeline pipeline(device, ctess_shader_dir, 64);
+//   // descriptor set of pipeline.set_layout(): the seven buffers of rt::gpu::binding, params from
+//   // rt::gpu::pipeline_params, the patches buffer rt::gpu::patch_buffer_words(n) words
+//   pipeline.record_counts(cmd, set, n);   // setup + prefix sum; read the totals after the records,
+//   ...                                    // size the outputs, bind them
+//   pipeline.record_emit(cmd, set, n);     // vertices + triangles
+//
+// Runner is the whole round trip on host-visible buffers, for tools and tests (`ctess mesh --backend
+// vulkan`, tests/gpu): its own instance and device (the loader's first device with a compute queue; lavapipe
+// where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back.
+//
+//   ctess::vulkan::Runner gpu(ctess_shader_dir, 64);
+//   const ctess::vulkan::Output out = gpu.tessellate(mesh, options);   // out.vertices, out.indices
+//
+// Errors (no Vulkan device, a missing SPIR-V or blob file, a failing call, a mesh past the pipeline's limits
+// or with options the shaders do not run: rt::gpu::gpu_options_status) throw ctess::vulkan::Error, whose
+// message names the call or the file. Nothing is written to the outputs then.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include <ctess/runtime/gpu/shader_interface.hpp>
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
+
+namespace ctess::vulkan {
+
+class Error : public std::runtime_error {
+  public:
+    explicit Error(const std::string& what, VkResult result = VK_SUCCESS)
+        : std::runtime_error(what), result_(result) {}
+    VkResult result() const noexcept { return result_; } // VK_SUCCESS when no Vulkan call failed
+  private:
+    VkResult result_;
+};
+
+// The generated files of one maximum factor (64 or 256) in shader_dir (docs/shaders.md, "Build outputs").
+std::string shader_file(const std::string& shader_dir, unsigned max_factor, const std::string& suffix);
+// The table blob a pattern needs, as u32 words: ctess_mesh_<max>.tables.bin for CP,
+// ctess_mesh_<max>.uniform.tables.bin for uniform density (the CP sections, then the uniform ones).
+std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsigned max_factor,
+                                           rt::Pattern pattern);
+
+// The four compute pipelines (patch setup, prefix sum, emit vertices, emit triangles) on a device, with the
+// descriptor set layout of rt::gpu::binding (seven storage buffers, compute stage). Move-only; destroys what
+// it created, so destroy it before the device.
+class MeshPipeline {
+  public:
+    MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor);
+    ~MeshPipeline();
+    MeshPipeline(MeshPipeline&& other) noexcept;
+    MeshPipeline& operator=(MeshPipeline&& other) noexcept;
+    MeshPipeline(const MeshPipeline&) = delete;
+    MeshPipeline& operator=(const MeshPipeline&) = delete;
+
+    VkDescriptorSetLayout set_layout() const noexcept { return set_layout_; }
+    VkPipelineLayout pipeline_layout() const noexcept { return pipeline_layout_; }
+    unsigned max_factor() const noexcept { return max_factor_; }
+
+    // Points the seven bindings of set at buffers (whole ranges), in rt::gpu::binding order.
+    void write_descriptor_set(VkDescriptorSet set, const VkBuffer (&buffers)[rt::gpu::binding::count]) const;
+
+    // Records the setup pass and the prefix sum over patch_count patches (the params' patch count), with a
+    // compute-to-compute barrier between them and one after; the totals then follow the records in binding 4.
+    void record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                       std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+    // Records both emit passes for the params' patch range [first, end) (patch_count = end - first), with a
+    // barrier before (for the counts) and between; the outputs are written when the command buffer completes.
+    void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                     std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+
+  private:
+    void destroy() noexcept;
+    VkDevice device_ = VK_NULL_HANDLE;
+    unsigned max_factor_ = 0;
+    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+    VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+    VkShaderModule modules_[4] = {};
+    VkPipeline pipelines_[4] = {}; // setup, prefix sum, emit vertices, emit triangles
+};
+
+// What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
+struct Output {
+    std::vector<rt::PatchRecord> patches; // one per base triangle
+    rt::PipelineTotals totals;            // vertices and triangles (clamped_edges is not counted on the GPU)
+    std::vector<rt::TessVertex> vertices; // totals.vertices
+    std::vector<std::uint32_t> indices;   // 3 x totals.triangles
+    double milliseconds = 0.0;            // submit to fence, both submissions
+};
+
+struct RunOptions {
+    std::uint32_t max_workgroups = rt::max_dispatch_workgroups; // per dispatch; the passes stride over more
+    bool counts_only = false; // setup and prefix sum only: patches and totals, no outputs
+};
+
+class Runner {
+  public:
+    Runner(const std::string& shader_dir, unsigned max_factor);
+    ~Runner();
+    Runner(const Runner&) = delete;
+    Runner& operator=(const Runner&) = delete;
+
+    std::string device_name() const;
+
+    // The mesh pipeline on mesh's base triangles with options (rt::gpu::gpu_options_status must be ok). The
+    // totals are recounted from the records in 64 bits and checked against rt::check_pipeline_size before
+    // the outputs are allocated.
+    Output tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run = {});
+    // The same with the params words given (a host that sets them itself, e.g. tests of the params' range).
+    Output tessellate(const rt::MeshView& mesh,
+                      const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
+                      RunOptions run = {});
+
+  private:
+    struct Device;
+    std::unique_ptr<Device> device_;
+    std::string shader_dir_;
+    unsigned max_factor_;
+};
+
+} // namespace ctess::vulkan

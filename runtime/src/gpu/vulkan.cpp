@@ -1,0 +1,482 @@
+#include <ctess/runtime/gpu/vulkan.hpp>
+
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <utility>
+
+namespace ctess::vulkan {
+
+namespace {
+
+void check(VkResult r, const char* what) {
+    if (r != VK_SUCCESS) {
+        std::string why = what;
+        why += " failed with VkResult ";
+        why += std::to_string(static_cast<int>(r));
+        throw Error(why, r);
+    }
+}
+
+// A zeroed Vulkan struct with its type set (aggregate init would trip -Wmissing-field-initializers).
+template <class T>
+T vk_struct(VkStructureType type) {
+    T value{};
+    value.sType = type;
+    return value;
+}
+
+std::vector<std::uint32_t> read_words(const std::string& path) {
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) throw Error("cannot read " + path + " (are the shaders generated and installed?)");
+    const std::streamoff bytes = in.tellg();
+    if (bytes <= 0 || bytes % 4 != 0) throw Error(path + " is empty or not whole u32 words");
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(bytes) / 4);
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(bytes));
+    if (!in) throw Error("cannot read " + path);
+    return words;
+}
+
+constexpr const char* pass_suffix[4] = {"_patch_setup.spv", "_prefix_sum.spv", "_emit_vertices.spv",
+                                        "_emit_triangles.spv"};
+
+void compute_barrier(VkCommandBuffer cmd) {
+    auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                         1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+} // namespace
+
+std::string shader_file(const std::string& shader_dir, unsigned max_factor, const std::string& suffix) {
+    return shader_dir + "/ctess_mesh_" + std::to_string(max_factor) + suffix;
+}
+
+std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsigned max_factor,
+                                           rt::Pattern pattern) {
+    return read_words(shader_file(shader_dir, max_factor,
+                                  pattern == rt::Pattern::uniform ? ".uniform.tables.bin" : ".tables.bin"));
+}
+
+// ---- MeshPipeline ----
+
+MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor)
+    : device_(device), max_factor_(max_factor) {
+    if (max_factor != 64 && max_factor != 256)
+        throw Error("the shaders exist for max factor 64 and 256 only");
+    try {
+        VkDescriptorSetLayoutBinding b[rt::gpu::binding::count]{};
+        for (std::uint32_t i = 0; i < rt::gpu::binding::count; ++i) {
+            b[i].binding = i;
+            b[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            b[i].descriptorCount = 1;
+            b[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        }
+        auto dsl =
+            vk_struct<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+        dsl.bindingCount = rt::gpu::binding::count;
+        dsl.pBindings = b;
+        check(vkCreateDescriptorSetLayout(device_, &dsl, nullptr, &set_layout_),
+              "vkCreateDescriptorSetLayout");
+        auto pl = vk_struct<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+        pl.setLayoutCount = 1;
+        pl.pSetLayouts = &set_layout_;
+        check(vkCreatePipelineLayout(device_, &pl, nullptr, &pipeline_layout_), "vkCreatePipelineLayout");
+        for (unsigned k = 0; k < 4; ++k) {
+            const std::vector<std::uint32_t> code =
+                read_words(shader_file(shader_dir, max_factor, pass_suffix[k]));
+            auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+            smci.codeSize = code.size() * 4;
+            smci.pCode = code.data();
+            check(vkCreateShaderModule(device_, &smci, nullptr, &modules_[k]), "vkCreateShaderModule");
+            auto cpci =
+                vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+            cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+            cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+            cpci.stage.module = modules_[k];
+            cpci.stage.pName = "main"; // one entry point per GLSL file (docs/shaders.md)
+            cpci.layout = pipeline_layout_;
+            check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipelines_[k]),
+                  "vkCreateComputePipelines");
+        }
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
+void MeshPipeline::destroy() noexcept {
+    if (device_ == VK_NULL_HANDLE) return;
+    for (VkPipeline& p : pipelines_) {
+        if (p != VK_NULL_HANDLE) vkDestroyPipeline(device_, p, nullptr);
+        p = VK_NULL_HANDLE;
+    }
+    for (VkShaderModule& m : modules_) {
+        if (m != VK_NULL_HANDLE) vkDestroyShaderModule(device_, m, nullptr);
+        m = VK_NULL_HANDLE;
+    }
+    if (pipeline_layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
+    if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+    pipeline_layout_ = VK_NULL_HANDLE;
+    set_layout_ = VK_NULL_HANDLE;
+}
+
+MeshPipeline::~MeshPipeline() {
+    destroy();
+}
+
+MeshPipeline::MeshPipeline(MeshPipeline&& other) noexcept {
+    *this = std::move(other);
+}
+
+MeshPipeline& MeshPipeline::operator=(MeshPipeline&& other) noexcept {
+    if (this == &other) return *this;
+    destroy();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    max_factor_ = other.max_factor_;
+    set_layout_ = std::exchange(other.set_layout_, VK_NULL_HANDLE);
+    pipeline_layout_ = std::exchange(other.pipeline_layout_, VK_NULL_HANDLE);
+    for (unsigned k = 0; k < 4; ++k) {
+        modules_[k] = std::exchange(other.modules_[k], VK_NULL_HANDLE);
+        pipelines_[k] = std::exchange(other.pipelines_[k], VK_NULL_HANDLE);
+    }
+    return *this;
+}
+
+void MeshPipeline::write_descriptor_set(VkDescriptorSet set,
+                                        const VkBuffer (&buffers)[rt::gpu::binding::count]) const {
+    VkDescriptorBufferInfo info[rt::gpu::binding::count];
+    VkWriteDescriptorSet writes[rt::gpu::binding::count];
+    for (std::uint32_t i = 0; i < rt::gpu::binding::count; ++i) {
+        info[i] = {buffers[i], 0, VK_WHOLE_SIZE};
+        writes[i] = vk_struct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[i].pBufferInfo = &info[i];
+    }
+    vkUpdateDescriptorSets(device_, rt::gpu::binding::count, writes, 0, nullptr);
+}
+
+void MeshPipeline::record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                                 std::uint32_t max_workgroups) const {
+    if (max_workgroups == 0) max_workgroups = 1;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[0]);
+    // An empty mesh still runs one setup workgroup (it writes nothing) so the prefix sum's totals are
+    // written.
+    const std::uint32_t groups = rt::gpu::setup_workgroups(patch_count, max_workgroups);
+    vkCmdDispatch(cmd, groups > 0 ? groups : 1, 1, 1);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[1]);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    compute_barrier(cmd);
+}
+
+void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                               std::uint32_t max_workgroups) const {
+    if (patch_count == 0) return;
+    if (max_workgroups == 0) max_workgroups = 1;
+    const std::uint32_t groups = rt::gpu::emit_workgroups(patch_count, max_workgroups);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2]);
+    vkCmdDispatch(cmd, groups, 1, 1);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[3]);
+    vkCmdDispatch(cmd, groups, 1, 1);
+}
+
+// ---- Runner ----
+
+struct Runner::Device {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    std::uint32_t queue_family = 0;
+    VkCommandPool command_pool = VK_NULL_HANDLE;
+    VkDescriptorPool descriptor_pool = VK_NULL_HANDLE;
+    std::string name;
+    std::unique_ptr<MeshPipeline> pipeline;
+    std::vector<std::uint32_t> tables[2]; // CP blob, uniform blob (loaded on first use)
+
+    struct Buffer {
+        VkBuffer buffer = VK_NULL_HANDLE;
+        VkDeviceMemory memory = VK_NULL_HANDLE;
+        void* mapped = nullptr;
+    };
+
+    Device() {
+        auto app = vk_struct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+        app.pApplicationName = "ctess";
+        app.apiVersion = VK_API_VERSION_1_1;
+        auto ici = vk_struct<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+        ici.pApplicationInfo = &app;
+        check(vkCreateInstance(&ici, nullptr, &instance),
+              "vkCreateInstance (no Vulkan driver? Debian: mesa-vulkan-drivers)");
+        std::uint32_t count = 0;
+        check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+        if (count == 0) throw Error("no Vulkan device (Debian's mesa-vulkan-drivers gives lavapipe)");
+        std::vector<VkPhysicalDevice> devices(count);
+        check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
+        queue_family = UINT32_MAX;
+        for (VkPhysicalDevice candidate : devices) {
+            std::uint32_t families = 0;
+            vkGetPhysicalDeviceQueueFamilyProperties(candidate, &families, nullptr);
+            std::vector<VkQueueFamilyProperties> qf(families);
+            vkGetPhysicalDeviceQueueFamilyProperties(candidate, &families, qf.data());
+            for (std::uint32_t i = 0; i < families && queue_family == UINT32_MAX; ++i) {
+                if (qf[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
+                    physical = candidate;
+                    queue_family = i;
+                }
+            }
+            if (queue_family != UINT32_MAX) break;
+        }
+        if (queue_family == UINT32_MAX) throw Error("no Vulkan device with a compute queue");
+        VkPhysicalDeviceProperties props;
+        vkGetPhysicalDeviceProperties(physical, &props);
+        name = props.deviceName;
+        const float priority = 1.0f;
+        auto qci = vk_struct<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+        qci.queueFamilyIndex = queue_family;
+        qci.queueCount = 1;
+        qci.pQueuePriorities = &priority;
+        auto dci = vk_struct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
+        dci.queueCreateInfoCount = 1;
+        dci.pQueueCreateInfos = &qci;
+        check(vkCreateDevice(physical, &dci, nullptr, &device), "vkCreateDevice");
+        vkGetDeviceQueue(device, queue_family, 0, &queue);
+        auto cp = vk_struct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+        cp.queueFamilyIndex = queue_family;
+        check(vkCreateCommandPool(device, &cp, nullptr, &command_pool), "vkCreateCommandPool");
+        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * rt::gpu::binding::count};
+        auto dpci = vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+        dpci.maxSets = 2;
+        dpci.poolSizeCount = 1;
+        dpci.pPoolSizes = &size;
+        check(vkCreateDescriptorPool(device, &dpci, nullptr, &descriptor_pool), "vkCreateDescriptorPool");
+    }
+
+    ~Device() {
+        pipeline.reset();
+        if (device != VK_NULL_HANDLE) {
+            vkDeviceWaitIdle(device);
+            if (descriptor_pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(device, descriptor_pool, nullptr);
+            if (command_pool != VK_NULL_HANDLE) vkDestroyCommandPool(device, command_pool, nullptr);
+            vkDestroyDevice(device, nullptr);
+        }
+        if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+    }
+
+    // A zero-filled host-visible, host-coherent storage buffer of at least 16 bytes.
+    Buffer create_buffer(std::uint64_t bytes) {
+        Buffer b;
+        bytes = bytes < 16 ? 16 : bytes;
+        auto bci = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+        bci.size = bytes;
+        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+        check(vkCreateBuffer(device, &bci, nullptr, &b.buffer), "vkCreateBuffer");
+        VkMemoryRequirements req;
+        vkGetBufferMemoryRequirements(device, b.buffer, &req);
+        VkPhysicalDeviceMemoryProperties mp;
+        vkGetPhysicalDeviceMemoryProperties(physical, &mp);
+        const VkMemoryPropertyFlags want =
+            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        std::uint32_t type = UINT32_MAX;
+        for (std::uint32_t i = 0; i < mp.memoryTypeCount && type == UINT32_MAX; ++i)
+            if ((req.memoryTypeBits & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want)
+                type = i;
+        if (type == UINT32_MAX) {
+            vkDestroyBuffer(device, b.buffer, nullptr);
+            throw Error("no host-visible, host-coherent memory type");
+        }
+        auto mai = vk_struct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+        mai.allocationSize = req.size;
+        mai.memoryTypeIndex = type;
+        if (const VkResult r = vkAllocateMemory(device, &mai, nullptr, &b.memory); r != VK_SUCCESS) {
+            vkDestroyBuffer(device, b.buffer, nullptr);
+            check(r, "vkAllocateMemory");
+        }
+        check(vkBindBufferMemory(device, b.buffer, b.memory, 0), "vkBindBufferMemory");
+        check(vkMapMemory(device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
+        std::memset(b.mapped, 0, static_cast<std::size_t>(bytes));
+        return b;
+    }
+
+    void destroy(Buffer& b) noexcept {
+        if (b.buffer != VK_NULL_HANDLE) vkDestroyBuffer(device, b.buffer, nullptr);
+        if (b.memory != VK_NULL_HANDLE) vkFreeMemory(device, b.memory, nullptr);
+        b = {};
+    }
+
+    // Records what `record` records into a one-time command buffer, submits it and waits; milliseconds.
+    template <class Record>
+    double submit(Record&& record) {
+        auto cbai = vk_struct<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+        cbai.commandPool = command_pool;
+        cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        cbai.commandBufferCount = 1;
+        VkCommandBuffer cmd;
+        check(vkAllocateCommandBuffers(device, &cbai, &cmd), "vkAllocateCommandBuffers");
+        VkFence fence = VK_NULL_HANDLE;
+        try {
+            auto begin = vk_struct<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+            begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+            check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+            record(cmd);
+            auto host = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+            host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+            host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                                 &host, 0, nullptr, 0, nullptr);
+            check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+            auto fci = vk_struct<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+            check(vkCreateFence(device, &fci, nullptr, &fence), "vkCreateFence");
+            auto si = vk_struct<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+            si.commandBufferCount = 1;
+            si.pCommandBuffers = &cmd;
+            const auto start = std::chrono::steady_clock::now();
+            check(vkQueueSubmit(queue, 1, &si, fence), "vkQueueSubmit");
+            check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+            const auto stop = std::chrono::steady_clock::now();
+            vkDestroyFence(device, fence, nullptr);
+            vkFreeCommandBuffers(device, command_pool, 1, &cmd);
+            return std::chrono::duration<double, std::milli>(stop - start).count();
+        } catch (...) {
+            if (fence != VK_NULL_HANDLE) vkDestroyFence(device, fence, nullptr);
+            vkDeviceWaitIdle(device);
+            vkFreeCommandBuffers(device, command_pool, 1, &cmd);
+            throw;
+        }
+    }
+};
+
+Runner::Runner(const std::string& shader_dir, unsigned max_factor)
+    : device_(std::make_unique<Device>()), shader_dir_(shader_dir), max_factor_(max_factor) {
+    device_->pipeline = std::make_unique<MeshPipeline>(device_->device, shader_dir, max_factor);
+}
+
+Runner::~Runner() = default;
+
+std::string Runner::device_name() const {
+    return device_->name;
+}
+
+Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run) {
+    if (const rt::PipelineStatus st = rt::gpu::gpu_options_status(mesh, options);
+        st != rt::PipelineStatus::ok) {
+        throw Error(
+            st == rt::PipelineStatus::bad_option
+                ? "the shaders run triangles with the cp or uniform pattern and the flat, pn or phong "
+                  "surface, without displacement (docs/shaders.md)"
+                : rt::pipeline_status_message(st));
+    }
+    return tessellate(mesh, rt::gpu::pipeline_params(mesh, options), run);
+}
+
+Output Runner::tessellate(const rt::MeshView& mesh,
+                          const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
+                          RunOptions run) {
+    namespace pw = rt::gpu::param_word;
+    const std::uint32_t n = params[pw::patch_count];
+    if (n > mesh.triangle_count || params[pw::mesh_vertex_count] > mesh.vertex_count)
+        throw Error("the params name more patches or mesh vertices than the mesh has");
+    if (params[pw::first_patch] > params[pw::end_patch] || params[pw::end_patch] > n)
+        throw Error("the params' emit range [first, end) is not inside [0, patch count]");
+    if (const rt::PipelineStatus st = rt::check_pipeline_size(n, 0, 0); st != rt::PipelineStatus::ok)
+        throw Error(rt::pipeline_status_message(st));
+    const bool uniform = params[pw::pattern] == static_cast<std::uint32_t>(rt::Pattern::uniform);
+    std::vector<std::uint32_t>& tables = device_->tables[uniform ? 1 : 0];
+    if (tables.empty())
+        tables = load_table_blob(shader_dir_, max_factor_, uniform ? rt::Pattern::uniform : rt::Pattern::cp);
+
+    Device& d = *device_;
+    std::vector<Device::Buffer> owned;
+    struct Release { // frees every buffer and the descriptor sets on every path out
+        Device& d;
+        std::vector<Device::Buffer>& owned;
+        ~Release() {
+            for (Device::Buffer& b : owned) d.destroy(b);
+            vkResetDescriptorPool(d.device, d.descriptor_pool, 0);
+        }
+    } release{d, owned};
+    const auto make = [&](std::uint64_t bytes, const void* data, std::size_t data_bytes) {
+        owned.push_back(d.create_buffer(bytes));
+        if (data_bytes != 0) std::memcpy(owned.back().mapped, data, data_bytes);
+        return owned.back();
+    };
+    const std::uint64_t patch_words = rt::gpu::patch_buffer_words(n);
+    const Device::Buffer b_params = make(sizeof params, params.data(), sizeof params);
+    const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
+    const std::size_t vertex_bytes = std::size_t{mesh.vertex_count} * rt::mesh_vertex_floats * 4;
+    const Device::Buffer b_mesh = make(vertex_bytes, mesh.vertices, vertex_bytes);
+    const std::size_t index_bytes = std::size_t{n} * 12;
+    const Device::Buffer b_indices = make(index_bytes, mesh.indices, index_bytes);
+    const Device::Buffer b_patches = make(patch_words * 4, nullptr, 0);
+    const Device::Buffer b_none = make(16, nullptr, 0);
+
+    const auto descriptor_set = [&](VkBuffer vertices, VkBuffer indices) {
+        VkDescriptorSetLayout layout = d.pipeline->set_layout();
+        auto dsai = vk_struct<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+        dsai.descriptorPool = d.descriptor_pool;
+        dsai.descriptorSetCount = 1;
+        dsai.pSetLayouts = &layout;
+        VkDescriptorSet set;
+        check(vkAllocateDescriptorSets(d.device, &dsai, &set), "vkAllocateDescriptorSets");
+        const VkBuffer buffers[rt::gpu::binding::count] = {b_params.buffer,  b_tables.buffer,  b_mesh.buffer,
+                                                           b_indices.buffer, b_patches.buffer, vertices,
+                                                           indices};
+        d.pipeline->write_descriptor_set(set, buffers);
+        return set;
+    };
+
+    Output out;
+    const VkDescriptorSet counts_set = descriptor_set(b_none.buffer, b_none.buffer);
+    out.milliseconds = d.submit(
+        [&](VkCommandBuffer cmd) { d.pipeline->record_counts(cmd, counts_set, n, run.max_workgroups); });
+    const auto* words = static_cast<const std::uint32_t*>(b_patches.mapped);
+    out.patches.resize(n);
+    std::memcpy(static_cast<void*>(out.patches.data()), words, std::size_t{n} * sizeof(rt::PatchRecord));
+    // The shader's u32 totals wrap past 2^32 (it then writes the overflow marker): recount them in 64 bits
+    // and refuse a mesh past the pipeline's limits before sizing the outputs, as the CPU pipeline does.
+    std::uint64_t sum_v = 0, sum_t = 0;
+    for (const rt::PatchRecord& r : out.patches) {
+        sum_v += r.vertex_count;
+        sum_t += r.triangle_count;
+    }
+    if (run.counts_only) {
+        out.totals.vertices = words[std::size_t{n} * rt::gpu::patch_words];
+        out.totals.triangles = words[std::size_t{n} * rt::gpu::patch_words + 1];
+        return out;
+    }
+    if (const rt::PipelineStatus st = rt::check_pipeline_size(n, sum_v, sum_t); st != rt::PipelineStatus::ok)
+        throw Error(rt::pipeline_status_message(st));
+    out.totals.vertices = words[std::size_t{n} * rt::gpu::patch_words];
+    out.totals.triangles = words[std::size_t{n} * rt::gpu::patch_words + 1];
+    if (out.totals.vertices != sum_v || out.totals.triangles != sum_t)
+        throw Error("the prefix sum's totals differ from the records' counts");
+
+    const Device::Buffer b_vertices =
+        make(std::uint64_t{out.totals.vertices} * sizeof(rt::TessVertex), nullptr, 0);
+    const Device::Buffer b_out_indices = make(std::uint64_t{out.totals.triangles} * 12, nullptr, 0);
+    const VkDescriptorSet emit_set = descriptor_set(b_vertices.buffer, b_out_indices.buffer);
+    out.milliseconds += d.submit([&](VkCommandBuffer cmd) {
+        d.pipeline->record_emit(cmd, emit_set, params[pw::end_patch] - params[pw::first_patch],
+                                run.max_workgroups);
+    });
+    out.vertices.resize(out.totals.vertices);
+    std::memcpy(static_cast<void*>(out.vertices.data()), b_vertices.mapped,
+                out.vertices.size() * sizeof(rt::TessVertex));
+    out.indices.resize(std::size_t{out.totals.triangles} * 3);
+    std::memcpy(out.indices.data(), b_out_indices.mapped, out.indices.size() * 4);
+    return out;
+}
+
+} // namespace ctess::vulkan
