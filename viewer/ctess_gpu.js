@@ -1,9 +1,9 @@
 // The generated mesh pipeline (build/<preset>/shaders/ctess_mesh_<max>.wgsl and its table blobs) on the browser's
-// WebGPU, driven as tests/gpu/run_wgsl.mjs drives it on Dawn: bindings and record layouts in docs/shaders.md.
-// Every layout number (params words, record and vertex words, pattern codes, workgroup sizes, dispatch limits)
-// is the generated ctess_mesh_<max>.layout.json's (docs/shaders.md, "Generated constants"): `constants` below.
-// The params' pattern word selects the pattern (docs/shaders.md, "Pattern option"): CP binds the CP blob, uniform
-// density the uniform blob (the same CP sections, then the uniform ones), fetched on first use.
+// WebGPU, through the host module that ships beside the shaders (shaders/ctess_webgpu.mjs; docs/shaders.md,
+// "Hosts"), plus the viewer's own explicit-factor setup (explicit_factors.wgsl). Every layout number is the
+// generated ctess_mesh_<max>.layout.json's: `constants` below.
+import { MeshPipeline, f32Bits, requiredLimits } from './shaders/ctess_webgpu.mjs';
+
 export const PATTERN_NAMES = ['cp', 'uniform']; // the layout's PATTERN_CP, PATTERN_UNIFORM
 
 // Resolves to {device, adapterInfo} or throws an Error whose message says plainly why WebGPU is unusable.
@@ -15,16 +15,7 @@ export async function openDevice() {
     if (!adapter)
         throw new Error('WebGPU is present but no adapter is available (requestAdapter() returned null). On ' +
                         'Linux, start Chromium with --enable-unsafe-webgpu.');
-    if (adapter.limits.maxStorageBuffersPerShaderStage < 7)
-        throw new Error(`This WebGPU adapter allows ${adapter.limits.maxStorageBuffersPerShaderStage} storage ` +
-                        'buffers per stage; the ctess pipeline needs 7.');
-    const device = await adapter.requestDevice({
-        requiredLimits: {
-            maxStorageBuffersPerShaderStage: adapter.limits.maxStorageBuffersPerShaderStage,
-            maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize,
-            maxBufferSize: adapter.limits.maxBufferSize,
-        },
-    });
+    const device = await adapter.requestDevice({ requiredLimits: requiredLimits(adapter) });
     return { device, adapterInfo: adapter.info ?? {} };
 }
 
@@ -36,133 +27,36 @@ async function fetchOk(url) {
 
 export class WgslPipeline {
     static async load(device, maxFactor) {
-        const [wgsl, extra, blob, layout] = await Promise.all([
-            fetchOk(`shaders/ctess_mesh_${maxFactor}.wgsl`).then((r) => r.text()),
-            fetchOk('explicit_factors.wgsl').then((r) => r.text()),
-            fetchOk(`shaders/ctess_mesh_${maxFactor}.tables.bin`).then((r) => r.arrayBuffer()),
-            fetchOk(`shaders/ctess_mesh_${maxFactor}.layout.json`).then((r) => r.json()),
-        ]);
-        const p = new WgslPipeline(device, maxFactor);
-        p.constants = layout.constants; // the generated constants (names as in the shaders)
-        p.patchWords = layout.constants.PATCH_WORDS; // words per patch record
-        p.setupGroup = layout.passes.find((pass) => pass.name === 'patch_setup').workgroup_size;
-        device.pushErrorScope('validation');
-        const module = device.createShaderModule({ code: `${wgsl}\n${extra}` });
-        const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === 'error');
-        if (errors.length) throw new Error(`WGSL ${errors[0].lineNum}:${errors[0].linePos}: ${errors[0].message}`);
-        const entries = [];
-        for (let i = 0; i < 7; i++)
-            entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < 4 ? 'read-only-storage' : 'storage' } });
-        p.layout = device.createBindGroupLayout({ entries });
-        const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
-        // Compiled concurrently (each pipeline compiles the whole module: seconds on a software adapter).
-        const make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
-        [p.explicitSetup, p.setup, p.scan, p.emitVertices, p.emitTriangles] = await Promise.all([
-            make('viewer_explicit_setup'), make('ctess_patch_setup'), make('ctess_prefix_sum'),
-            make('ctess_emit_vertices'), make('ctess_emit_triangles')]);
-        const err = await device.popErrorScope();
-        if (err) throw new Error(err.message);
-        p.tables = p.storage(new Uint32Array(blob));
+        const load = (name) => fetchOk(`shaders/${name}`).then((r) => (name.endsWith('.bin') ? r.arrayBuffer() : r.text()));
+        const extraCode = await fetchOk('explicit_factors.wgsl').then((r) => r.text());
+        const p = new WgslPipeline();
+        p.host = await MeshPipeline.create(device, { maxFactor, load, extraCode, extraEntryPoints: ['viewer_explicit_setup'] });
+        p.constants = p.host.constants;
+        p.patchWords = p.host.patchWords;
         return p;
-    }
-
-    constructor(device, maxFactor) {
-        this.device = device;
-        this.maxFactor = maxFactor;
-        this.uniform = null; // Promise<{tables, maxFactor}>: the uniform blob and its N (uniform_max_factor)
     }
 
     // The uniform blob, bound for the uniform pattern, and the largest factor its table holds.
     uniformTables() {
-        if (!this.uniform) {
-            const base = `shaders/ctess_mesh_${this.maxFactor}.uniform`;
-            this.uniform = Promise.all([fetchOk(`${base}.tables.bin`).then((r) => r.arrayBuffer()),
-                                        fetchOk(`${base}.layout.json`).then((r) => r.json())])
-                .then(([blob, layout]) => ({ tables: this.storage(new Uint32Array(blob)), maxFactor: layout.uniform_max_factor }));
-            this.uniform.catch(() => { this.uniform = null; });
-        }
-        return this.uniform;
+        return this.host.tables('uniform');
     }
 
-    storage(data, words = data.length, extraUsage = 0) {
-        const buffer = this.device.createBuffer({
-            size: Math.max(16, words * 4),
-            usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST | extraUsage,
-        });
-        if (data) this.device.queue.writeBuffer(buffer, 0, data);
-        return buffer;
+    read(buffer, words) {
+        return this.host.read(buffer, words);
     }
 
-    async read(buffer, words) {
-        const size = Math.max(16, words * 4);
-        const staging = this.device.createBuffer({ size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
-        const enc = this.device.createCommandEncoder();
-        enc.copyBufferToBuffer(buffer, 0, staging, 0, size);
-        this.device.queue.submit([enc.finish()]);
-        await staging.mapAsync(GPUMapMode.READ);
-        const out = new Uint32Array(staging.getMappedRange().slice(0, words * 4));
-        staging.unmap();
-        staging.destroy();
-        return out;
-    }
-
-    dispatch(buffers, passes) {
-        const bindGroup = this.device.createBindGroup({
-            layout: this.layout,
-            entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
-        });
-        const enc = this.device.createCommandEncoder();
-        for (const [pipeline, groups] of passes) {
-            const pass = enc.beginComputePass();
-            pass.setPipeline(pipeline);
-            pass.setBindGroup(0, bindGroup);
-            pass.dispatchWorkgroups(groups);
-            pass.end();
-        }
-        this.device.queue.submit([enc.finish()]);
-    }
-
-    // The params buffer (the layout's PARAM_* words), with `extra` words after it (the explicit factors):
-    // {patchCount, surface, alpha, factorScale, eye: [x, y, z], meshVertexCount, first, end, pattern: 'cp' | 'uniform'}.
+    // The params buffer (the layout's PARAM_* words), with `extra` words after it (the explicit factors).
     params(f, extra = 0) {
-        const C = this.constants;
-        const p = new Uint32Array(C.PARAMS_WORDS + extra);
-        p[C.PARAM_PATCH_COUNT] = f.patchCount;
-        p[C.PARAM_SURFACE] = f.surface;
-        p[C.PARAM_ALPHA] = f32Bits(f.alpha);
-        p[C.PARAM_FACTOR_SCALE] = f32Bits(f.factorScale);
-        p.set(f.eye.map(f32Bits), C.PARAM_EYE);
-        p[C.PARAM_MESH_VERTEX_COUNT] = f.meshVertexCount;
-        p[C.PARAM_FIRST_PATCH] = f.first ?? 0;
-        p[C.PARAM_END_PATCH] = f.end ?? f.patchCount;
-        p[C.PARAM_PATTERN] = C[`PATTERN_${f.pattern.toUpperCase()}`];
-        return p;
+        return this.host.params(f, extra);
     }
 
     // Runs setup (explicit factors, or projected from the mesh) and the prefix sum, then both emit passes, with
     // the blob of the pattern the params name. Returns {patches, vertexCount, triangleCount, vertices,
     // indices} with the output as GPU buffers.
-    async run(params, meshVertices, meshIndices, explicit, indexUsage = 0) {
-        const C = this.constants;
-        const n = params[C.PARAM_PATCH_COUNT];
-        const tables = params[C.PARAM_PATTERN] === C.PATTERN_UNIFORM ? (await this.uniformTables()).tables : this.tables;
-        const bParams = this.storage(params);
-        const bMesh = this.storage(meshVertices);
-        const bIndices = this.storage(meshIndices);
-        const patchWords = n * this.patchWords + C.TOTALS_WORDS;
-        const bPatches = this.storage(null, patchWords);
-        const none = [this.storage(null, 4), this.storage(null, 4)];
-        const setup = explicit ? [this.explicitSetup, n] : [this.setup, Math.ceil(n / this.setupGroup)];
-        this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
-        const patches = await this.read(bPatches, patchWords);
-        const vertexCount = patches[n * this.patchWords], triangleCount = patches[n * this.patchWords + 1];
-        const vertices = this.storage(null, vertexCount * C.VERTEX_WORDS);
-        const indices = this.storage(null, triangleCount * 3, indexUsage);
-        this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices],
-                      [[this.emitVertices, Math.min(n, C.MAX_DISPATCH_WORKGROUPS)],
-                       [this.emitTriangles, Math.min(n, C.MAX_DISPATCH_WORKGROUPS)]]);
-        for (const b of [bParams, bMesh, bIndices, bPatches, ...none]) b.destroy();
-        return { patches, vertexCount, triangleCount, vertices, indices };
+    run(params, meshVertices, meshIndices, explicit, indexUsage = 0) {
+        const n = params[this.constants.PARAM_PATCH_COUNT];
+        return this.host.run(params, meshVertices, meshIndices,
+                             { setup: explicit ? { entry: 'viewer_explicit_setup', groups: n } : undefined, indexUsage });
     }
 
     // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0), or with
@@ -197,8 +91,4 @@ export class WgslPipeline {
         }
         return { uv, indices, vertexCount: out.vertexCount, triangleCount: out.triangleCount };
     }
-}
-
-export function f32Bits(x) {
-    return new Uint32Array(new Float32Array([x]).buffer)[0];
 }

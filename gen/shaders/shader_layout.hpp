@@ -107,6 +107,9 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"VERTEX_NORMAL", CTESS_WORD_OF(rt::TessVertex, normal), "rt::TessVertex::normal"},
     ShaderConstant{"VERTEX_UV", CTESS_WORD_OF(rt::TessVertex, uv), "rt::TessVertex::uv"},
     ShaderConstant{"MESH_VERTEX_FLOATS", rt::mesh_vertex_floats, "rt::mesh_vertex_floats"},
+    // the bindings (set 0 / group 0, every one a storage buffer; the first READ_ONLY_BINDINGS are read-only)
+    ShaderConstant{"BINDINGS", rt::gpu::binding::count, "rt::gpu::binding::count"},
+    ShaderConstant{"READ_ONLY_BINDINGS", rt::gpu::binding::patches, "rt::gpu::binding::patches"},
     // the params buffer
     ShaderConstant{"PARAM_PATCH_COUNT", param_word::patch_count, "rt::gpu::param_word::patch_count"},
     ShaderConstant{"PARAM_SURFACE", param_word::surface, "rt::gpu::param_word::surface"},

@@ -22,11 +22,13 @@ constexpr int run_wgsl_past_limits = 3; // run_wgsl.mjs's exit status for a mesh
 
 // run_wgsl.mjs's result file as u32 words.
 std::vector<std::uint32_t> read_result_words(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.eof() || bytes.size() % 4 != 0) throw std::runtime_error("cannot read the result file " + path);
-    std::vector<std::uint32_t> words(bytes.size() / 4);
-    std::memcpy(words.data(), bytes.data(), bytes.size());
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::streamoff bytes = in ? static_cast<std::streamoff>(in.tellg()) : -1;
+    if (bytes < 0 || bytes % 4 != 0) throw std::runtime_error("cannot read the result file " + path);
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(bytes) / 4);
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(words.data()), bytes);
+    if (!in) throw std::runtime_error("cannot read the result file " + path);
     return words;
 }
 

@@ -116,8 +116,9 @@ TEST_CASE("the shader templates restate no generated constant") {
 }
 
 TEST_CASE("the JS hosts and the viewer take their layout from layout.json") {
-    for (const char* path : {"tests/gpu/run_wgsl.mjs", "viewer/ctess_gpu.js", "viewer/mesh_view.js",
-                             "viewer/explicit_factors.wgsl", "tests/viewer/test_viewer.mjs"}) {
+    for (const char* path :
+         {"shaders/ctess_webgpu.mjs", "tests/gpu/run_wgsl.mjs", "viewer/ctess_gpu.js", "viewer/mesh_view.js",
+          "viewer/explicit_factors.wgsl", "tests/viewer/test_viewer.mjs"}) {
         INFO(path);
         const std::string text = source(path);
         CHECK(!contains(text, "ctess_cp"));
@@ -125,7 +126,8 @@ TEST_CASE("the JS hosts and the viewer take their layout from layout.json") {
         for (const char* literal :
              {R"(\* 48\b)", R"(\b65535\b)", R"(\b0xFFFFFFFF / (3|10)\b)", R"(\+ (7|8|9|10|11)\])",
               R"(\+ (7|8|9|10|11)u\])", R"(params\[\d+\])", R"(VERTEX_WORDS = 10)", R"(\+= 10\b)",
-              R"(\* 10\b)", R"(/ 64\b)", R"(EXPLICIT_FACTORS: u32 = \d)"}) {
+              R"(\* 10\b)", R"(/ 64\b)", R"(EXPLICIT_FACTORS: u32 = \d)", R"(PerShaderStage < \d)",
+              R"(i < \d \?)"}) {
             INFO(literal);
             CHECK(first_match(text, literal) == "");
         }

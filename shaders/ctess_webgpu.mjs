@@ -1,0 +1,222 @@
+// The WebGPU host of the generated mesh pipeline (docs/shaders.md, "Hosts"), for the browser and for Node (npm
+// `webgpu`, Dawn). It ships beside the shaders it runs (build/<preset>/shaders/, share/ctess/shaders/) and takes
+// every layout number from their layout.json: params words, record and vertex words, workgroup sizes, limits.
+//
+//   import { MeshPipeline, requiredLimits } from './shaders/ctess_webgpu.mjs';
+//   const device = await adapter.requestDevice({ requiredLimits: requiredLimits(adapter) });
+//   const load = (name) => fetch(`shaders/${name}`).then((r) => (name.endsWith('.bin') ? r.arrayBuffer() : r.text()));
+//   const pipeline = await MeshPipeline.create(device, { maxFactor: 64, load });
+//   const params = pipeline.params({ patchCount, surface: 'pn', alpha: 1, factorScale, eye, meshVertexCount });
+//   const out = await pipeline.run(params, meshVertices, meshIndices); // out.vertices, out.indices: GPUBuffers
+//
+// Bindings (group 0, BINDINGS storage buffers): params, table blob, mesh vertices, mesh indices, patch records and
+// totals, output vertices, output indices. Errors throw; a mesh past the pipeline's limits throws an Error whose
+// `pastLimits` is true, before any output buffer is made.
+
+export function f32Bits(x) {
+    return new Uint32Array(new Float32Array([x]).buffer)[0];
+}
+
+// The limits a device must be requested with: the adapter's own storage limits (the defaults are too small for
+// large outputs; MeshPipeline.create checks the storage buffers per stage against the layout's BINDINGS).
+export function requiredLimits(adapter) {
+    return {
+        maxStorageBuffersPerShaderStage: adapter.limits.maxStorageBuffersPerShaderStage,
+        maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize,
+        maxBufferSize: adapter.limits.maxBufferSize,
+    };
+}
+
+export class MeshPipeline {
+    // load(name) gives a file of the shader folder: a Promise of a string (.wgsl, .json) or an ArrayBuffer (.bin).
+    // extraCode is WGSL appended to the module (entry points of the caller's own, sharing its bindings), and
+    // extraEntryPoints their names: pipeline.extra[name] is then a compute pipeline for run()'s `setup` option.
+    static async create(device, { maxFactor, load, extraCode = '', extraEntryPoints = [] }) {
+        const [wgsl, layout] = await Promise.all([load(`ctess_mesh_${maxFactor}.wgsl`),
+                                                  load(`ctess_mesh_${maxFactor}.layout.json`).then(JSON.parse)]);
+        const p = new MeshPipeline(device, maxFactor, load, layout);
+        const C = layout.constants;
+        if (device.limits.maxStorageBuffersPerShaderStage < C.BINDINGS)
+            throw new Error(`This WebGPU device allows ${device.limits.maxStorageBuffersPerShaderStage} storage ` +
+                            `buffers per stage; the ctess pipeline needs ${C.BINDINGS} (request requiredLimits(adapter)).`);
+        device.pushErrorScope('validation');
+        const module = device.createShaderModule({ code: extraCode ? `${wgsl}\n${extraCode}` : wgsl });
+        const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === 'error');
+        if (errors.length) {
+            await device.popErrorScope();
+            throw new Error(`WGSL ${errors[0].lineNum}:${errors[0].linePos}: ${errors[0].message}`);
+        }
+        const entries = [];
+        for (let i = 0; i < C.BINDINGS; i++)
+            entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < C.READ_ONLY_BINDINGS ? 'read-only-storage' : 'storage' } });
+        p.layout = device.createBindGroupLayout({ entries });
+        const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
+        // Compiled concurrently (each pipeline compiles the whole module: seconds on a software adapter).
+        const make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
+        const pass = Object.fromEntries(layout.passes.map((x) => [x.name, x]));
+        const made = await Promise.all([pass.patch_setup, pass.prefix_sum, pass.emit_vertices, pass.emit_triangles]
+            .map((x) => make(x.entry)).concat(extraEntryPoints.map(make)));
+        [p.setup, p.scan, p.emitVertices, p.emitTriangles] = made;
+        extraEntryPoints.forEach((name, k) => { p.extra[name] = made[4 + k]; });
+        const err = await device.popErrorScope();
+        if (err) throw new Error(err.message);
+        return p;
+    }
+
+    constructor(device, maxFactor, load, layout) {
+        this.device = device;
+        this.maxFactor = maxFactor;
+        this.load = load;
+        this.layoutJson = layout;
+        this.constants = layout.constants; // the generated constants (names as in the shaders)
+        this.patchWords = layout.constants.PATCH_WORDS;
+        this.setupGroup = layout.passes.find((x) => x.name === 'patch_setup').workgroup_size;
+        this.extra = {};
+        this.blobs = new Map(); // pattern -> Promise<{tables, maxFactor}>
+    }
+
+    // The table blob a pattern binds, uploaded once: CP binds ctess_mesh_<max>.tables.bin, uniform density the
+    // uniform blob (the same CP sections, then the uniform ones), whose table's N is maxFactor.
+    tables(pattern) {
+        const uniform = pattern === 'uniform' || pattern === this.constants.PATTERN_UNIFORM;
+        const key = uniform ? 'uniform' : 'cp';
+        if (!this.blobs.has(key)) {
+            const base = `ctess_mesh_${this.maxFactor}${uniform ? '.uniform' : ''}`;
+            const blob = Promise.all([this.load(`${base}.tables.bin`),
+                                      uniform ? this.load(`${base}.layout.json`).then(JSON.parse) : null])
+                .then(([bytes, layout]) => ({ tables: this.storage(new Uint32Array(bytes)),
+                                              maxFactor: uniform ? layout.uniform_max_factor : this.maxFactor }));
+            blob.catch(() => this.blobs.delete(key));
+            this.blobs.set(key, blob);
+        }
+        return this.blobs.get(key);
+    }
+
+    storage(data, words = data.length, extraUsage = 0) {
+        const buffer = this.device.createBuffer({
+            size: Math.max(16, words * 4),
+            usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST | extraUsage,
+        });
+        if (data) this.device.queue.writeBuffer(buffer, 0, data);
+        return buffer;
+    }
+
+    async read(buffer, words) {
+        const size = Math.max(16, words * 4);
+        const staging = this.device.createBuffer({ size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+        const enc = this.device.createCommandEncoder();
+        enc.copyBufferToBuffer(buffer, 0, staging, 0, size);
+        this.device.queue.submit([enc.finish()]);
+        await staging.mapAsync(GPUMapMode.READ);
+        const out = new Uint32Array(staging.getMappedRange().slice(0, words * 4));
+        staging.unmap();
+        staging.destroy();
+        return out;
+    }
+
+    // Encodes passes ([pipeline, workgroups] each, one compute pass each) on the seven buffers, submits them and
+    // resolves when the queue is done, with the milliseconds from submit.
+    async dispatch(buffers, passes) {
+        const bindGroup = this.device.createBindGroup({
+            layout: this.layout,
+            entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
+        });
+        const enc = this.device.createCommandEncoder();
+        for (const [pipeline, groups] of passes) {
+            const pass = enc.beginComputePass();
+            pass.setPipeline(pipeline);
+            pass.setBindGroup(0, bindGroup);
+            pass.dispatchWorkgroups(groups);
+            pass.end();
+        }
+        const start = performance.now();
+        this.device.queue.submit([enc.finish()]);
+        await this.device.queue.onSubmittedWorkDone();
+        return performance.now() - start;
+    }
+
+    // The params words (the layout's PARAM_*), with `extra` zero words after them: {patchCount, surface ('flat',
+    // 'pn', 'phong' or the code), alpha, factorScale, eye: [x, y, z], meshVertexCount, first, end, pattern ('cp',
+    // 'uniform' or the code)}.
+    params(f, extra = 0) {
+        const C = this.constants;
+        const code = (value, prefix, names) => (typeof value === 'number' ? value : C[`${prefix}_${names[value] ?? value.toUpperCase()}`]);
+        const p = new Uint32Array(C.PARAMS_WORDS + extra);
+        p[C.PARAM_PATCH_COUNT] = f.patchCount;
+        p[C.PARAM_SURFACE] = code(f.surface ?? 'flat', 'SURFACE', { pn: 'PN', phong: 'PHONG', flat: 'FLAT' });
+        p[C.PARAM_ALPHA] = f32Bits(f.alpha ?? 1);
+        p[C.PARAM_FACTOR_SCALE] = f32Bits(f.factorScale);
+        p.set(f.eye.map(f32Bits), C.PARAM_EYE);
+        p[C.PARAM_MESH_VERTEX_COUNT] = f.meshVertexCount;
+        p[C.PARAM_FIRST_PATCH] = f.first ?? 0;
+        p[C.PARAM_END_PATCH] = f.end ?? f.patchCount;
+        p[C.PARAM_PATTERN] = code(f.pattern ?? 'cp', 'PATTERN', {});
+        return p;
+    }
+
+    // The whole pipeline: setup (or options.setup = {entry, groups}, an extra entry point) and the prefix sum, the
+    // totals recounted from the records and checked against the layout's limits, then both emit passes in batches
+    // of about options.batchVertices output vertices (default: one batch), at most options.maxWorkgroups workgroups
+    // per dispatch. options.countsOnly stops after the counts. Resolves to {patches (the records and totals, a
+    // Uint32Array), vertexCount, triangleCount, vertices, indices (GPUBuffers, or null with countsOnly),
+    // milliseconds}. indexUsage adds usage flags to the index buffer (e.g. GPUBufferUsage.INDEX to draw it).
+    async run(params, meshVertices, meshIndices, options = {}) {
+        const C = this.constants;
+        const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
+        const maxGroups = options.maxWorkgroups ?? C.MAX_DISPATCH_WORKGROUPS;
+        const n = params[C.PARAM_PATCH_COUNT];
+        const pastLimits = (what) => Object.assign(new Error(`${what}: past the pipeline's limits (${maxPatches} ` +
+                                                             `patches, ${maxVertices} vertices, ${maxTriangles} triangles)`), { pastLimits: true });
+        if (n > maxPatches) throw pastLimits(`${n} patches`);
+        const { tables } = await this.tables(params[C.PARAM_PATTERN]);
+        const bParams = this.storage(params);
+        const bMesh = this.storage(meshVertices);
+        const bIndices = this.storage(meshIndices);
+        const patchWords = n * this.patchWords + C.TOTALS_WORDS;
+        const bPatches = this.storage(null, patchWords);
+        const none = [this.storage(null, 4), this.storage(null, 4)];
+        const temporary = [bParams, bMesh, bIndices, bPatches, ...none];
+        try {
+            const setup = options.setup ? [this.extra[options.setup.entry], options.setup.groups]
+                                        : [this.setup, Math.max(1, Math.min(Math.ceil(n / this.setupGroup), maxGroups))];
+            let milliseconds = await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
+            const patches = await this.read(bPatches, patchWords);
+            if (options.countsOnly)
+                return { patches, vertexCount: 0, triangleCount: 0, vertices: null, indices: null, milliseconds };
+            // The u32 totals wrap (the shader then writes TOTALS_OVERFLOW): recount them exactly before sizing.
+            let sumV = 0, sumT = 0;
+            for (let t = 0; t < n; t++) {
+                sumV += patches[t * this.patchWords + C.REC_VERTEX_COUNT];
+                sumT += patches[t * this.patchWords + C.REC_TRIANGLE_COUNT];
+            }
+            if (sumV > maxVertices || sumT > maxTriangles) throw pastLimits(`${sumV} vertices, ${sumT} triangles`);
+            const vertexCount = patches[n * this.patchWords], triangleCount = patches[n * this.patchWords + 1];
+            const maxBinding = this.device.limits.maxStorageBufferBindingSize;
+            if (vertexCount * C.VERTEX_WORDS * 4 > maxBinding || triangleCount * 12 > maxBinding)
+                throw new Error(`${vertexCount} vertices / ${triangleCount} triangles need more than ${maxBinding} ` +
+                                'bytes in one storage binding');
+            const vertices = this.storage(null, vertexCount * C.VERTEX_WORDS);
+            const indices = this.storage(null, triangleCount * 3, options.indexUsage ?? 0);
+            // The emit passes' patch range (PARAM_FIRST_PATCH, PARAM_END_PATCH), one submit per batch, as a host
+            // that streams a large mesh would use it.
+            const batch = options.batchVertices ?? Infinity;
+            const first0 = params[C.PARAM_FIRST_PATCH], end0 = params[C.PARAM_END_PATCH];
+            const batchParams = params.slice();
+            for (let first = first0; first < end0;) {
+                let end = first, count = 0;
+                while (end < end0 && (end === first || count + patches[end * this.patchWords + C.REC_VERTEX_COUNT] <= batch))
+                    count += patches[this.patchWords * end++ + C.REC_VERTEX_COUNT];
+                batchParams[C.PARAM_FIRST_PATCH] = first;
+                batchParams[C.PARAM_END_PATCH] = end;
+                this.device.queue.writeBuffer(bParams, 0, batchParams);
+                const groups = Math.min(end - first, maxGroups);
+                milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices],
+                                                    [[this.emitVertices, groups], [this.emitTriangles, groups]]);
+                first = end;
+            }
+            return { patches, vertexCount, triangleCount, vertices, indices, milliseconds };
+        } finally {
+            for (const b of temporary) b.destroy();
+        }
+    }
+}
