@@ -198,3 +198,41 @@ TEST_CASE("GPU large output: a 51 MB vertex binding (once past what a collected 
     INFO(c.first_difference);
     CHECK(c.equal());
 }
+
+#if defined(CTESS_GPU_VULKAN)
+TEST_CASE(
+    "Vulkan host: options the shaders do not run, bad params and missing files are errors, not output") {
+    const Scene scene = icosphere(1, rt::Surface::flat, 4.0f);
+    vulkan::Runner& gpu = runner(64);
+    const auto refused = [&](rt::PipelineOptions options, rt::MeshView mesh) {
+        CHECK_THROWS_AS(gpu.tessellate(mesh, options), vulkan::Error);
+    };
+    rt::PipelineOptions options = scene.options;
+    options.pattern = rt::Pattern::d3d11_fractional_even;
+    refused(options, scene.view());
+    options = scene.options;
+    options.pattern = rt::Pattern::uniform_split;
+    refused(options, scene.view());
+    options = scene.options;
+    options.dice.mode = rt::FactorMode::constant;
+    refused(options, scene.view());
+    rt::MeshView with_quads = scene.view();
+    const std::uint32_t quad[4] = {0, 1, 2, 3};
+    with_quads.quad_indices = quad;
+    with_quads.quad_count = 1;
+    refused(scene.options, with_quads);
+    // Params naming more patches than the mesh holds, or an emit range past them.
+    auto params = pipeline_params(scene);
+    params[rt::gpu::param_word::patch_count] += 1;
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), params), vulkan::Error);
+    params = pipeline_params(scene);
+    params[rt::gpu::param_word::end_patch] += 1;
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), params), vulkan::Error);
+    // The same runner still works afterwards.
+    const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), run_gpu(64, scene, "host_errors"));
+    CHECK(c.equal());
+    CHECK_THROWS_WITH(vulkan::Runner("/nonexistent", 64),
+                      Catch::Contains("/nonexistent/ctess_mesh_64_patch_setup.spv"));
+    CHECK_THROWS_AS(vulkan::Runner(CTESS_SHADER_DIR, 128), vulkan::Error);
+}
+#endif

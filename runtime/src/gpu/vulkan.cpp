@@ -372,11 +372,10 @@ std::string Runner::device_name() const {
 Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run) {
     if (const rt::PipelineStatus st = rt::gpu::gpu_options_status(mesh, options);
         st != rt::PipelineStatus::ok) {
-        throw Error(
-            st == rt::PipelineStatus::bad_option
-                ? "the shaders run triangles with the cp or uniform pattern and the flat, pn or phong "
-                  "surface, without displacement (docs/shaders.md)"
-                : rt::pipeline_status_message(st));
+        throw Error(st == rt::PipelineStatus::bad_option
+                        ? "the shaders run triangles with the cp or uniform pattern, the flat, pn or phong "
+                          "surface and camera factors, without displacement (docs/shaders.md)"
+                        : rt::pipeline_status_message(st));
     }
     return tessellate(mesh, rt::gpu::pipeline_params(mesh, options), run);
 }

@@ -101,9 +101,11 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
 }
 
 // Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (quads, the
-// uniform_split and D3D11 patterns, the PN-AEN surface, displacement), or too_many_patches.
+// uniform_split and D3D11 patterns, the PN-AEN surface, displacement, factors other than FactorMode::camera),
+// or too_many_patches.
 constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
     if (mesh.quad_count != 0 || options.displacement != nullptr) return PipelineStatus::bad_option;
+    if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;
     if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
         return PipelineStatus::bad_option;
     if (options.surface.surface != Surface::flat && options.surface.surface != Surface::pn_triangles &&

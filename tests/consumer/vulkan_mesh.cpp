@@ -1,0 +1,66 @@
+// A consumer of the installed Vulkan host (ctess::vulkan, docs/shaders.md "Hosts"), built as a user's project
+// is: an octahedron tessellated by the installed SPIR-V on the loader's device (lavapipe in ctest), then
+// checked against the CPU pipeline: equal counts, records, barycentrics and indices, positions within the
+// shaders' documented bound. Lines between "example" marks are the docs' example. Exit 0 when they agree.
+#include <ctess/runtime.hpp>
+#include <ctess/runtime/gpu/vulkan.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+int main() {
+    // An octahedron: 6 vertices (position, normal, uv: rt::mesh_vertex_floats each), 8 triangles.
+    std::vector<float> vertices;
+    const float axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const auto& a : axes)
+        vertices.insert(vertices.end(), {a[0], a[1], a[2], a[0], a[1], a[2], 0.5f, 0.5f});
+    const std::vector<std::uint32_t> indices = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                                                2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    // example: tessellate on the GPU
+    const ctess::rt::MeshView mesh{vertices.data(), 6, indices.data(), 8};
+    ctess::rt::PipelineOptions options;
+    options.surface.surface = ctess::rt::Surface::pn_triangles;
+    options.dice.eye = {0.5f, 1.0f, 4.0f}; // camera; factors from DiceRate (2 pixels per segment)
+    options.dice.projection_scale = 400.0f;
+    ctess::vulkan::Output out;
+    try {
+        ctess::vulkan::Runner gpu(CTESS_SHADER_DIR, 64); // ctess_SHADER_DIR of find_package(ctess)
+        out = gpu.tessellate(mesh, options);
+        std::printf("%s: %u vertices, %u triangles\n", gpu.device_name().c_str(), out.totals.vertices,
+                    out.totals.triangles);
+    } catch (const ctess::vulkan::Error& e) {
+        std::fprintf(stderr, "vulkan_mesh: %s\n", e.what());
+        return 1;
+    }
+    // end of example
+
+    std::vector<ctess::rt::PatchRecord> patches(8);
+    ctess::rt::PipelineTotals totals;
+    if (ctess::rt::setup_patches(ctess::rt::cp_tables_64, mesh, options, patches, totals) !=
+        ctess::rt::PipelineStatus::ok)
+        return 2;
+    std::vector<ctess::rt::TessVertex> cpu_vertices(totals.vertices);
+    std::vector<std::uint32_t> cpu_indices(3 * std::size_t{totals.triangles});
+    if (ctess::rt::emit_mesh(ctess::rt::cp_tables_64, mesh, options, patches, cpu_vertices, cpu_indices) !=
+        ctess::rt::PipelineStatus::ok)
+        return 2;
+    if (totals.vertices < 100 || out.totals.vertices != totals.vertices ||
+        out.totals.triangles != totals.triangles || out.indices != cpu_indices ||
+        std::memcmp(out.patches.data(), patches.data(), sizeof(patches[0]) * 8) != 0) {
+        std::fprintf(stderr, "vulkan_mesh: counts, records or indices differ from the CPU's\n");
+        return 3;
+    }
+    for (std::size_t v = 0; v < cpu_vertices.size(); ++v) {
+        const ctess::rt::TessVertex &a = cpu_vertices[v], &b = out.vertices[v];
+        bool same = a.u == b.u && a.v == b.v;
+        for (int k = 0; k < 3; ++k) same = same && std::fabs(a.position[k] - b.position[k]) <= 1e-5f;
+        if (!same) {
+            std::fprintf(stderr, "vulkan_mesh: vertex %zu differs from the CPU's\n", v);
+            return 4;
+        }
+    }
+    std::printf("vulkan_mesh: the GPU output equals the CPU's\n");
+    return 0;
+}
