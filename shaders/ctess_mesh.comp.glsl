@@ -11,7 +11,8 @@
 layout(local_size_x = {{LOCAL_SIZE}}) in;
 
 // params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
-// patch range [first, end) that the emit passes cover (hosts may emit in batches), and the pattern (0 CP, 1 uniform)
+// patch range [first, end) that the emit passes cover (hosts may emit in batches), the pattern (0 CP, 1 uniform),
+// the quad count (the last patches; their 4 indices each follow the triangles' 3) and the quad rule
 layout(std430, set = 0, binding = 0) readonly buffer Params { uint params[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Tables { uint tables[]; };
 layout(std430, set = 0, binding = 2) readonly buffer MeshVertices { float mesh_vertices[]; };
@@ -448,6 +449,18 @@ bool base_triangle(uint t, out uvec3 w) {
     uint n = params[PARAM_MESH_VERTEX_COUNT];
     return w.x < n && w.y < n && w.z < n;
 }
+// Patches are the base triangles, then the PARAM_QUAD_COUNT quads (4 indices each after the triangles' 3).
+uint triangle_count() { return patch_count() - params[PARAM_QUAD_COUNT]; }
+bool base_quad(uint q, out uint w[4]) {
+    uint o = 3u * triangle_count() + 4u * q;
+    uint n = params[PARAM_MESH_VERTEX_COUNT];
+    bool inside = true;
+    for (uint k = 0u; k < 4u; ++k) {
+        w[k] = mesh_indices[o + k];
+        inside = inside && w[k] < n;
+    }
+    return inside;
+}
 
 // ---- tess factors (tess_factor.hpp): precise, so that no multiply-add is fused ----
 float dot3(vec3 a, vec3 b) {
@@ -564,6 +577,98 @@ SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha)
     return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
 }
 
+// ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
+// pn_edge_point with the normal passed apart (pn_control on the CPU).
+vec3 pn_control(vec3 pi, vec3 ni, vec3 pj) {
+    float w = dot3(pj - pi, ni);
+    return (1.0 / 3.0) * ((2.0 * pi + pj) - w * ni);
+}
+// A point strictly inside quad q0 q1 q2 q3 at (s, t) of its unit square: bilinear (flat, zeros as +0), Phong
+// (the bilinear point projected onto the corner tangent planes, blended bilinearly) or the PN bicubic patch
+// whose boundary is the PN triangles' edge curves, with the biquadratic normal field.
+SurfacePoint quad_interior(Corner q[4], uint s, uint t, uint surface, float alpha) {
+    float fs = fixed_weight(s), ft = fixed_weight(t);
+    float gs = fixed_weight(FIXED_ONE - s), gt = fixed_weight(FIXED_ONE - t);
+    float w[4] = float[4](gs * gt, fs * gt, fs * ft, gs * ft);
+    vec3 flat_p = vec3(0.0), flat_n = vec3(0.0);
+    vec2 uv = vec2(0.0);
+    for (uint k = 0u; k < 4u; ++k) {
+        flat_p = flat_p + w[k] * q[k].position;
+        flat_n = flat_n + w[k] * q[k].normal;
+        uv.x += w[k] * q[k].uv.x;
+        uv.y += w[k] * q[k].uv.y;
+    }
+    SurfacePoint o;
+    o.uv = uv;
+    if (surface == SURFACE_PHONG) {
+        vec3 ph = vec3(0.0);
+        for (uint k = 0u; k < 4u; ++k) ph = ph + w[k] * phong_project(flat_p, q[k]);
+        o.position = blend(flat_p, ph, alpha);
+        o.normal = normalize_or_zero(flat_n);
+        return o;
+    }
+    if (surface != SURFACE_PN) {
+        o.position = flat_p + vec3(0.0);
+        o.normal = normalize_or_zero(flat_n) + vec3(0.0);
+        o.uv = uv + vec2(0.0);
+        return o;
+    }
+    // The Bezier net b[i][j] (i along s, j along t) at b[4 * i + j].
+    vec3 b[16];
+    b[0] = q[0].position; b[12] = q[1].position; b[15] = q[2].position; b[3] = q[3].position;
+    b[4] = pn_control(q[0].position, q[0].normal, q[1].position);
+    b[8] = pn_control(q[1].position, q[1].normal, q[0].position);
+    b[13] = pn_control(q[1].position, q[1].normal, q[2].position);
+    b[14] = pn_control(q[2].position, q[2].normal, q[1].position);
+    b[11] = pn_control(q[2].position, q[2].normal, q[3].position);
+    b[7] = pn_control(q[3].position, q[3].normal, q[2].position);
+    b[2] = pn_control(q[3].position, q[3].normal, q[0].position);
+    b[1] = pn_control(q[0].position, q[0].normal, q[3].position);
+    vec3 twist = (1.0 / 9.0) * ((q[0].position + q[2].position) - (q[1].position + q[3].position));
+    b[5] = ((b[4] + b[1]) - q[0].position) + twist;
+    b[9] = ((b[8] + b[13]) - q[1].position) - twist;
+    b[10] = ((b[11] + b[14]) - q[2].position) + twist;
+    b[6] = ((b[7] + b[2]) - q[3].position) - twist;
+    float bs[4] = float[4](gs * gs * gs, 3.0 * gs * gs * fs, 3.0 * gs * fs * fs, fs * fs * fs);
+    float bt[4] = float[4](gt * gt * gt, 3.0 * gt * gt * ft, 3.0 * gt * ft * ft, ft * ft * ft);
+    vec3 pn = vec3(0.0);
+    for (uint j = 0u; j < 4u; ++j) {
+        vec3 row = vec3(0.0);
+        for (uint i = 0u; i < 4u; ++i) row = row + bs[i] * b[4u * i + j];
+        pn = pn + bt[j] * row;
+    }
+    vec3 m[4] = vec3[4](0.5 * pn_edge_normal(q[0], q[1]), 0.5 * pn_edge_normal(q[1], q[2]),
+                        0.5 * pn_edge_normal(q[2], q[3]), 0.5 * pn_edge_normal(q[3], q[0]));
+    // nq[i][j] at nq[3 * i + j]
+    vec3 nq[9] = vec3[9](q[0].normal, m[3], q[3].normal, m[0], 0.25 * ((m[0] + m[1]) + (m[2] + m[3])), m[2],
+                         q[1].normal, m[1], q[2].normal);
+    float cs[3] = float[3](gs * gs, 2.0 * gs * fs, fs * fs);
+    float ct[3] = float[3](gt * gt, 2.0 * gt * ft, ft * ft);
+    vec3 nn = vec3(0.0);
+    for (uint j = 0u; j < 3u; ++j) {
+        vec3 row = vec3(0.0);
+        for (uint i = 0u; i < 3u; ++i) row = row + cs[i] * nq[3u * i + j];
+        nn = nn + ct[j] * row;
+    }
+    o.position = blend(flat_p, pn, alpha);
+    o.normal = normalize_or_zero(blend(flat_n, nn, alpha));
+    return o;
+}
+// The surface point of (s, t) of a quad's unit square (quad_vertex on the CPU): a point on quad edge k goes
+// through evaluate_surface on (q_k, q_k+1, q_k+2) with weights (1 - r, r, 0), the very operations a triangle on
+// the other side of the edge runs; an inner point through quad_interior.
+SurfacePoint quad_surface(Corner q[4], uint s, uint t, uint surface, float alpha) {
+    bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (uint k = 0u; k < 4u; ++k) {
+        if (!on_edge[k]) continue;
+        Corner tri[3] = Corner[3](q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
+        uint w[3] = uint[3](FIXED_ONE - r[k], r[k], 0u);
+        return evaluate_surface(tri, w, surface, alpha);
+    }
+    return quad_interior(q, s, t, surface, alpha);
+}
+
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
 // uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
 // bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
@@ -607,8 +712,12 @@ uvec2 uniform_setup(uint f[3], out uvec3 words) {
     return uvec2(s0 + s1 + s2 + (next & 0xFFFFu) - (first & 0xFFFFu), (next >> 16) - (first >> 16));
 }
 // Vertex i as base weights (w1, w2), units of 2^-24.
-uvec2 uniform_vertex(uint rec, uint i) {
-    uint index = patches[rec + SETUP + USETUP_PATTERN], sorted = patches[rec + SETUP + USETUP_SORTED], corners = patches[rec + SETUP + USETUP_CORNERS];
+// The uniform setup words of a record (pattern index, sorted factors, corner sources).
+uvec3 uniform_words(uint rec) {
+    return uvec3(patches[rec + SETUP + USETUP_PATTERN], patches[rec + SETUP + USETUP_SORTED], patches[rec + SETUP + USETUP_CORNERS]);
+}
+uvec2 uniform_vertex(uvec3 words, uint i) {
+    uint index = words.x, sorted = words.y, corners = words.z;
     uint f0 = sorted & 255u, f1 = (sorted >> 8) & 255u, f2 = sorted >> 16;
     uvec2 c;
     if (i < f0) c = uvec2(uniform_edge_parameter(i, f0), 0u);
@@ -622,10 +731,10 @@ uvec2 uniform_vertex(uint rec, uint i) {
     return uvec2(uniform_to_fixed(weight[(corners >> 4) & 3u]), uniform_to_fixed(weight[(corners >> 8) & 3u]));
 }
 uint uniform_index_byte(uint b) { return (tables[UNIFORM_TRIANGLE + (b >> 2)] >> ((b & 3u) * 8u)) & 255u; }
-uvec3 uniform_triangle(uint rec, uint p) {
-    uint b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP + USETUP_PATTERN]] >> 16) + p);
+uvec3 uniform_triangle(uvec3 words, uint p) {
+    uint b = 3u * ((tables[UNIFORM_OFFSET + words.x] >> 16) + p);
     uvec3 t = uvec3(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
-    return (patches[rec + SETUP + USETUP_CORNERS] & 4096u) != 0u ? t.xzy : t;
+    return (words.z & 4096u) != 0u ? t.xzy : t;
 }
 
 // ---- patch records (PatchRecord) ----
@@ -704,15 +813,187 @@ Patch record_patch(uint rec) {
     return p;
 }
 
-// Pass 1, one invocation per base triangle: factors, rotation, line states, counts and the setup block.
+// ---- quads (docs/algorithm.md §7.2, §7.3): two triangle halves along a diagonal ----
+vec3 mesh_eye() {
+    return vec3(uintBitsToFloat(params[PARAM_EYE]), uintBitsToFloat(params[PARAM_EYE + 1u]), uintBitsToFloat(params[PARAM_EYE + 2u]));
+}
+// The factor and squared length of mesh edge (i, j), endpoints in mesh-index order (both faces get the same bits).
+float mesh_edge_factor(uint i, uint j) {
+    return edge_tess_factor(mesh_position(min(i, j)), mesh_position(max(i, j)), mesh_eye(), uintBitsToFloat(params[PARAM_FACTOR_SCALE]));
+}
+float mesh_edge_length2(uint i, uint j) {
+    precise vec3 d = mesh_position(max(i, j)) - mesh_position(min(i, j));
+    return dot3(d, d);
+}
+// The quad rule: CP makes q0q1 the longer edge of the opposite pair with the larger summed length (the diagonal
+// takes its factor); uniform density splits along the shorter diagonal. Ties and NaN keep the labelled order.
+uint cp_quad_rotation(float length2[4]) {
+    if (params[PARAM_QUAD_RULE] == QUAD_RULE_AS_LABELLED) return 0u;
+    float len[4];
+    for (uint k = 0u; k < 4u; ++k) len[k] = sqrt(length2[k]);
+    uint first = len[1] + len[3] > len[0] + len[2] ? 1u : 0u;
+    return len[first + 2u] > len[first] ? first + 2u : first;
+}
+uint uniform_quad_rotation(uint w[4]) {
+    if (params[PARAM_QUAD_RULE] == QUAD_RULE_AS_LABELLED) return 0u;
+    return mesh_edge_length2(w[0], w[2]) < mesh_edge_length2(w[1], w[3]) ? 1u : 0u;
+}
+uvec2 saturating_add(uvec2 a, uvec2 b) {
+    uvec2 sum = a + b;
+    return uvec2(sum.x < a.x ? 0xFFFFFFFFu : sum.x, sum.y < a.y ? 0xFFFFFFFFu : sum.y);
+}
+// A quad's record (rt::PatchRecord with kind PATCH_KIND_QUAD): rotation = the quad rule's, half A = (q0, q1, q3)'s
+// line states (or uniform factors) as tokens, half B = (q2, q3, q1)'s in the setup words, the counts of both
+// halves together, factors Q0..Q2 and Q3's bits in the setup words. No CP setup block: the emit passes set up
+// each half themselves.
+void setup_one_quad(uint t) {
+    uint rec = t * PATCH_WORDS;
+    patches[rec + REC_KIND] = PATCH_KIND_QUAD;
+    uint w[4];
+    if (!base_quad(t - triangle_count(), w)) return;
+    float f[4], length2[4];
+    for (uint k = 0u; k < 4u; ++k) {
+        f[k] = mesh_edge_factor(w[k], w[(k + 1u) % 4u]);
+        length2[k] = mesh_edge_length2(w[k], w[(k + 1u) % 4u]);
+    }
+    for (uint k = 0u; k < 3u; ++k) patches[rec + REC_FACTOR + k] = floatBitsToUint(f[k]);
+    patches[rec + SETUP + QSETUP_Q3_FACTOR] = floatBitsToUint(f[3]);
+    bool uniform_ = uniform_pattern();
+    uint r;
+    float diagonal;
+    if (uniform_) {
+        r = uniform_quad_rotation(w);
+        diagonal = mesh_edge_factor(w[(1u + r) % 4u], w[(3u + r) % 4u]);
+    } else {
+        r = cp_quad_rotation(length2);
+        diagonal = f[r];
+    }
+    patches[rec + REC_ROTATION] = r;
+    float fa[3] = float[3](f[r], diagonal, f[(r + 3u) % 4u]);
+    float fb[3] = float[3](f[(r + 2u) % 4u], diagonal, f[(r + 1u) % 4u]);
+    uvec2 counts;
+    if (uniform_) {
+        uint ia[3], ib[3];
+        for (uint k = 0u; k < 3u; ++k) {
+            ia[k] = uniform_factor(fa[k]);
+            ib[k] = uniform_factor(fb[k]);
+            patches[rec + REC_TOKEN + k] = ia[k];
+            patches[rec + SETUP + QSETUP_B_TOKEN + k] = ib[k];
+        }
+        uvec3 words;
+        uvec2 ca = uniform_setup(ia, words);
+        counts = saturating_add(ca, uniform_setup(ib, words));
+    } else {
+        uvec2 sa[3], sb[3];
+        for (uint k = 0u; k < 3u; ++k) {
+            sa[k] = line_state(fa[k]);
+            sb[k] = line_state(fb[k]);
+            patches[rec + REC_TOKEN + k] = sa[k].x;
+            patches[rec + REC_T16 + k] = sa[k].y;
+            patches[rec + SETUP + QSETUP_B_TOKEN + k] = sb[k].x;
+            patches[rec + SETUP + QSETUP_B_T16 + k] = sb[k].y;
+        }
+        Patch a = patch_setup(sa[0], sa[1], sa[2]);
+        Patch b = patch_setup(sb[0], sb[1], sb[2]);
+        counts = saturating_add(uvec2(a.vertices, a.triangles), uvec2(b.vertices, b.triangles));
+    }
+    patches[rec + REC_VERTEX_COUNT] = counts.x;
+    patches[rec + REC_TRIANGLE_COUNT] = counts.y;
+}
+// The line states of quad half h (A = 0 from the tokens, B = 1 from the setup words).
+uvec2 quad_half_state(uint rec, uint h, uint k) {
+    if (h == 0u) return uvec2(patches[rec + REC_TOKEN + k], patches[rec + REC_T16 + k]);
+    return uvec2(patches[rec + SETUP + QSETUP_B_TOKEN + k], patches[rec + SETUP + QSETUP_B_T16 + k]);
+}
+// Both halves of a quad record, as the emit passes need them: the CP patches (CP) or the uniform setup words,
+// and half A's counts.
+struct QuadHalves {
+    Patch a;
+    Patch b;
+    uvec3 words_a;
+    uvec3 words_b;
+    uint vertices_a;
+    uint triangles_a;
+};
+QuadHalves quad_halves(uint rec) {
+    QuadHalves h;
+    if (uniform_pattern()) {
+        uint fa[3], fb[3];
+        for (uint k = 0u; k < 3u; ++k) {
+            fa[k] = quad_half_state(rec, 0u, k).x;
+            fb[k] = quad_half_state(rec, 1u, k).x;
+        }
+        uvec2 ca = uniform_setup(fa, h.words_a);
+        uniform_setup(fb, h.words_b);
+        h.a = patch_zero();
+        h.b = patch_zero();
+        h.vertices_a = ca.x;
+        h.triangles_a = ca.y;
+    } else {
+        h.a = patch_setup(quad_half_state(rec, 0u, 0u), quad_half_state(rec, 0u, 1u), quad_half_state(rec, 0u, 2u));
+        h.b = patch_setup(quad_half_state(rec, 1u, 0u), quad_half_state(rec, 1u, 1u), quad_half_state(rec, 1u, 2u));
+        h.vertices_a = h.a.vertices;
+        h.triangles_a = h.a.triangles;
+    }
+    return h;
+}
+// Vertex i of a quad in its unit square: half A's points as they are, B's reflected (cp::quad_point).
+uvec2 quad_vertex(QuadHalves h, uint i) {
+    bool uniform_ = uniform_pattern();
+    if (i < h.vertices_a) return uniform_ ? uniform_vertex(h.words_a, i) : patch_vertex(h.a, i);
+    uvec2 d = uniform_ ? uniform_vertex(h.words_b, i - h.vertices_a) : patch_vertex(h.b, i - h.vertices_a);
+    return uvec2(FIXED_ONE - d.x, FIXED_ONE - d.y);
+}
+// Triangle i of a quad, as indices into the quad's vertices (B's after A's).
+uvec3 quad_triangle(QuadHalves h, uint i) {
+    bool uniform_ = uniform_pattern();
+    if (i < h.triangles_a) return uniform_ ? uniform_triangle(h.words_a, i) : patch_triangle(h.a, i);
+    uvec3 tri = uniform_ ? uniform_triangle(h.words_b, i - h.triangles_a) : patch_triangle(h.b, i - h.triangles_a);
+    return tri + uvec3(h.vertices_a);
+}
+void store_vertex(uint o, uint u, uint v, SurfacePoint sp) {
+    out_vertices[o + VERTEX_U] = u;
+    out_vertices[o + VERTEX_V] = v;
+    out_vertices[o + VERTEX_POSITION] = floatBitsToUint(sp.position.x);
+    out_vertices[o + (VERTEX_POSITION + 1u)] = floatBitsToUint(sp.position.y);
+    out_vertices[o + (VERTEX_POSITION + 2u)] = floatBitsToUint(sp.position.z);
+    out_vertices[o + VERTEX_NORMAL] = floatBitsToUint(sp.normal.x);
+    out_vertices[o + (VERTEX_NORMAL + 1u)] = floatBitsToUint(sp.normal.y);
+    out_vertices[o + (VERTEX_NORMAL + 2u)] = floatBitsToUint(sp.normal.z);
+    out_vertices[o + VERTEX_UV] = floatBitsToUint(sp.uv.x);
+    out_vertices[o + (VERTEX_UV + 1u)] = floatBitsToUint(sp.uv.y);
+}
+// Every vertex of quad patch t (this invocation's share of the workgroup on it).
+void emit_quad_vertices(uint t, uint surface, float alpha) {
+    uint rec = t * PATCH_WORDS;
+    uint count = patches[rec + REC_VERTEX_COUNT];
+    uint w[4];
+    if (count == 0u || !base_quad(t - triangle_count(), w)) return;
+    uint r = patches[rec + REC_ROTATION];
+    // Pattern corner q_k is the mesh quad's corner (k + rotation) % 4.
+    Corner q[4] = Corner[4](mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
+                            mesh_corner(w[(3u + r) % 4u]));
+    QuadHalves h = quad_halves(rec);
+    uint first = patches[rec + REC_FIRST_VERTEX];
+    for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
+        uvec2 d = quad_vertex(h, i);
+        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, d.x, d.y, surface, alpha));
+    }
+}
+
+// Pass 1, one invocation per patch: factors, rotation, line states, counts and the setup block (quads: setup_one_quad).
 void setup_one_patch(uint t) {
     uint rec = t * PATCH_WORDS;
     for (uint k = 0u; k < PATCH_WORDS; ++k) patches[rec + k] = 0u;
+    if (t >= triangle_count()) {
+        setup_one_quad(t);
+        return;
+    }
     uvec3 w;
     if (!base_triangle(t, w)) return;
     uint wv[3] = uint[3](w.x, w.y, w.z);
     float scale = uintBitsToFloat(params[PARAM_FACTOR_SCALE]);
-    vec3 eye = vec3(uintBitsToFloat(params[PARAM_EYE]), uintBitsToFloat(params[PARAM_EYE + 1u]), uintBitsToFloat(params[PARAM_EYE + 2u]));
+    vec3 eye = mesh_eye();
     float factor[3], length2[3];
     for (uint k = 0u; k < 3u; ++k) {
         uint i = wv[k], j = wv[(k + 1u) % 3u];
@@ -807,33 +1088,27 @@ void ctess_emit_vertices() {
     float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
     uint surface = params[PARAM_SURFACE];
     for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+        if (t >= triangle_count()) {
+            emit_quad_vertices(t, surface, alpha);
+            continue;
+        }
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
         uvec3 w;
         if (count == 0u || !base_triangle(t, w)) continue;
         bool uniform_ = uniform_pattern();
         Patch p = uniform_ ? patch_zero() : record_patch(rec);
+        uvec3 words = uniform_words(rec);
         uint rot = patches[rec + REC_ROTATION];
         uint first = patches[rec + REC_FIRST_VERTEX];
         Corner c[3] = Corner[3](mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec2 d = uniform_ ? uniform_vertex(rec, i) : patch_vertex(p, i);
+            uvec2 d = uniform_ ? uniform_vertex(words, i) : patch_vertex(p, i);
             // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
             uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y);
             uint bw[3];
             for (uint k = 0u; k < 3u; ++k) bw[(k + rot) % 3u] = pw[k];
-            SurfacePoint sp = evaluate_surface(c, bw, surface, alpha);
-            uint o = (first + i) * VERTEX_WORDS;
-            out_vertices[o + VERTEX_U] = bw[1];
-            out_vertices[o + VERTEX_V] = bw[2];
-            out_vertices[o + VERTEX_POSITION] = floatBitsToUint(sp.position.x);
-            out_vertices[o + (VERTEX_POSITION + 1u)] = floatBitsToUint(sp.position.y);
-            out_vertices[o + (VERTEX_POSITION + 2u)] = floatBitsToUint(sp.position.z);
-            out_vertices[o + VERTEX_NORMAL] = floatBitsToUint(sp.normal.x);
-            out_vertices[o + (VERTEX_NORMAL + 1u)] = floatBitsToUint(sp.normal.y);
-            out_vertices[o + (VERTEX_NORMAL + 2u)] = floatBitsToUint(sp.normal.z);
-            out_vertices[o + VERTEX_UV] = floatBitsToUint(sp.uv.x);
-            out_vertices[o + (VERTEX_UV + 1u)] = floatBitsToUint(sp.uv.y);
+            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], evaluate_surface(c, bw, surface, alpha));
         }
     }
 }
@@ -845,12 +1120,17 @@ void ctess_emit_triangles() {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) continue;
+        bool quad = t >= triangle_count();
         bool uniform_ = uniform_pattern();
-        Patch p = uniform_ ? patch_zero() : record_patch(rec);
+        Patch p = uniform_ || quad ? patch_zero() : record_patch(rec);
+        QuadHalves h;
+        if (quad) h = quad_halves(rec);
+        uvec3 words = uniform_words(rec);
         uint vfirst = patches[rec + REC_FIRST_VERTEX];
         uint tfirst = patches[rec + REC_FIRST_TRIANGLE];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec3 tri = (uniform_ ? uniform_triangle(rec, i) : patch_triangle(p, i)) + uvec3(vfirst);
+            uvec3 tri = quad ? quad_triangle(h, i) : uniform_ ? uniform_triangle(words, i) : patch_triangle(p, i);
+            tri += uvec3(vfirst);
             uint o = 3u * (tfirst + i);
             out_indices[o] = tri.x;
             out_indices[o + 1u] = tri.y;

@@ -7,8 +7,9 @@
 
 {{CONSTANTS}}
 
-// params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
-// patch range [first, end) that the emit passes cover (hosts may emit in batches), and the pattern (0 CP, 1 uniform)
+// params (rt::gpu::param_word): patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
+// patch range [first, end) that the emit passes cover (hosts may emit in batches), the pattern (0 CP, 1 uniform),
+// the quad count (the last patches; their 4 indices each follow the triangles' 3) and the quad rule
 @group(0) @binding(0) var<storage, read> params: array<u32>;
 @group(0) @binding(1) var<storage, read> tables: array<u32>;
 @group(0) @binding(2) var<storage, read> mesh_vertices: array<f32>;
@@ -453,6 +454,16 @@ fn base_triangle_valid(w: vec3<u32>) -> bool {
     let n = params[PARAM_MESH_VERTEX_COUNT];
     return w.x < n && w.y < n && w.z < n;
 }
+// Patches are the base triangles, then the PARAM_QUAD_COUNT quads (4 indices each after the triangles' 3).
+fn triangle_count() -> u32 { return patch_count() - params[PARAM_QUAD_COUNT]; }
+fn base_quad(q: u32) -> vec4<u32> {
+    let o = 3u * triangle_count() + 4u * q;
+    return vec4<u32>(mesh_indices[o], mesh_indices[o + 1u], mesh_indices[o + 2u], mesh_indices[o + 3u]);
+}
+fn base_quad_valid(w: vec4<u32>) -> bool {
+    let n = params[PARAM_MESH_VERTEX_COUNT];
+    return w.x < n && w.y < n && w.z < n && w.w < n;
+}
 
 // ---- tess factors (tess_factor.hpp) ----
 fn dot3(a: vec3<f32>, b: vec3<f32>) -> f32 { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -558,6 +569,89 @@ fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: 
     return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
 }
 
+// ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
+// pn_edge_point with the normal passed apart (pn_control on the CPU).
+fn pn_control(pi: vec3<f32>, ni: vec3<f32>, pj: vec3<f32>) -> vec3<f32> {
+    let w = dot3(pj - pi, ni);
+    return (1.0 / 3.0) * ((2.0 * pi + pj) - w * ni);
+}
+// A point strictly inside quad q0 q1 q2 q3 at (s, t) of its unit square: bilinear (flat, zeros as +0), Phong
+// (the bilinear point projected onto the corner tangent planes, blended bilinearly) or the PN bicubic patch
+// whose boundary is the PN triangles' edge curves, with the biquadratic normal field.
+fn quad_interior(corners: array<Corner, 4>, s: u32, t: u32, surface: u32, alpha: f32) -> SurfacePoint {
+    var q = corners;
+    let fs = fixed_weight(s); let ft = fixed_weight(t);
+    let gs = fixed_weight(FIXED_ONE - s); let gt = fixed_weight(FIXED_ONE - t);
+    var w = array<f32, 4>(gs * gt, fs * gt, fs * ft, gs * ft);
+    var flat_p = vec3<f32>(0.0); var flat_n = vec3<f32>(0.0); var uv = vec2<f32>(0.0);
+    for (var k = 0u; k < 4u; k++) {
+        flat_p = flat_p + w[k] * q[k].position;
+        flat_n = flat_n + w[k] * q[k].normal;
+        uv.x += w[k] * q[k].uv.x;
+        uv.y += w[k] * q[k].uv.y;
+    }
+    if (surface == SURFACE_PHONG) {
+        var ph = vec3<f32>(0.0);
+        for (var k = 0u; k < 4u; k++) { ph = ph + w[k] * phong_project(flat_p, q[k]); }
+        return SurfacePoint(blend(flat_p, ph, alpha), normalize_or_zero(flat_n), uv);
+    }
+    if (surface != SURFACE_PN) {
+        return SurfacePoint(flat_p + vec3<f32>(0.0), normalize_or_zero(flat_n) + vec3<f32>(0.0), uv + vec2<f32>(0.0));
+    }
+    // The Bezier net b[i][j] (i along s, j along t) at b[4 * i + j].
+    var b: array<vec3<f32>, 16>;
+    b[0] = q[0].position; b[12] = q[1].position; b[15] = q[2].position; b[3] = q[3].position;
+    b[4] = pn_control(q[0].position, q[0].normal, q[1].position);
+    b[8] = pn_control(q[1].position, q[1].normal, q[0].position);
+    b[13] = pn_control(q[1].position, q[1].normal, q[2].position);
+    b[14] = pn_control(q[2].position, q[2].normal, q[1].position);
+    b[11] = pn_control(q[2].position, q[2].normal, q[3].position);
+    b[7] = pn_control(q[3].position, q[3].normal, q[2].position);
+    b[2] = pn_control(q[3].position, q[3].normal, q[0].position);
+    b[1] = pn_control(q[0].position, q[0].normal, q[3].position);
+    let twist = (1.0 / 9.0) * ((q[0].position + q[2].position) - (q[1].position + q[3].position));
+    b[5] = ((b[4] + b[1]) - q[0].position) + twist;
+    b[9] = ((b[8] + b[13]) - q[1].position) - twist;
+    b[10] = ((b[11] + b[14]) - q[2].position) + twist;
+    b[6] = ((b[7] + b[2]) - q[3].position) - twist;
+    var bs = array<f32, 4>(gs * gs * gs, 3.0 * gs * gs * fs, 3.0 * gs * fs * fs, fs * fs * fs);
+    var bt = array<f32, 4>(gt * gt * gt, 3.0 * gt * gt * ft, 3.0 * gt * ft * ft, ft * ft * ft);
+    var pn = vec3<f32>(0.0);
+    for (var j = 0u; j < 4u; j++) {
+        var row = vec3<f32>(0.0);
+        for (var i = 0u; i < 4u; i++) { row = row + bs[i] * b[4u * i + j]; }
+        pn = pn + bt[j] * row;
+    }
+    var m = array<vec3<f32>, 4>(0.5 * pn_edge_normal(q[0], q[1]), 0.5 * pn_edge_normal(q[1], q[2]),
+                                0.5 * pn_edge_normal(q[2], q[3]), 0.5 * pn_edge_normal(q[3], q[0]));
+    // nq[i][j] at nq[3 * i + j]
+    var nq = array<vec3<f32>, 9>(q[0].normal, m[3], q[3].normal, m[0], 0.25 * ((m[0] + m[1]) + (m[2] + m[3])), m[2],
+                                 q[1].normal, m[1], q[2].normal);
+    var cs = array<f32, 3>(gs * gs, 2.0 * gs * fs, fs * fs);
+    var ct = array<f32, 3>(gt * gt, 2.0 * gt * ft, ft * ft);
+    var nn = vec3<f32>(0.0);
+    for (var j = 0u; j < 3u; j++) {
+        var row = vec3<f32>(0.0);
+        for (var i = 0u; i < 3u; i++) { row = row + cs[i] * nq[3u * i + j]; }
+        nn = nn + ct[j] * row;
+    }
+    return SurfacePoint(blend(flat_p, pn, alpha), normalize_or_zero(blend(flat_n, nn, alpha)), uv);
+}
+// The surface point of (s, t) of a quad's unit square (quad_vertex on the CPU): a point on quad edge k goes
+// through evaluate_surface on (q_k, q_k+1, q_k+2) with weights (1 - r, r, 0), the very operations a triangle on
+// the other side of the edge runs; an inner point through quad_interior.
+fn quad_surface(corners: array<Corner, 4>, s: u32, t: u32, surface: u32, alpha: f32) -> SurfacePoint {
+    var q = corners;
+    var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (var k = 0u; k < 4u; k++) {
+        if (!on_edge[k]) { continue; }
+        return evaluate_surface(array<Corner, 3>(q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]),
+                                array<u32, 3>(FIXED_ONE - r[k], r[k], 0u), surface, alpha);
+    }
+    return quad_interior(q, s, t, surface, alpha);
+}
+
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
 // uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
 // bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
@@ -601,11 +695,15 @@ fn uniform_setup(f: array<u32, 3>, words: ptr<function, vec3<u32>>) -> vec2<u32>
     *words = vec3<u32>(index, s0 | (s1 << 8u) | (s2 << 16u), source[0] | (source[1] << 4u) | (source[2] << 8u) | select(0u, 4096u, flip));
     return vec2<u32>(s0 + s1 + s2 + (next & 0xFFFFu) - (first & 0xFFFFu), (next >> 16u) - (first >> 16u));
 }
+// The uniform setup words of a record (pattern index, sorted factors, corner sources).
+fn uniform_words(rec: u32) -> vec3<u32> {
+    return vec3<u32>(patches[rec + SETUP + USETUP_PATTERN], patches[rec + SETUP + USETUP_SORTED], patches[rec + SETUP + USETUP_CORNERS]);
+}
 // Vertex i as base weights (w1, w2), units of 2^-24.
-fn uniform_vertex(rec: u32, i: u32) -> vec2<u32> {
-    let index = patches[rec + SETUP + USETUP_PATTERN];
-    let sorted = patches[rec + SETUP + USETUP_SORTED];
-    let corners = patches[rec + SETUP + USETUP_CORNERS];
+fn uniform_vertex(words: vec3<u32>, i: u32) -> vec2<u32> {
+    let index = words.x;
+    let sorted = words.y;
+    let corners = words.z;
     let f0 = sorted & 255u; let f1 = (sorted >> 8u) & 255u; let f2 = sorted >> 16u;
     var c: vec2<u32>;
     if (i < f0) {
@@ -623,10 +721,10 @@ fn uniform_vertex(rec: u32, i: u32) -> vec2<u32> {
     return vec2<u32>(uniform_to_fixed(weight[(corners >> 4u) & 3u]), uniform_to_fixed(weight[(corners >> 8u) & 3u]));
 }
 fn uniform_index_byte(b: u32) -> u32 { return (tables[UNIFORM_TRIANGLE + (b >> 2u)] >> ((b & 3u) * 8u)) & 255u; }
-fn uniform_triangle(rec: u32, p: u32) -> vec3<u32> {
-    let b = 3u * ((tables[UNIFORM_OFFSET + patches[rec + SETUP + USETUP_PATTERN]] >> 16u) + p);
+fn uniform_triangle(words: vec3<u32>, p: u32) -> vec3<u32> {
+    let b = 3u * ((tables[UNIFORM_OFFSET + words.x] >> 16u) + p);
     let t = vec3<u32>(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
-    if ((patches[rec + SETUP + USETUP_CORNERS] & 4096u) != 0u) { return t.xzy; }
+    if ((words.z & 4096u) != 0u) { return t.xzy; }
     return t;
 }
 
@@ -723,15 +821,19 @@ fn record_patch(rec: u32) -> Patch {
     return p;
 }
 
-// Pass 1, one invocation per base triangle: factors, rotation, line states, counts and the setup block.
+// Pass 1, one invocation per patch: factors, rotation, line states, counts and the setup block (quads: setup_one_quad).
 fn setup_one_patch(t: u32) {
     let rec = t * PATCH_WORDS;
     for (var k = 0u; k < PATCH_WORDS; k++) { patches[rec + k] = 0u; }
+    if (t >= triangle_count()) {
+        setup_one_quad(t);
+        return;
+    }
     let w = base_triangle(t);
     if (!base_triangle_valid(w)) { return; }
     var wv = array<u32, 3>(w.x, w.y, w.z);
     let scale = bitcast<f32>(params[PARAM_FACTOR_SCALE]);
-    let eye = vec3<f32>(bitcast<f32>(params[PARAM_EYE]), bitcast<f32>(params[PARAM_EYE + 1u]), bitcast<f32>(params[PARAM_EYE + 2u]));
+    let eye = mesh_eye();
     var factor: array<f32, 3>;
     var length2: array<f32, 3>;
     for (var k = 0u; k < 3u; k++) {
@@ -759,6 +861,180 @@ fn setup_one_patch(t: u32) {
     patches[rec + REC_TRIANGLE_COUNT] = p.triangles;
     store_setup_block(rec, p);
 }
+// ---- quads (docs/algorithm.md §7.2, §7.3): two triangle halves along a diagonal ----
+fn mesh_eye() -> vec3<f32> {
+    return vec3<f32>(bitcast<f32>(params[PARAM_EYE]), bitcast<f32>(params[PARAM_EYE + 1u]), bitcast<f32>(params[PARAM_EYE + 2u]));
+}
+// The factor and squared length of mesh edge (i, j), endpoints in mesh-index order (both faces get the same bits).
+fn mesh_edge_factor(i: u32, j: u32) -> f32 {
+    return edge_tess_factor(mesh_position(min(i, j)), mesh_position(max(i, j)), mesh_eye(), bitcast<f32>(params[PARAM_FACTOR_SCALE]));
+}
+fn mesh_edge_length2(i: u32, j: u32) -> f32 {
+    let d = mesh_position(max(i, j)) - mesh_position(min(i, j));
+    return dot3(d, d);
+}
+// The quad rule: CP makes q0q1 the longer edge of the opposite pair with the larger summed length (the diagonal
+// takes its factor); uniform density splits along the shorter diagonal. Ties and NaN keep the labelled order.
+fn cp_quad_rotation(length2: array<f32, 4>) -> u32 {
+    if (params[PARAM_QUAD_RULE] == QUAD_RULE_AS_LABELLED) { return 0u; }
+    var len: array<f32, 4>;
+    for (var k = 0u; k < 4u; k++) { len[k] = sqrt(length2[k]); }
+    let first = select(0u, 1u, len[1] + len[3] > len[0] + len[2]);
+    return select(first, first + 2u, len[first + 2u] > len[first]);
+}
+fn uniform_quad_rotation(w: array<u32, 4>) -> u32 {
+    if (params[PARAM_QUAD_RULE] == QUAD_RULE_AS_LABELLED) { return 0u; }
+    return select(0u, 1u, mesh_edge_length2(w[0], w[2]) < mesh_edge_length2(w[1], w[3]));
+}
+fn saturating_add(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let sum = a + b;
+    return select(sum, vec2<u32>(0xFFFFFFFFu), sum < a);
+}
+// A quad's record (rt::PatchRecord with kind PATCH_KIND_QUAD): rotation = the quad rule's, half A = (q0, q1, q3)'s
+// line states (or uniform factors) as tokens, half B = (q2, q3, q1)'s in the setup words, the counts of both
+// halves together, factors Q0..Q2 and Q3's bits in the setup words. No CP setup block: the emit passes set up
+// each half themselves.
+fn setup_one_quad(t: u32) {
+    let rec = t * PATCH_WORDS;
+    patches[rec + REC_KIND] = PATCH_KIND_QUAD;
+    let wq = base_quad(t - triangle_count());
+    if (!base_quad_valid(wq)) { return; }
+    var w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
+    var f: array<f32, 4>;
+    var length2: array<f32, 4>;
+    for (var k = 0u; k < 4u; k++) {
+        f[k] = mesh_edge_factor(w[k], w[(k + 1u) % 4u]);
+        length2[k] = mesh_edge_length2(w[k], w[(k + 1u) % 4u]);
+    }
+    for (var k = 0u; k < 3u; k++) { patches[rec + REC_FACTOR + k] = bitcast<u32>(f[k]); }
+    patches[rec + SETUP + QSETUP_Q3_FACTOR] = bitcast<u32>(f[3]);
+    let uniform_ = uniform_pattern();
+    var r: u32;
+    var diagonal: f32;
+    if (uniform_) {
+        r = uniform_quad_rotation(w);
+        diagonal = mesh_edge_factor(w[(1u + r) % 4u], w[(3u + r) % 4u]);
+    } else {
+        r = cp_quad_rotation(length2);
+        diagonal = f[r];
+    }
+    patches[rec + REC_ROTATION] = r;
+    var fa = array<f32, 3>(f[r], diagonal, f[(r + 3u) % 4u]);
+    var fb = array<f32, 3>(f[(r + 2u) % 4u], diagonal, f[(r + 1u) % 4u]);
+    var counts: vec2<u32>;
+    if (uniform_) {
+        var ia: array<u32, 3>;
+        var ib: array<u32, 3>;
+        for (var k = 0u; k < 3u; k++) {
+            ia[k] = uniform_factor(fa[k]);
+            ib[k] = uniform_factor(fb[k]);
+            patches[rec + REC_TOKEN + k] = ia[k];
+            patches[rec + SETUP + QSETUP_B_TOKEN + k] = ib[k];
+        }
+        var words: vec3<u32>;
+        counts = saturating_add(uniform_setup(ia, &words), uniform_setup(ib, &words));
+    } else {
+        var sa: array<vec2<u32>, 3>;
+        var sb: array<vec2<u32>, 3>;
+        for (var k = 0u; k < 3u; k++) {
+            sa[k] = line_state(fa[k]);
+            sb[k] = line_state(fb[k]);
+            patches[rec + REC_TOKEN + k] = sa[k].x;
+            patches[rec + REC_T16 + k] = sa[k].y;
+            patches[rec + SETUP + QSETUP_B_TOKEN + k] = sb[k].x;
+            patches[rec + SETUP + QSETUP_B_T16 + k] = sb[k].y;
+        }
+        let a = patch_setup(sa[0], sa[1], sa[2]);
+        let b = patch_setup(sb[0], sb[1], sb[2]);
+        counts = saturating_add(vec2<u32>(a.vertices, a.triangles), vec2<u32>(b.vertices, b.triangles));
+    }
+    patches[rec + REC_VERTEX_COUNT] = counts.x;
+    patches[rec + REC_TRIANGLE_COUNT] = counts.y;
+}
+// The line states of quad half h (A = 0 from the tokens, B = 1 from the setup words).
+fn quad_half_state(rec: u32, h: u32, k: u32) -> vec2<u32> {
+    if (h == 0u) { return vec2<u32>(patches[rec + REC_TOKEN + k], patches[rec + REC_T16 + k]); }
+    return vec2<u32>(patches[rec + SETUP + QSETUP_B_TOKEN + k], patches[rec + SETUP + QSETUP_B_T16 + k]);
+}
+// Both halves of a quad record, as the emit passes need them: the CP patches (CP, into *a and *b) or the
+// uniform setup words, and half A's counts.
+struct QuadHalves {
+    words_a: vec3<u32>,
+    words_b: vec3<u32>,
+    vertices_a: u32,
+    triangles_a: u32,
+}
+fn quad_halves(rec: u32, a: ptr<function, Patch>, b: ptr<function, Patch>) -> QuadHalves {
+    var h: QuadHalves;
+    if (uniform_pattern()) {
+        var fa: array<u32, 3>;
+        var fb: array<u32, 3>;
+        for (var k = 0u; k < 3u; k++) { fa[k] = quad_half_state(rec, 0u, k).x; fb[k] = quad_half_state(rec, 1u, k).x; }
+        let ca = uniform_setup(fa, &h.words_a);
+        uniform_setup(fb, &h.words_b);
+        h.vertices_a = ca.x;
+        h.triangles_a = ca.y;
+    } else {
+        *a = patch_setup(quad_half_state(rec, 0u, 0u), quad_half_state(rec, 0u, 1u), quad_half_state(rec, 0u, 2u));
+        *b = patch_setup(quad_half_state(rec, 1u, 0u), quad_half_state(rec, 1u, 1u), quad_half_state(rec, 1u, 2u));
+        h.vertices_a = (*a).vertices;
+        h.triangles_a = (*a).triangles;
+    }
+    return h;
+}
+// Vertex i of a quad in its unit square: half A's points as they are, B's reflected (cp::quad_point).
+fn quad_vertex(h: QuadHalves, a: ptr<function, Patch>, b: ptr<function, Patch>, i: u32) -> vec2<u32> {
+    if (i < h.vertices_a) {
+        if (uniform_pattern()) { return uniform_vertex(h.words_a, i); }
+        return patch_vertex(a, i);
+    }
+    var d: vec2<u32>;
+    if (uniform_pattern()) { d = uniform_vertex(h.words_b, i - h.vertices_a); } else { d = patch_vertex(b, i - h.vertices_a); }
+    return vec2<u32>(FIXED_ONE - d.x, FIXED_ONE - d.y);
+}
+// Triangle i of a quad, as indices into the quad's vertices (B's after A's).
+fn quad_triangle(h: QuadHalves, a: ptr<function, Patch>, b: ptr<function, Patch>, i: u32) -> vec3<u32> {
+    if (i < h.triangles_a) {
+        if (uniform_pattern()) { return uniform_triangle(h.words_a, i); }
+        return patch_triangle(a, i);
+    }
+    var tri: vec3<u32>;
+    if (uniform_pattern()) { tri = uniform_triangle(h.words_b, i - h.triangles_a); } else { tri = patch_triangle(b, i - h.triangles_a); }
+    return tri + vec3<u32>(h.vertices_a);
+}
+fn store_vertex(o: u32, u: u32, v: u32, sp: SurfacePoint) {
+    out_vertices[o + VERTEX_U] = u;
+    out_vertices[o + VERTEX_V] = v;
+    out_vertices[o + VERTEX_POSITION] = bitcast<u32>(sp.position.x);
+    out_vertices[o + (VERTEX_POSITION + 1u)] = bitcast<u32>(sp.position.y);
+    out_vertices[o + (VERTEX_POSITION + 2u)] = bitcast<u32>(sp.position.z);
+    out_vertices[o + VERTEX_NORMAL] = bitcast<u32>(sp.normal.x);
+    out_vertices[o + (VERTEX_NORMAL + 1u)] = bitcast<u32>(sp.normal.y);
+    out_vertices[o + (VERTEX_NORMAL + 2u)] = bitcast<u32>(sp.normal.z);
+    out_vertices[o + VERTEX_UV] = bitcast<u32>(sp.uv.x);
+    out_vertices[o + (VERTEX_UV + 1u)] = bitcast<u32>(sp.uv.y);
+}
+// Every vertex of quad patch t (the emit pass's invocation lid of the workgroup on it).
+fn emit_quad_vertices(t: u32, lane: u32, surface: u32, alpha: f32) {
+    let rec = t * PATCH_WORDS;
+    let count = patches[rec + REC_VERTEX_COUNT];
+    let wq = base_quad(t - triangle_count());
+    if (count == 0u || !base_quad_valid(wq)) { return; }
+    var w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
+    let r = patches[rec + REC_ROTATION];
+    // Pattern corner q_k is the mesh quad's corner (k + rotation) % 4.
+    let q = array<Corner, 4>(mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
+                             mesh_corner(w[(3u + r) % 4u]));
+    var pa: Patch;
+    var pb: Patch;
+    let h = quad_halves(rec, &pa, &pb);
+    let first = patches[rec + REC_FIRST_VERTEX];
+    for (var i = lane; i < count; i += EMIT_GROUP) {
+        let d = quad_vertex(h, &pa, &pb, i);
+        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, d.x, d.y, surface, alpha));
+    }
+}
+
 // Grid-stride: a host may dispatch fewer workgroups than patches / SETUP_GROUP (at most MAX_DISPATCH_WORKGROUPS).
 @compute @workgroup_size(SETUP_GROUP)
 fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
@@ -821,6 +1097,10 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
     let alpha = bitcast<f32>(params[PARAM_ALPHA]);
     let surface = params[PARAM_SURFACE];
     for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
+        if (t >= triangle_count()) {
+            emit_quad_vertices(t, lid.x, surface, alpha);
+            continue;
+        }
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
         let w = base_triangle(t);
@@ -828,28 +1108,18 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
         let uniform_ = uniform_pattern();
         var p: Patch;
         if (!uniform_) { p = record_patch(rec); }
+        let words = uniform_words(rec);
         let rot = patches[rec + REC_ROTATION];
         let first = patches[rec + REC_FIRST_VERTEX];
         let c = array<Corner, 3>(mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
             var d: vec2<u32>;
-            if (uniform_) { d = uniform_vertex(rec, i); } else { d = patch_vertex(&p, i); }
+            if (uniform_) { d = uniform_vertex(words, i); } else { d = patch_vertex(&p, i); }
             // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
             var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
             var bw: array<u32, 3>;
             for (var k = 0u; k < 3u; k++) { bw[(k + rot) % 3u] = pw[k]; }
-            let sp = evaluate_surface(c, bw, surface, alpha);
-            let o = (first + i) * VERTEX_WORDS;
-            out_vertices[o + VERTEX_U] = bw[1];
-            out_vertices[o + VERTEX_V] = bw[2];
-            out_vertices[o + VERTEX_POSITION] = bitcast<u32>(sp.position.x);
-            out_vertices[o + (VERTEX_POSITION + 1u)] = bitcast<u32>(sp.position.y);
-            out_vertices[o + (VERTEX_POSITION + 2u)] = bitcast<u32>(sp.position.z);
-            out_vertices[o + VERTEX_NORMAL] = bitcast<u32>(sp.normal.x);
-            out_vertices[o + (VERTEX_NORMAL + 1u)] = bitcast<u32>(sp.normal.y);
-            out_vertices[o + (VERTEX_NORMAL + 2u)] = bitcast<u32>(sp.normal.z);
-            out_vertices[o + VERTEX_UV] = bitcast<u32>(sp.uv.x);
-            out_vertices[o + (VERTEX_UV + 1u)] = bitcast<u32>(sp.uv.y);
+            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], evaluate_surface(c, bw, surface, alpha));
         }
     }
 }
@@ -863,14 +1133,24 @@ fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_work
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) { continue; }
+        let quad = t >= triangle_count();
         let uniform_ = uniform_pattern();
         var p: Patch;
-        if (!uniform_) { p = record_patch(rec); }
+        var pb: Patch;
+        var h: QuadHalves;
+        if (quad) { h = quad_halves(rec, &p, &pb); } else if (!uniform_) { p = record_patch(rec); }
+        let words = uniform_words(rec);
         let vfirst = patches[rec + REC_FIRST_VERTEX];
         let tfirst = patches[rec + REC_FIRST_TRIANGLE];
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
             var tri: vec3<u32>;
-            if (uniform_) { tri = uniform_triangle(rec, i); } else { tri = patch_triangle(&p, i); }
+            if (quad) {
+                tri = quad_triangle(h, &p, &pb, i);
+            } else if (uniform_) {
+                tri = uniform_triangle(words, i);
+            } else {
+                tri = patch_triangle(&p, i);
+            }
             tri += vec3<u32>(vfirst);
             let o = 3u * (tfirst + i);
             out_indices[o] = tri.x;

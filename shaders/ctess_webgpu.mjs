@@ -135,9 +135,10 @@ export class MeshPipeline {
         return performance.now() - start;
     }
 
-    // The params words (the layout's PARAM_*), with `extra` zero words after them: {patchCount, surface ('flat',
-    // 'pn', 'phong' or the code), alpha, factorScale, eye: [x, y, z], meshVertexCount, first, end, pattern ('cp',
-    // 'uniform' or the code)}.
+    // The params words (the layout's PARAM_*), with `extra` zero words after them: {patchCount (triangles +
+    // quads), surface ('flat', 'pn', 'phong' or the code), alpha, factorScale, eye: [x, y, z], meshVertexCount,
+    // first, end, pattern ('cp', 'uniform' or the code), quadCount (the last patches; meshIndices holds the
+    // triangles' 3 indices each, then the quads' 4), quadRule ('longer-pair', the default, or 'as-labelled')}.
     params(f, extra = 0) {
         const C = this.constants;
         const code = (value, prefix, names) => (typeof value === 'number' ? value : C[`${prefix}_${names[value] ?? value.toUpperCase()}`]);
@@ -151,6 +152,8 @@ export class MeshPipeline {
         p[C.PARAM_FIRST_PATCH] = f.first ?? 0;
         p[C.PARAM_END_PATCH] = f.end ?? f.patchCount;
         p[C.PARAM_PATTERN] = code(f.pattern ?? 'cp', 'PATTERN', {});
+        p[C.PARAM_QUAD_COUNT] = f.quadCount ?? 0;
+        p[C.PARAM_QUAD_RULE] = [C.QUAD_RULE_AS_LABELLED, 'as-labelled'].includes(f.quadRule) ? C.QUAD_RULE_AS_LABELLED : C.QUAD_RULE_LONGER_PAIR;
         return p;
     }
 

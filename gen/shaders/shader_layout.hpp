@@ -76,7 +76,13 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"REC_FIRST_TRIANGLE", CTESS_WORD_OF(rt::PatchRecord, first_triangle),
                    "rt::PatchRecord::first_triangle"},
     ShaderConstant{"REC_FACTOR", CTESS_WORD_OF(rt::PatchRecord, factor), "rt::PatchRecord::factor[3]"},
+    ShaderConstant{"REC_KIND", CTESS_WORD_OF(rt::PatchRecord, kind), "rt::PatchRecord::kind"},
     ShaderConstant{"SETUP", CTESS_WORD_OF(rt::PatchRecord, setup), "rt::PatchRecord::setup"},
+    ShaderConstant{"PATCH_KIND_QUAD", rt::patch_kind_quad, "rt::patch_kind_quad"},
+    // a quad record's setup words (rt::quad_setup_word), relative to SETUP
+    ShaderConstant{"QSETUP_B_TOKEN", rt::quad_setup_word::b_token, "rt::quad_setup_word::b_token"},
+    ShaderConstant{"QSETUP_B_T16", rt::quad_setup_word::b_t16, "rt::quad_setup_word::b_t16"},
+    ShaderConstant{"QSETUP_Q3_FACTOR", rt::quad_setup_word::q3_factor, "rt::quad_setup_word::q3_factor"},
     // the CP setup block (rt::setup_word), relative to SETUP
     ShaderConstant{"SETUP_WORDS", rt::setup_word::words, "rt::setup_word::words"},
     ShaderConstant{"SETUP_FLAGS", rt::setup_word::flags, "rt::setup_word::flags"},
@@ -121,11 +127,17 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"PARAM_FIRST_PATCH", param_word::first_patch, "rt::gpu::param_word::first_patch"},
     ShaderConstant{"PARAM_END_PATCH", param_word::end_patch, "rt::gpu::param_word::end_patch"},
     ShaderConstant{"PARAM_PATTERN", param_word::pattern, "rt::gpu::param_word::pattern"},
+    ShaderConstant{"PARAM_QUAD_COUNT", param_word::quad_count, "rt::gpu::param_word::quad_count"},
+    ShaderConstant{"PARAM_QUAD_RULE", param_word::quad_rule, "rt::gpu::param_word::quad_rule"},
     ShaderConstant{"PARAMS_WORDS", param_word::words, "rt::gpu::param_word::words"},
     // option codes
     ShaderConstant{"PATTERN_CP", static_cast<std::uint32_t>(rt::Pattern::cp), "rt::Pattern::cp"},
     ShaderConstant{"PATTERN_UNIFORM", static_cast<std::uint32_t>(rt::Pattern::uniform),
                    "rt::Pattern::uniform"},
+    ShaderConstant{"QUAD_RULE_LONGER_PAIR", static_cast<std::uint32_t>(rt::QuadRule::longer_pair),
+                   "rt::QuadRule::longer_pair"},
+    ShaderConstant{"QUAD_RULE_AS_LABELLED", static_cast<std::uint32_t>(rt::QuadRule::as_labelled),
+                   "rt::QuadRule::as_labelled"},
     ShaderConstant{"SURFACE_FLAT", static_cast<std::uint32_t>(rt::Surface::flat), "rt::Surface::flat"},
     ShaderConstant{"SURFACE_PN", static_cast<std::uint32_t>(rt::Surface::pn_triangles),
                    "rt::Surface::pn_triangles"},
@@ -150,6 +162,8 @@ static_assert(offsetof(rt::PatchRecord, t16) == offsetof(rt::PatchRecord, token)
 static_assert(offsetof(rt::PatchRecord, triangle_count) == offsetof(rt::PatchRecord, vertex_count) + 4);
 static_assert(offsetof(rt::PatchRecord, first_triangle) == offsetof(rt::PatchRecord, first_vertex) + 4);
 static_assert(offsetof(rt::PatchRecord, setup) + 4 * rt::setup_word::words == sizeof(rt::PatchRecord));
+static_assert(rt::quad_setup_word::b_t16 == rt::quad_setup_word::b_token + 3 &&
+              rt::quad_setup_word::q3_factor < rt::setup_word::words);
 static_assert(rt::max_pipeline_patches == std::uint64_t{rt::max_dispatch_workgroups} * setup_workgroup);
 
 } // namespace ctess::gen

@@ -63,13 +63,14 @@ PipelineOutput run_dawn(const std::string& node, const std::string& script, cons
         const std::uint32_t head[] = {0x43535443u, 3u};
         f.write(reinterpret_cast<const char*>(head), sizeof head);
         f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
+        const std::vector<std::uint32_t> index_words = scene.index_words();
         const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
-                                       static_cast<std::uint32_t>(scene.indices.size())};
+                                       static_cast<std::uint32_t>(index_words.size())};
         f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);
         f.write(reinterpret_cast<const char*>(scene.vertices.data()),
                 static_cast<std::streamsize>(scene.vertices.size() * 4));
-        f.write(reinterpret_cast<const char*>(scene.indices.data()),
-                static_cast<std::streamsize>(scene.indices.size() * 4));
+        f.write(reinterpret_cast<const char*>(index_words.data()),
+                static_cast<std::streamsize>(index_words.size() * 4));
         if (!f) throw std::runtime_error("cannot write the scene file");
     }
     std::remove(result_path.c_str());

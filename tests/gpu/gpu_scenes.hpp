@@ -14,14 +14,24 @@ namespace ctess::gpu_test {
 
 struct Scene {
     std::vector<float> vertices;
-    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> indices; // 3 per triangle
+    std::vector<std::uint32_t> quads;   // 4 per quad (the patches after the triangles)
     rt::PipelineOptions options;
 
     rt::MeshView view() const {
         return {vertices.data(), static_cast<std::uint32_t>(vertices.size() / rt::mesh_vertex_floats),
-                indices.data(), static_cast<std::uint32_t>(indices.size() / 3)};
+                indices.data(),  static_cast<std::uint32_t>(indices.size() / 3),
+                quads.data(),    static_cast<std::uint32_t>(quads.size() / 4)};
     }
-    std::uint32_t patch_count() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+    std::uint32_t patch_count() const {
+        return static_cast<std::uint32_t>(indices.size() / 3 + quads.size() / 4);
+    }
+    // Binding 3 as the hosts upload it: the triangles' indices, then the quads'.
+    std::vector<std::uint32_t> index_words() const {
+        std::vector<std::uint32_t> words = indices;
+        words.insert(words.end(), quads.begin(), quads.end());
+        return words;
+    }
 };
 
 namespace detail {
@@ -45,7 +55,9 @@ inline void push_vertex(Scene& s, rt::Vec3 p, rt::Vec3 n, float u, float v) {
 // row heights grow by 16, seen from above at a distance: the edge factors cover every octave of [1, max] and
 // both clamps (below 1, above max), over cells x cells x 2 patches, while the long thin patches of the wide
 // columns keep the output near a million vertices at max 256.
-inline Scene factor_sweep_grid(unsigned max_factor, unsigned cells, rt::Surface surface) {
+// quad_every > 0: every quad_every-th cell is one quad (a mixed mesh) instead of two triangles.
+inline Scene factor_sweep_grid(unsigned max_factor, unsigned cells, rt::Surface surface,
+                               unsigned quad_every = 0) {
     Scene s;
     const auto axis = [cells](float growth, std::uint32_t seed) {
         const float ratio = std::pow(growth, 1.0f / static_cast<float>(cells - 1));
@@ -72,7 +84,9 @@ inline Scene factor_sweep_grid(unsigned max_factor, unsigned cells, rt::Surface 
     for (unsigned j = 0; j < cells; ++j) {
         for (unsigned i = 0; i < cells; ++i) {
             const std::uint32_t a = j * (cells + 1) + i, b = a + 1, c = a + cells + 1, d = c + 1;
-            if ((i + j) % 2 == 0)
+            if (quad_every != 0 && (j * cells + i) % quad_every == 0)
+                s.quads.insert(s.quads.end(), {a, b, d, c});
+            else if ((i + j) % 2 == 0)
                 s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
             else
                 s.indices.insert(s.indices.end(), {a, b, c, b, d, c});

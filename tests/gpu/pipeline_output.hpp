@@ -57,7 +57,7 @@ inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) 
     PipelineOutput out;
     const auto start = std::chrono::steady_clock::now();
     const rt::MeshView mesh = scene.view();
-    std::vector<rt::PatchRecord> patches(mesh.triangle_count);
+    std::vector<rt::PatchRecord> patches(mesh.patch_count());
     rt::PipelineTotals totals;
     if (const rt::PipelineStatus st =
             rt::setup_patches(tables, rt::uniform_tables, mesh, scene.options, patches, totals);

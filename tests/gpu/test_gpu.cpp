@@ -10,6 +10,7 @@
 
 #include <ctess/runtime/cp/table_set.hpp>
 
+#include "../pipeline/mesh_fixtures.hpp" // the mixed torus and the closedness checks of the CPU tests
 #include "gpu_checks.hpp"
 #include "gpu_pipeline.hpp"
 
@@ -67,14 +68,16 @@ const char* pattern_name(rt::Pattern p) {
 }
 
 // The uniform pattern's factors sweep [1, N] of the configured uniform tables, which every blob carries.
-void check_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern = rt::Pattern::cp) {
+void check_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern = rt::Pattern::cp,
+                  unsigned quad_every = 0) {
     const unsigned sweep_max = pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : max_factor;
-    Scene scene = factor_sweep_grid(sweep_max, 24, surface);
+    Scene scene = factor_sweep_grid(sweep_max, 24, surface, quad_every);
     scene.options.pattern = pattern;
     REQUIRE(scene.patch_count() >= 1000);
     const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
-    const char* work =
-        pattern == rt::Pattern::uniform ? "parity_uniform" : "parity"; // ctest runs tests in parallel
+    const char* work = pattern == rt::Pattern::uniform
+                           ? (quad_every ? "parity_uniform_quads" : "parity_uniform")
+                           : (quad_every ? "parity_quads" : "parity"); // parallel ctest
     const PipelineOutput gpu = run_gpu(max_factor, scene, work);
     // A second run: the driver's shader cache is warm, so its time is the dispatch itself. Same bits, too.
     const PipelineOutput again = run_gpu(max_factor, scene, work);
@@ -82,11 +85,12 @@ void check_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern 
     CHECK(again.vertices == gpu.vertices);
     CHECK(again.indices == gpu.indices);
     const Comparison c = compare(cpu, gpu);
-    std::printf("%s, max %u, %s, %s: %u patches, %u vertices, %u triangles; GPU %.1f ms (first run %.1f ms), "
-                "CPU %.1f ms; max position error %.2g\n",
-                backend_name, max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
-                cpu.total_vertices(), cpu.total_triangles(), again.milliseconds, gpu.milliseconds,
-                cpu.milliseconds, c.max_position_error);
+    std::printf(
+        "%s, max %u, %s, %s: %u patches (%zu quads), %u vertices, %u triangles; GPU %.1f ms (first run "
+        "%.1f ms), CPU %.1f ms; max position error %.2g\n",
+        backend_name, max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
+        scene.quads.size() / 4, cpu.total_vertices(), cpu.total_triangles(), again.milliseconds,
+        gpu.milliseconds, cpu.milliseconds, c.max_position_error);
     INFO(c.first_difference);
     CHECK(c.sizes_match);
     CHECK(c.patch_mismatches == 0);
@@ -216,11 +220,9 @@ TEST_CASE(
     options = scene.options;
     options.dice.mode = rt::FactorMode::constant;
     refused(options, scene.view());
-    rt::MeshView with_quads = scene.view();
-    const std::uint32_t quad[4] = {0, 1, 2, 3};
-    with_quads.quad_indices = quad;
-    with_quads.quad_count = 1;
-    refused(scene.options, with_quads);
+    options = scene.options;
+    options.quad_rule = static_cast<rt::QuadRule>(7);
+    refused(options, scene.view());
     // Params naming more patches than the mesh holds, or an emit range past them.
     auto params = pipeline_params(scene);
     params[rt::gpu::param_word::patch_count] += 1;
@@ -236,3 +238,55 @@ TEST_CASE(
     CHECK_THROWS_AS(vulkan::Runner(CTESS_SHADER_DIR, 128), vulkan::Error);
 }
 #endif
+
+// ---- quads (docs/algorithm.md §7.2, §7.3): mixed with triangles in one dispatch ----
+
+TEST_CASE("GPU parity, quads: a mixed grid (every fourth cell a quad), CP and uniform, flat, PN and Phong") {
+    check_parity(64, rt::Surface::flat, rt::Pattern::cp, 4);
+    check_parity(64, rt::Surface::pn_triangles, rt::Pattern::cp, 4);
+    check_parity(64, rt::Surface::phong, rt::Pattern::cp, 4);
+    check_parity(256, rt::Surface::pn_triangles, rt::Pattern::cp, 4);
+    check_parity(64, rt::Surface::pn_triangles, rt::Pattern::uniform, 4);
+    check_parity(256, rt::Surface::phong, rt::Pattern::uniform, 4);
+}
+
+namespace {
+// The GPU output of a closed mixed torus is closed by exact position bits (the independent weld of the CPU
+// tests), and equals the CPU's.
+void check_mixed_torus(unsigned max_factor, rt::Surface surface, rt::Pattern pattern, rt::QuadRule rule) {
+    const pipeline_fixtures::Model torus = pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed);
+    Scene scene;
+    scene.vertices = torus.vertices;
+    scene.indices = torus.triangles;
+    scene.quads = torus.quads;
+    scene.options.pattern = pattern;
+    scene.options.quad_rule = rule;
+    scene.options.surface = {surface, 1.0f};
+    scene.options.dice.eye = {2.0f, 3.0f, 9.0f};
+    scene.options.dice.projection_scale = 300.0f;
+    scene.options.dice.dice_rate = 2.0f;
+    const char* work = pattern == rt::Pattern::uniform ? "torus_uniform" : "torus";
+    const PipelineOutput gpu = run_gpu(max_factor, scene, work);
+    std::vector<rt::TessVertex> vertices(gpu.total_vertices());
+    std::memcpy(static_cast<void*>(vertices.data()), gpu.vertices.data(),
+                vertices.size() * sizeof(rt::TessVertex));
+    const pipeline_fixtures::EdgeCounts edges =
+        pipeline_fixtures::directed_edges(gpu.indices, pipeline_fixtures::weld_ids(vertices, false));
+    std::printf("%s, max %u, %s, %s mixed torus (%zu quads, %zu triangles): %u vertices, %u triangles\n",
+                backend_name, max_factor, pattern_name(pattern), surface_name(surface),
+                scene.quads.size() / 4, scene.indices.size() / 3, gpu.total_vertices(),
+                gpu.total_triangles());
+    CHECK(gpu.total_triangles() > 20 * scene.patch_count());
+    CHECK(pipeline_fixtures::closed_manifold(edges));
+    const Comparison c = compare(run_cpu(tables_for(max_factor), scene), gpu);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+}
+} // namespace
+
+TEST_CASE("GPU crack test, quads: a mixed torus stays closed on the GPU, both quad rules, both patterns") {
+    check_mixed_torus(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::QuadRule::longer_pair);
+    check_mixed_torus(64, rt::Surface::phong, rt::Pattern::cp, rt::QuadRule::as_labelled);
+    check_mixed_torus(256, rt::Surface::flat, rt::Pattern::uniform, rt::QuadRule::longer_pair);
+    check_mixed_torus(64, rt::Surface::pn_triangles, rt::Pattern::uniform, rt::QuadRule::as_labelled);
+}

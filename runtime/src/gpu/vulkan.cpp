@@ -385,8 +385,10 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                           RunOptions run) {
     namespace pw = rt::gpu::param_word;
     const std::uint32_t n = params[pw::patch_count];
-    if (n > mesh.triangle_count || params[pw::mesh_vertex_count] > mesh.vertex_count)
-        throw Error("the params name more patches or mesh vertices than the mesh has");
+    const std::uint32_t quads = params[pw::quad_count];
+    if (quads > n || quads > mesh.quad_count || n - quads > mesh.triangle_count ||
+        params[pw::mesh_vertex_count] > mesh.vertex_count)
+        throw Error("the params name more triangles, quads or mesh vertices than the mesh has");
     if (params[pw::first_patch] > params[pw::end_patch] || params[pw::end_patch] > n)
         throw Error("the params' emit range [first, end) is not inside [0, patch count]");
     if (const rt::PipelineStatus st = rt::check_pipeline_size(n, 0, 0); st != rt::PipelineStatus::ok)
@@ -416,8 +418,11 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
     const std::size_t vertex_bytes = std::size_t{mesh.vertex_count} * rt::mesh_vertex_floats * 4;
     const Device::Buffer b_mesh = make(vertex_bytes, mesh.vertices, vertex_bytes);
-    const std::size_t index_bytes = std::size_t{n} * 12;
-    const Device::Buffer b_indices = make(index_bytes, mesh.indices, index_bytes);
+    // Binding 3: the triangles' 3 indices each, then the quads' 4.
+    const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
+    const Device::Buffer b_indices = make(triangle_bytes + quad_bytes, mesh.indices, triangle_bytes);
+    if (quad_bytes != 0)
+        std::memcpy(static_cast<char*>(b_indices.mapped) + triangle_bytes, mesh.quad_indices, quad_bytes);
     const Device::Buffer b_patches = make(patch_words * 4, nullptr, 0);
     const Device::Buffer b_none = make(16, nullptr, 0);
 

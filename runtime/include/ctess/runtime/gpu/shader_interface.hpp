@@ -21,8 +21,8 @@ namespace binding {
 inline constexpr std::uint32_t params = 0;        // param_word::words u32, read
 inline constexpr std::uint32_t tables = 1;        // the table blob, read
 inline constexpr std::uint32_t mesh_vertices = 2; // mesh_vertex_floats floats per vertex, read
-inline constexpr std::uint32_t mesh_indices = 3;  // 3 per base triangle, read
-inline constexpr std::uint32_t patches = 4;       // PatchRecord per triangle, then the totals, read/write
+inline constexpr std::uint32_t mesh_indices = 3;  // 3 per base triangle, then 4 per quad, read
+inline constexpr std::uint32_t patches = 4;       // PatchRecord per patch, then the totals, read/write
 inline constexpr std::uint32_t out_vertices = 5;  // TessVertex per output vertex, written
 inline constexpr std::uint32_t out_indices = 6;   // 3 per output triangle, written
 inline constexpr std::uint32_t count = 7;
@@ -30,7 +30,7 @@ inline constexpr std::uint32_t count = 7;
 
 // The params buffer (binding 0), one u32 word each; floats as their bits.
 namespace param_word {
-inline constexpr std::uint32_t patch_count = 0;
+inline constexpr std::uint32_t patch_count = 0;  // base triangles + quads (MeshView::patch_count)
 inline constexpr std::uint32_t surface = 1;      // rt::Surface
 inline constexpr std::uint32_t alpha = 2;        // float
 inline constexpr std::uint32_t factor_scale = 3; // float, DiceOptions::factor_scale()
@@ -38,11 +38,13 @@ inline constexpr std::uint32_t eye = 4;          // 3 floats
 inline constexpr std::uint32_t mesh_vertex_count = 7;
 inline constexpr std::uint32_t first_patch = 8; // the emit passes' patch range [first, end)
 inline constexpr std::uint32_t end_patch = 9;
-inline constexpr std::uint32_t pattern = 10; // rt::Pattern
-inline constexpr std::uint32_t words = 11;
+inline constexpr std::uint32_t pattern = 10;    // rt::Pattern
+inline constexpr std::uint32_t quad_count = 11; // the last quad_count patches are quads
+inline constexpr std::uint32_t quad_rule = 12;  // rt::QuadRule
+inline constexpr std::uint32_t words = 13;
 } // namespace param_word
 static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
-              param_word::pattern + 1 == param_word::words);
+              param_word::quad_rule + 1 == param_word::words);
 
 // Workgroup sizes. The setup pass's is the C++ limit's (rt::max_pipeline_patches counts in it); the prefix
 // sum is one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations); the emit passes run
@@ -58,7 +60,7 @@ inline constexpr std::uint32_t totals_overflow = 0xFFFFFFFFu;
 inline constexpr std::uint32_t patch_words = sizeof(PatchRecord) / 4;
 inline constexpr std::uint32_t vertex_words = sizeof(TessVertex) / 4;
 
-// Words of binding 4 for patch_count base triangles: the records, then the totals.
+// Words of binding 4 for patch_count patches: the records, then the totals.
 constexpr std::uint64_t patch_buffer_words(std::uint64_t patch_count) {
     return patch_count * patch_words + totals_words;
 }
@@ -76,8 +78,9 @@ constexpr std::uint32_t emit_workgroups(std::uint32_t patch_count,
     return patch_count < max_workgroups ? patch_count : max_workgroups;
 }
 
-// The params of a run over mesh's base triangles with options (quads and the split and D3D11 patterns are CPU
-// only: a host refuses them, see gpu_options_status), the emit range covering every patch.
+// The params of a run over mesh's patches (base triangles, then quads) with options (the split and D3D11
+// patterns are CPU only: a host refuses them, see gpu_options_status), the emit range covering every patch.
+// Binding 3 then holds mesh.indices (3 per triangle) followed by mesh.quad_indices (4 per quad).
 inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshView& mesh,
                                                                     const PipelineOptions& options) {
     const auto bits = [](float f) {
@@ -86,7 +89,8 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
         return u;
     };
     std::array<std::uint32_t, param_word::words> p{};
-    p[param_word::patch_count] = mesh.triangle_count;
+    const auto patches = static_cast<std::uint32_t>(mesh.patch_count()); // gpu_options_status checks the size
+    p[param_word::patch_count] = patches;
     p[param_word::surface] = static_cast<std::uint32_t>(options.surface.surface);
     p[param_word::alpha] = bits(options.surface.alpha);
     p[param_word::factor_scale] = bits(options.dice.factor_scale());
@@ -95,23 +99,27 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
     p[param_word::eye + 2] = bits(options.dice.eye.z);
     p[param_word::mesh_vertex_count] = mesh.vertex_count;
     p[param_word::first_patch] = 0;
-    p[param_word::end_patch] = mesh.triangle_count;
+    p[param_word::end_patch] = patches;
     p[param_word::pattern] = static_cast<std::uint32_t>(options.pattern);
+    p[param_word::quad_count] = mesh.quad_count;
+    p[param_word::quad_rule] = static_cast<std::uint32_t>(options.quad_rule);
     return p;
 }
 
-// Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (quads, the
-// uniform_split and D3D11 patterns, the PN-AEN surface, displacement, factors other than FactorMode::camera),
-// or too_many_patches.
+// Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (the
+// uniform_split and D3D11 patterns, the PN-AEN surface, displacement, factors other than FactorMode::camera)
+// and for a QuadRule outside its enum, or too_many_patches.
 constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
-    if (mesh.quad_count != 0 || options.displacement != nullptr) return PipelineStatus::bad_option;
+    if (options.displacement != nullptr) return PipelineStatus::bad_option;
+    if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
+        return PipelineStatus::bad_option;
     if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;
     if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
         return PipelineStatus::bad_option;
     if (options.surface.surface != Surface::flat && options.surface.surface != Surface::pn_triangles &&
         options.surface.surface != Surface::phong)
         return PipelineStatus::bad_option;
-    return check_pipeline_size(mesh.triangle_count, 0, 0);
+    return check_pipeline_size(mesh.patch_count(), 0, 0);
 }
 
 } // namespace ctess::rt::gpu

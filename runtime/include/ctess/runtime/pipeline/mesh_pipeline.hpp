@@ -28,7 +28,8 @@
 // pattern along a diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (the others);
 // quads are evaluated with every surface (evaluate_quad_surface inside, the exact edge rule of
 // evaluate_surface on their edges), so a mixed mesh is watertight where triangles meet quads. PN-AEN reads
-// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders have flat, PN and Phong triangles only. A
+// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders run triangles and quads with the flat, PN and
+// Phong surfaces. A
 // welded, indexed output: setup_welded / emit_welded_mesh at the end of this header.
 //
 // Bad input: a base triangle or quad with a vertex index >= vertex_count is culled (no vertices, no
@@ -57,7 +58,7 @@ namespace ctess::rt {
 inline constexpr unsigned mesh_vertex_floats = 8; // position xyz, normal xyz, uv
 
 // Patches are the base triangles first (patch t = triangle t), then the quads (patch triangle_count + q =
-// quad q). The GPU shaders read triangles only.
+// quad q), on the GPU too (binding 3 holds the triangles' indices, then the quads').
 struct MeshView {
     const float* vertices = nullptr; // mesh_vertex_floats per vertex
     std::uint32_t vertex_count = 0;
@@ -119,7 +120,7 @@ struct PipelineOptions {
     const Displacement* displacement = nullptr;
 };
 
-// A quad record (docs/algorithm.md §7.3) has kind == patch_kind_quad; the GPU does not read quads yet. Its
+// A quad record (docs/algorithm.md §7.3) has kind == patch_kind_quad (the shaders write the same words). Its
 // rotation (0-3) is the quad rule's: pattern corner q_k is the mesh quad's corner (k + rotation) % 4. It is
 // two halves, A = (q0, q1, q3) and B = (q2, q3, q1), both with the diagonal q1q3 as e1 and rotation 0: A's
 // line states (CP) or uniform factors are token/t16 as a triangle's, B's are setup[quad_setup_word::b_token
