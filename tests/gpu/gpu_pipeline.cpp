@@ -60,8 +60,9 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
     vk.upload(b_tables, tables.data(), tables.size() * 4);
     const std::size_t b_mesh = vk.create_buffer(scene.vertices.size() * 4);
     vk.upload(b_mesh, scene.vertices.data(), scene.vertices.size() * 4);
-    const std::size_t b_indices = vk.create_buffer(scene.indices.size() * 4);
-    vk.upload(b_indices, scene.indices.data(), scene.indices.size() * 4);
+    const std::vector<std::uint32_t> index_words = mesh_index_words(scene); // indices, then any adjacency
+    const std::size_t b_indices = vk.create_buffer(index_words.size() * 4);
+    vk.upload(b_indices, index_words.data(), index_words.size() * 4);
     const std::size_t b_patches = vk.create_buffer((std::size_t{n} * record_words + gen::totals_words) * 4);
     const std::size_t b_none = vk.create_buffer(16);
 
@@ -106,12 +107,13 @@ PipelineOutput run_vulkan(VkCompute& vk, const std::string& dir, unsigned max_fa
 }
 
 // Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[gen::param_word::words], vertex
-// floats, index count, then the vertex floats and the indices. Result file: "CTGO", patch words, vertex
-// words, index words, milliseconds (float bits), then the three arrays.
+// floats, index word count, then the vertex floats and the index words (binding 3: mesh_index_words). Result
+// file: "CTGO", patch words, vertex words, index words, milliseconds (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
                         RunLimits limits) {
     const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
+    const std::vector<std::uint32_t> index_words = mesh_index_words(scene);
     const std::string scene_path = work_file + ".scene";
     const std::string result_path = work_file + ".result";
     {
@@ -120,12 +122,12 @@ PipelineOutput run_dawn(const std::string& node, const std::string& script, cons
         f.write(reinterpret_cast<const char*>(head), sizeof head);
         f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
         const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
-                                       static_cast<std::uint32_t>(scene.indices.size())};
+                                       static_cast<std::uint32_t>(index_words.size())};
         f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);
         f.write(reinterpret_cast<const char*>(scene.vertices.data()),
                 static_cast<std::streamsize>(scene.vertices.size() * 4));
-        f.write(reinterpret_cast<const char*>(scene.indices.data()),
-                static_cast<std::streamsize>(scene.indices.size() * 4));
+        f.write(reinterpret_cast<const char*>(index_words.data()),
+                static_cast<std::streamsize>(index_words.size() * 4));
         if (!f) throw std::runtime_error("cannot write the scene file");
     }
     std::remove(result_path.c_str());
