@@ -28,8 +28,8 @@
 // pattern along a diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (the others);
 // quads are evaluated with every surface (evaluate_quad_surface inside, the exact edge rule of
 // evaluate_surface on their edges), so a mixed mesh is watertight where triangles meet quads. PN-AEN reads
-// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders have flat, PN, PN-AEN and Phong triangles, and
-// read the adjacency after the triangle indices (docs/shaders.md, "PN-AEN"). A welded, indexed output:
+// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders have flat, PN, PN-AEN and Phong triangles,
+// and read the adjacency after the triangle indices (docs/shaders.md, "PN-AEN"). A welded, indexed output:
 // setup_welded / emit_welded_mesh at the end of this header.
 //
 // Bad input: a base triangle or quad with a vertex index >= vertex_count is culled (no vertices, no

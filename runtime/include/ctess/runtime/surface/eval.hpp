@@ -9,10 +9,10 @@
 // Every CP edge point is exact and mirror-symmetric in 2^-24 units, so both sides also see the same
 // parameter. A corner (weight one) is copied. The shaders mirror these functions operation for operation.
 //
-// PN-AEN (McDonald and Kilgard 2010) on triangles runs in the shaders too (docs/shaders.md, "PN-AEN"); the quad
-// surfaces (Phong, PN quad, PN-AEN quad) are CPU-only for now (docs/algorithm.md §6). PN-AEN orders an edge by
-// position bits instead of mesh index: the two sides of a split-normal edge hold different vertices at the same
-// positions.
+// PN-AEN (McDonald and Kilgard 2010) on triangles runs in the shaders too (docs/shaders.md, "PN-AEN"); the
+// quad surfaces (Phong, PN quad, PN-AEN quad) are CPU-only for now (docs/algorithm.md §6). PN-AEN orders an
+// edge by position bits instead of mesh index: the two sides of a split-normal edge hold different vertices
+// at the same positions.
 #pragma once
 #include <cstdint>
 
