@@ -10,9 +10,10 @@
 
 layout(local_size_x = {{LOCAL_SIZE}}) in;
 
-// params: patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
-// patch range [first, end) that the emit passes cover (hosts may emit in batches), the pattern (0 CP, 1 uniform),
-// the quad count (the last patches; their 4 indices each follow the triangles' 3) and the quad rule
+// params (rt::gpu::param_word): patch count, surface (0 flat, 1 PN, 2 Phong, 3 PN-AEN), alpha, factor scale, eye xyz,
+// mesh vertex count, then the patch range [first, end) that the emit passes cover (hosts may emit in batches), the
+// pattern (0 CP, 1 uniform), the quad count (the last patches; their 4 indices each follow the triangles' 3) and the
+// quad rule
 layout(std430, set = 0, binding = 0) readonly buffer Params { uint params[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Tables { uint tables[]; };
 layout(std430, set = 0, binding = 2) readonly buffer MeshVertices { float mesh_vertices[]; };
@@ -483,10 +484,12 @@ vec3 normalize_or_zero(vec3 a) {
     if (!(len2 > 0.0)) return vec3(0.0);
     return (1.0 / sqrt(len2)) * a;
 }
-vec3 pn_edge_point(Corner i, Corner j) {
-    float w = dot3(j.position - i.position, i.normal);
-    return (1.0 / 3.0) * ((2.0 * i.position + j.position) - w * i.normal);
+// PN edge control point b_ij from position pi, normal ni and the far end pj (eval.cpp's pn_control).
+vec3 pn_control(vec3 pi, vec3 ni, vec3 pj) {
+    float w = dot3(pj - pi, ni);
+    return (1.0 / 3.0) * ((2.0 * pi + pj) - w * ni);
 }
+vec3 pn_edge_point(Corner i, Corner j) { return pn_control(i.position, i.normal, j.position); }
 vec3 pn_edge_normal(Corner i, Corner j) {
     vec3 d = j.position - i.position;
     float len2 = dot3(d, d);
@@ -501,6 +504,20 @@ struct SurfacePoint {
     vec3 normal;
     vec2 uv;
 };
+// The PN cubic at weights (w0, w1, w2) from its six edge control points b = {b210, b120, b021, b012, b102, b201}
+// (eval.cpp's pn_cubic; Vlachos et al. 2001): position pn and the quadratic normal field nn. PN and PN-AEN differ
+// only in b.
+void pn_cubic(Corner c0, Corner c1, Corner c2, vec3 b[6], float w0, float w1, float w2, out vec3 pn, out vec3 nn) {
+    vec3 e = (1.0 / 6.0) * (((b[0] + b[1]) + (b[2] + b[3])) + (b[4] + b[5]));
+    vec3 v = (1.0 / 3.0) * ((c0.position + c1.position) + c2.position);
+    vec3 b111 = e + 0.5 * (e - v);
+    float q0 = w0 * w0, q1 = w1 * w1, q2 = w2 * w2;
+    pn = (q0 * w0) * c0.position + (q1 * w1) * c1.position + (q2 * w2) * c2.position + (3.0 * q0 * w1) * b[0] +
+         (3.0 * q1 * w0) * b[1] + (3.0 * q1 * w2) * b[2] + (3.0 * q2 * w1) * b[3] + (3.0 * q2 * w0) * b[4] +
+         (3.0 * q0 * w2) * b[5] + (6.0 * w0 * w1 * w2) * b111;
+    nn = q0 * c0.normal + q1 * c1.normal + q2 * c2.normal + (w0 * w1) * pn_edge_normal(c0, c1) +
+         (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
+}
 SurfacePoint edge_surface(Corner a, Corner b, float s, float t, uint surface, float alpha) {
     SurfacePoint o;
     vec3 flat_p = s * a.position + t * b.position;
@@ -530,19 +547,10 @@ SurfacePoint interior_surface(Corner c0, Corner c1, Corner c2, float w0, float w
     o.uv = vec2(w0 * c0.uv.x + w1 * c1.uv.x + w2 * c2.uv.x, w0 * c0.uv.y + w1 * c1.uv.y + w2 * c2.uv.y);
     vec3 pos = flat_p, n = flat_n;
     if (surface == SURFACE_PN) {
-        vec3 b210 = pn_edge_point(c0, c1), b120 = pn_edge_point(c1, c0);
-        vec3 b021 = pn_edge_point(c1, c2), b012 = pn_edge_point(c2, c1);
-        vec3 b102 = pn_edge_point(c2, c0), b201 = pn_edge_point(c0, c2);
-        vec3 e = (1.0 / 6.0) * (((b210 + b120) + (b021 + b012)) + (b102 + b201));
-        vec3 v = (1.0 / 3.0) * ((c0.position + c1.position) + c2.position);
-        vec3 b111 = e + 0.5 * (e - v);
-        float q0 = w0 * w0, q1 = w1 * w1, q2 = w2 * w2;
-        vec3 pn = (q0 * w0) * c0.position + (q1 * w1) * c1.position + (q2 * w2) * c2.position +
-                  (3.0 * q0 * w1) * b210 + (3.0 * q1 * w0) * b120 + (3.0 * q1 * w2) * b021 +
-                  (3.0 * q2 * w1) * b012 + (3.0 * q2 * w0) * b102 + (3.0 * q0 * w2) * b201 +
-                  (6.0 * w0 * w1 * w2) * b111;
-        vec3 nn = q0 * c0.normal + q1 * c1.normal + q2 * c2.normal + (w0 * w1) * pn_edge_normal(c0, c1) +
-                  (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
+        vec3 b[6] = vec3[6](pn_edge_point(c0, c1), pn_edge_point(c1, c0), pn_edge_point(c1, c2),
+                            pn_edge_point(c2, c1), pn_edge_point(c2, c0), pn_edge_point(c0, c2));
+        vec3 pn, nn;
+        pn_cubic(c0, c1, c2, b, w0, w1, w2, pn, nn);
         pos = blend(flat_p, pn, alpha);
         n = blend(flat_n, nn, alpha);
     } else if (surface == SURFACE_PHONG) {
@@ -577,16 +585,109 @@ SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha)
     return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
 }
 
-// ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
-// pn_edge_point with the normal passed apart (pn_control on the CPU).
-vec3 pn_control(vec3 pi, vec3 ni, vec3 pj) {
-    float w = dot3(pj - pi, ni);
-    return (1.0 / 3.0) * ((2.0 * pi + pj) - w * ni);
+// ---- PN-AEN (eval.cpp's evaluate_surface_aen, docs/algorithm.md §6.1; McDonald and Kilgard 2010) ----
+// The neighbour's normals on edge e (corner e -> e + 1) of base triangle t, as mesh_pipeline.cpp's adjacent_edge
+// reads them: binding 3 holds, after the 3 x patch_count triangle indices, 12 words per triangle in
+// meshopt_generateTessellationIndexBuffer's layout, whose words 3 + 2e and 4 + 2e are the neighbour's two vertices
+// on edge e. Each is paired with the own corner of bit-identical position (either order). A boundary, an index
+// >= the mesh vertex count, words past the end of binding 3 or positions matching in neither order: the own
+// normals.
+bool same_bits(vec3 a, vec3 b) { return floatBitsToUint(a) == floatBitsToUint(b); }
+void adjacent_normals(uint t, uint e, Corner from_, Corner to_, out vec3 at_from, out vec3 at_to) {
+    at_from = from_.normal;
+    at_to = to_.normal;
+    uint at = 3u * triangle_count() + 4u * params[PARAM_QUAD_COUNT] + 12u * t + 3u + 2u * e;
+    if (at + 1u >= uint(mesh_indices.length())) return;
+    uint i = mesh_indices[at], j = mesh_indices[at + 1u];
+    uint n = params[PARAM_MESH_VERTEX_COUNT];
+    if (i >= n || j >= n) return;
+    Corner v0 = mesh_corner(i), v1 = mesh_corner(j);
+    if (same_bits(v0.position, from_.position) && same_bits(v1.position, to_.position)) {
+        at_from = v0.normal;
+        at_to = v1.normal;
+    } else if (same_bits(v1.position, from_.position) && same_bits(v0.position, to_.position)) {
+        at_from = v1.normal;
+        at_to = v0.normal;
+    }
 }
+// The mean of the PN control points built with both sides' normals: either side gets the same bits (x + y = y + x).
+vec3 aen_control(vec3 pi, vec3 ni, vec3 ni_adj, vec3 pj) {
+    return 0.5 * (pn_control(pi, ni, pj) + pn_control(pi, ni_adj, pj));
+}
+// Positions ordered by their bits as unsigned integers, x then y then z (split-normal sides differ in index).
+bool position_before(vec3 a, vec3 b) {
+    uvec3 ka = floatBitsToUint(a), kb = floatBitsToUint(b);
+    for (uint k = 0u; k < 3u; ++k)
+        if (ka[k] != kb[k]) return ka[k] < kb[k];
+    return false;
+}
+bool aen_first(Corner a, uint wa, Corner b, uint wb) {
+    if (same_bits(a.position, b.position)) return wa >= wb;
+    return position_before(a.position, b.position);
+}
+// x + 0.0f of the CPU (-0.0 becomes +0.0) on the bits: a shader compiler may fold an add of zero away.
+vec3 without_negative_zero(vec3 p) {
+    uvec3 b = floatBitsToUint(p);
+    return uintBitsToFloat(mix(b, uvec3(0u), equal(b, uvec3(0x80000000u))));
+}
+// A PN-AEN edge point: a first (aen_first), t measured from a; a_adj, b_adj the neighbour's normals at a and b.
+SurfacePoint aen_edge_surface(Corner a, vec3 a_adj, Corner b, vec3 b_adj, float s, float t, float alpha) {
+    SurfacePoint o;
+    vec3 flat_p = s * a.position + t * b.position;
+    vec3 flat_n = s * a.normal + t * b.normal;
+    o.uv = vec2(s * a.uv.x + t * b.uv.x, s * a.uv.y + t * b.uv.y);
+    vec3 bab = aen_control(a.position, a.normal, a_adj, b.position);
+    vec3 bba = aen_control(b.position, b.normal, b_adj, a.position);
+    float s2 = s * s, t2 = t * t;
+    vec3 pn = (s2 * s) * a.position + (3.0 * s2 * t) * bab + (3.0 * s * t2) * bba + (t2 * t) * b.position;
+    vec3 nn = s2 * a.normal + t2 * b.normal + (s * t) * pn_edge_normal(a, b);
+    o.position = without_negative_zero(blend(flat_p, pn, alpha));
+    o.normal = normalize_or_zero(blend(flat_n, nn, alpha));
+    return o;
+}
+// adj_from[e], adj_to[e]: the neighbour's normals at corners e and e + 1 (adjacent_normals).
+SurfacePoint evaluate_surface_aen(Corner c[3], vec3 adj_from[3], vec3 adj_to[3], uint w[3], float alpha) {
+    for (uint k = 0u; k < 3u; ++k) {
+        if (w[k] == FIXED_ONE) {
+            SurfacePoint o;
+            o.position = without_negative_zero(c[k].position);
+            o.normal = normalize_or_zero(c[k].normal);
+            o.uv = c[k].uv;
+            return o;
+        }
+    }
+    for (uint k = 0u; k < 3u; ++k) {
+        if (w[k] != 0u) continue;
+        uint i = (k + 1u) % 3u, j = (k + 2u) % 3u; // the edge opposite corner k is edge i: c[i] -> c[j]
+        if (aen_first(c[i], w[i], c[j], w[j]))
+            return aen_edge_surface(c[i], adj_from[i], c[j], adj_to[i], fixed_weight(w[i]), fixed_weight(w[j]), alpha);
+        return aen_edge_surface(c[j], adj_to[i], c[i], adj_from[i], fixed_weight(w[j]), fixed_weight(w[i]), alpha);
+    }
+    float w0 = fixed_weight(w[0]), w1 = fixed_weight(w[1]), w2 = fixed_weight(w[2]);
+    SurfacePoint o;
+    vec3 flat_p = w0 * c[0].position + w1 * c[1].position + w2 * c[2].position;
+    vec3 flat_n = w0 * c[0].normal + w1 * c[1].normal + w2 * c[2].normal;
+    o.uv = vec2(w0 * c[0].uv.x + w1 * c[1].uv.x + w2 * c[2].uv.x, w0 * c[0].uv.y + w1 * c[1].uv.y + w2 * c[2].uv.y);
+    vec3 b[6] = vec3[6](aen_control(c[0].position, c[0].normal, adj_from[0], c[1].position),
+                        aen_control(c[1].position, c[1].normal, adj_to[0], c[0].position),
+                        aen_control(c[1].position, c[1].normal, adj_from[1], c[2].position),
+                        aen_control(c[2].position, c[2].normal, adj_to[1], c[1].position),
+                        aen_control(c[2].position, c[2].normal, adj_from[2], c[0].position),
+                        aen_control(c[0].position, c[0].normal, adj_to[2], c[2].position));
+    vec3 pn, nn;
+    pn_cubic(c[0], c[1], c[2], b, w0, w1, w2, pn, nn);
+    o.position = without_negative_zero(blend(flat_p, pn, alpha));
+    o.normal = normalize_or_zero(blend(flat_n, nn, alpha));
+    return o;
+}
+
+// ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
 // A point strictly inside quad q0 q1 q2 q3 at (s, t) of its unit square: bilinear (flat, zeros as +0), Phong
 // (the bilinear point projected onto the corner tangent planes, blended bilinearly) or the PN bicubic patch
 // whose boundary is the PN triangles' edge curves, with the biquadratic normal field.
-SurfacePoint quad_interior(Corner q[4], uint s, uint t, uint surface, float alpha) {
+// PN-AEN (aen): the PN patch on PN-AEN edge control points, adj_from[k], adj_to[k] the neighbour's normals on edge k.
+SurfacePoint quad_interior(Corner q[4], vec3 adj_from[4], vec3 adj_to[4], bool aen, uint s, uint t, uint surface,
+                           float alpha) {
     float fs = fixed_weight(s), ft = fixed_weight(t);
     float gs = fixed_weight(FIXED_ONE - s), gt = fixed_weight(FIXED_ONE - t);
     float w[4] = float[4](gs * gt, fs * gt, fs * ft, gs * ft);
@@ -607,23 +708,34 @@ SurfacePoint quad_interior(Corner q[4], uint s, uint t, uint surface, float alph
         o.normal = normalize_or_zero(flat_n);
         return o;
     }
-    if (surface != SURFACE_PN) {
-        o.position = flat_p + vec3(0.0);
-        o.normal = normalize_or_zero(flat_n) + vec3(0.0);
-        o.uv = uv + vec2(0.0);
+    if (surface != SURFACE_PN && !aen) {
+        o.position = without_negative_zero(flat_p);
+        o.normal = without_negative_zero(normalize_or_zero(flat_n));
+        o.uv = without_negative_zero(vec3(uv, 0.0)).xy;
         return o;
     }
     // The Bezier net b[i][j] (i along s, j along t) at b[4 * i + j].
     vec3 b[16];
     b[0] = q[0].position; b[12] = q[1].position; b[15] = q[2].position; b[3] = q[3].position;
-    b[4] = pn_control(q[0].position, q[0].normal, q[1].position);
-    b[8] = pn_control(q[1].position, q[1].normal, q[0].position);
-    b[13] = pn_control(q[1].position, q[1].normal, q[2].position);
-    b[14] = pn_control(q[2].position, q[2].normal, q[1].position);
-    b[11] = pn_control(q[2].position, q[2].normal, q[3].position);
-    b[7] = pn_control(q[3].position, q[3].normal, q[2].position);
-    b[2] = pn_control(q[3].position, q[3].normal, q[0].position);
-    b[1] = pn_control(q[0].position, q[0].normal, q[3].position);
+    if (aen) {
+        b[4] = aen_control(q[0].position, q[0].normal, adj_from[0], q[1].position);
+        b[8] = aen_control(q[1].position, q[1].normal, adj_to[0], q[0].position);
+        b[13] = aen_control(q[1].position, q[1].normal, adj_from[1], q[2].position);
+        b[14] = aen_control(q[2].position, q[2].normal, adj_to[1], q[1].position);
+        b[11] = aen_control(q[2].position, q[2].normal, adj_from[2], q[3].position);
+        b[7] = aen_control(q[3].position, q[3].normal, adj_to[2], q[2].position);
+        b[2] = aen_control(q[3].position, q[3].normal, adj_from[3], q[0].position);
+        b[1] = aen_control(q[0].position, q[0].normal, adj_to[3], q[3].position);
+    } else {
+        b[4] = pn_control(q[0].position, q[0].normal, q[1].position);
+        b[8] = pn_control(q[1].position, q[1].normal, q[0].position);
+        b[13] = pn_control(q[1].position, q[1].normal, q[2].position);
+        b[14] = pn_control(q[2].position, q[2].normal, q[1].position);
+        b[11] = pn_control(q[2].position, q[2].normal, q[3].position);
+        b[7] = pn_control(q[3].position, q[3].normal, q[2].position);
+        b[2] = pn_control(q[3].position, q[3].normal, q[0].position);
+        b[1] = pn_control(q[0].position, q[0].normal, q[3].position);
+    }
     vec3 twist = (1.0 / 9.0) * ((q[0].position + q[2].position) - (q[1].position + q[3].position));
     b[5] = ((b[4] + b[1]) - q[0].position) + twist;
     b[9] = ((b[8] + b[13]) - q[1].position) - twist;
@@ -651,22 +763,31 @@ SurfacePoint quad_interior(Corner q[4], uint s, uint t, uint surface, float alph
         nn = nn + ct[j] * row;
     }
     o.position = blend(flat_p, pn, alpha);
+    if (aen) o.position = without_negative_zero(o.position);
     o.normal = normalize_or_zero(blend(flat_n, nn, alpha));
     return o;
 }
 // The surface point of (s, t) of a quad's unit square (quad_vertex on the CPU): a point on quad edge k goes
 // through evaluate_surface on (q_k, q_k+1, q_k+2) with weights (1 - r, r, 0), the very operations a triangle on
 // the other side of the edge runs; an inner point through quad_interior.
-SurfacePoint quad_surface(Corner q[4], uint s, uint t, uint surface, float alpha) {
+// PN-AEN: the edge point through evaluate_surface_aen with edge k's neighbours (the other two edges of the
+// triangle are its own boundary), adj_from and adj_to as for quad_interior.
+SurfacePoint quad_surface(Corner q[4], vec3 adj_from[4], vec3 adj_to[4], uint s, uint t, uint surface, float alpha) {
+    bool aen = surface == SURFACE_PN_AEN;
     bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
     uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
     for (uint k = 0u; k < 4u; ++k) {
         if (!on_edge[k]) continue;
         Corner tri[3] = Corner[3](q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
         uint w[3] = uint[3](FIXED_ONE - r[k], r[k], 0u);
+        if (aen) {
+            vec3 from3[3] = vec3[3](adj_from[k], tri[1].normal, tri[2].normal);
+            vec3 to3[3] = vec3[3](adj_to[k], tri[2].normal, tri[0].normal);
+            return evaluate_surface_aen(tri, from3, to3, w, alpha);
+        }
         return evaluate_surface(tri, w, surface, alpha);
     }
-    return quad_interior(q, s, t, surface, alpha);
+    return quad_interior(q, adj_from, adj_to, aen, s, t, surface, alpha);
 }
 
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
@@ -973,11 +1094,22 @@ void emit_quad_vertices(uint t, uint surface, float alpha) {
     // Pattern corner q_k is the mesh quad's corner (k + rotation) % 4.
     Corner q[4] = Corner[4](mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
                             mesh_corner(w[(3u + r) % 4u]));
+    // PN-AEN: pattern edge k is mesh edge m = (k + rotation) % 4, edge 0 or 1 of face triangle (q0, q1, q2)
+    // (adjacency block triangle_count + 2 quad) for m < 2, edge 1 or 2 of (q0, q2, q3) (the next block) after.
+    vec3 adj_from[4], adj_to[4];
+    uint face = triangle_count() + 2u * (t - triangle_count());
+    for (uint k = 0u; k < 4u; ++k) {
+        uint m = (k + r) % 4u;
+        adj_from[k] = q[k].normal;
+        adj_to[k] = q[(k + 1u) % 4u].normal;
+        if (surface == SURFACE_PN_AEN)
+            adjacent_normals(face + (m >= 2u ? 1u : 0u), m >= 2u ? m - 1u : m, q[k], q[(k + 1u) % 4u], adj_from[k], adj_to[k]);
+    }
     QuadHalves h = quad_halves(rec);
     uint first = patches[rec + REC_FIRST_VERTEX];
     for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
         uvec2 d = quad_vertex(h, i);
-        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, d.x, d.y, surface, alpha));
+        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, adj_from, adj_to, d.x, d.y, surface, alpha));
     }
 }
 
@@ -1102,13 +1234,19 @@ void ctess_emit_vertices() {
         uint rot = patches[rec + REC_ROTATION];
         uint first = patches[rec + REC_FIRST_VERTEX];
         Corner c[3] = Corner[3](mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
+        bool aen = surface == SURFACE_PN_AEN;
+        vec3 adj_from[3] = vec3[3](c[0].normal, c[1].normal, c[2].normal);
+        vec3 adj_to[3] = vec3[3](c[1].normal, c[2].normal, c[0].normal);
+        for (uint e = 0u; aen && e < 3u; ++e) adjacent_normals(t, e, c[e], c[(e + 1u) % 3u], adj_from[e], adj_to[e]);
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uvec2 d = uniform_ ? uniform_vertex(words, i) : patch_vertex(p, i);
             // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
             uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y);
             uint bw[3];
             for (uint k = 0u; k < 3u; ++k) bw[(k + rot) % 3u] = pw[k];
-            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], evaluate_surface(c, bw, surface, alpha));
+            SurfacePoint sp =
+                aen ? evaluate_surface_aen(c, adj_from, adj_to, bw, alpha) : evaluate_surface(c, bw, surface, alpha);
+            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], sp);
         }
     }
 }

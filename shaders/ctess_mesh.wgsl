@@ -7,9 +7,10 @@
 
 {{CONSTANTS}}
 
-// params (rt::gpu::param_word): patch count, surface (0 flat, 1 PN, 2 Phong), alpha, factor scale, eye xyz, mesh vertex count, then the
-// patch range [first, end) that the emit passes cover (hosts may emit in batches), the pattern (0 CP, 1 uniform),
-// the quad count (the last patches; their 4 indices each follow the triangles' 3) and the quad rule
+// params (rt::gpu::param_word): patch count, surface (0 flat, 1 PN, 2 Phong, 3 PN-AEN), alpha, factor scale, eye xyz,
+// mesh vertex count, then the patch range [first, end) that the emit passes cover (hosts may emit in batches), the
+// pattern (0 CP, 1 uniform), the quad count (the last patches; their 4 indices each follow the triangles' 3) and the
+// quad rule
 @group(0) @binding(0) var<storage, read> params: array<u32>;
 @group(0) @binding(1) var<storage, read> tables: array<u32>;
 @group(0) @binding(2) var<storage, read> mesh_vertices: array<f32>;
@@ -482,10 +483,12 @@ fn normalize_or_zero(a: vec3<f32>) -> vec3<f32> {
     if (!(len2 > 0.0)) { return vec3<f32>(0.0); }
     return (1.0 / sqrt(len2)) * a;
 }
-fn pn_edge_point(i: Corner, j: Corner) -> vec3<f32> {
-    let w = dot3(j.position - i.position, i.normal);
-    return (1.0 / 3.0) * ((2.0 * i.position + j.position) - w * i.normal);
+// PN edge control point b_ij from position pi, normal ni and the far end pj (eval.cpp's pn_control).
+fn pn_control(pi: vec3<f32>, ni: vec3<f32>, pj: vec3<f32>) -> vec3<f32> {
+    let w = dot3(pj - pi, ni);
+    return (1.0 / 3.0) * ((2.0 * pi + pj) - w * ni);
 }
+fn pn_edge_point(i: Corner, j: Corner) -> vec3<f32> { return pn_control(i.position, i.normal, j.position); }
 fn pn_edge_normal(i: Corner, j: Corner) -> vec3<f32> {
     let d = j.position - i.position;
     let len2 = dot3(d, d);
@@ -500,6 +503,21 @@ struct SurfacePoint {
     position: vec3<f32>,
     normal: vec3<f32>,
     uv: vec2<f32>,
+}
+// The PN cubic at weights (w0, w1, w2) from its six edge control points b = {b210, b120, b021, b012, b102, b201}
+// (eval.cpp's pn_cubic; Vlachos et al. 2001): the position and the quadratic normal field, in a SurfacePoint whose
+// uv is unused. PN and PN-AEN differ only in b.
+fn pn_cubic(c0: Corner, c1: Corner, c2: Corner, b: array<vec3<f32>, 6>, w0: f32, w1: f32, w2: f32) -> SurfacePoint {
+    let e = (1.0 / 6.0) * (((b[0] + b[1]) + (b[2] + b[3])) + (b[4] + b[5]));
+    let v = (1.0 / 3.0) * ((c0.position + c1.position) + c2.position);
+    let b111 = e + 0.5 * (e - v);
+    let q0 = w0 * w0; let q1 = w1 * w1; let q2 = w2 * w2;
+    let pn = (q0 * w0) * c0.position + (q1 * w1) * c1.position + (q2 * w2) * c2.position + (3.0 * q0 * w1) * b[0] +
+             (3.0 * q1 * w0) * b[1] + (3.0 * q1 * w2) * b[2] + (3.0 * q2 * w1) * b[3] + (3.0 * q2 * w0) * b[4] +
+             (3.0 * q0 * w2) * b[5] + (6.0 * w0 * w1 * w2) * b111;
+    let nn = q0 * c0.normal + q1 * c1.normal + q2 * c2.normal + (w0 * w1) * pn_edge_normal(c0, c1) +
+             (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
+    return SurfacePoint(pn, nn, vec2<f32>(0.0));
 }
 fn edge_surface(a: Corner, b: Corner, s: f32, t: f32, surface: u32, alpha: f32) -> SurfacePoint {
     let flat_p = s * a.position + t * b.position;
@@ -528,21 +546,11 @@ fn interior_surface(c0: Corner, c1: Corner, c2: Corner, w0: f32, w1: f32, w2: f3
     var pos = flat_p;
     var n = flat_n;
     if (surface == SURFACE_PN) {
-        let b210 = pn_edge_point(c0, c1); let b120 = pn_edge_point(c1, c0);
-        let b021 = pn_edge_point(c1, c2); let b012 = pn_edge_point(c2, c1);
-        let b102 = pn_edge_point(c2, c0); let b201 = pn_edge_point(c0, c2);
-        let e = (1.0 / 6.0) * (((b210 + b120) + (b021 + b012)) + (b102 + b201));
-        let v = (1.0 / 3.0) * ((c0.position + c1.position) + c2.position);
-        let b111 = e + 0.5 * (e - v);
-        let q0 = w0 * w0; let q1 = w1 * w1; let q2 = w2 * w2;
-        let pn = (q0 * w0) * c0.position + (q1 * w1) * c1.position + (q2 * w2) * c2.position +
-                 (3.0 * q0 * w1) * b210 + (3.0 * q1 * w0) * b120 + (3.0 * q1 * w2) * b021 +
-                 (3.0 * q2 * w1) * b012 + (3.0 * q2 * w0) * b102 + (3.0 * q0 * w2) * b201 +
-                 (6.0 * w0 * w1 * w2) * b111;
-        let nn = q0 * c0.normal + q1 * c1.normal + q2 * c2.normal + (w0 * w1) * pn_edge_normal(c0, c1) +
-                 (w1 * w2) * pn_edge_normal(c1, c2) + (w2 * w0) * pn_edge_normal(c2, c0);
-        pos = blend(flat_p, pn, alpha);
-        n = blend(flat_n, nn, alpha);
+        let pn = pn_cubic(c0, c1, c2, array<vec3<f32>, 6>(pn_edge_point(c0, c1), pn_edge_point(c1, c0),
+                          pn_edge_point(c1, c2), pn_edge_point(c2, c1), pn_edge_point(c2, c0), pn_edge_point(c0, c2)),
+                          w0, w1, w2);
+        pos = blend(flat_p, pn.position, alpha);
+        n = blend(flat_n, pn.normal, alpha);
     } else if (surface == SURFACE_PHONG) {
         let ph = (w0 * w0) * c0.position + (w1 * w1) * c1.position + (w2 * w2) * c2.position +
                  (w0 * w1) * (phong_project(c1.position, c0) + phong_project(c0.position, c1)) +
@@ -569,17 +577,110 @@ fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: 
     return interior_surface(c[0], c[1], c[2], fixed_weight(w[0]), fixed_weight(w[1]), fixed_weight(w[2]), surface, alpha);
 }
 
-// ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
-// pn_edge_point with the normal passed apart (pn_control on the CPU).
-fn pn_control(pi: vec3<f32>, ni: vec3<f32>, pj: vec3<f32>) -> vec3<f32> {
-    let w = dot3(pj - pi, ni);
-    return (1.0 / 3.0) * ((2.0 * pi + pj) - w * ni);
+// ---- PN-AEN (eval.cpp's evaluate_surface_aen, docs/algorithm.md §6.1; McDonald and Kilgard 2010) ----
+// The neighbour's normals on edge e (corner e -> e + 1) of base triangle t, as mesh_pipeline.cpp's adjacent_edge
+// reads them: binding 3 holds, after the 3 x patch_count triangle indices, 12 words per triangle in
+// meshopt_generateTessellationIndexBuffer's layout, whose words 3 + 2e and 4 + 2e are the neighbour's two vertices
+// on edge e. Each is paired with the own corner of bit-identical position (either order). A boundary, an index
+// >= the mesh vertex count, words past the end of binding 3 or positions matching in neither order: the own
+// normals (at_from, at_to).
+struct EdgeNormals {
+    at_from: vec3<f32>,
+    at_to: vec3<f32>,
 }
+fn same_bits(a: vec3<f32>, b: vec3<f32>) -> bool { return all(bitcast<vec3<u32>>(a) == bitcast<vec3<u32>>(b)); }
+fn adjacent_normals(t: u32, e: u32, from_: Corner, to_: Corner) -> EdgeNormals {
+    let own = EdgeNormals(from_.normal, to_.normal);
+    let at = 3u * triangle_count() + 4u * params[PARAM_QUAD_COUNT] + 12u * t + 3u + 2u * e;
+    if (at + 1u >= arrayLength(&mesh_indices)) { return own; }
+    let i = mesh_indices[at]; let j = mesh_indices[at + 1u];
+    let n = params[PARAM_MESH_VERTEX_COUNT];
+    if (i >= n || j >= n) { return own; }
+    let v0 = mesh_corner(i); let v1 = mesh_corner(j);
+    if (same_bits(v0.position, from_.position) && same_bits(v1.position, to_.position)) {
+        return EdgeNormals(v0.normal, v1.normal);
+    }
+    if (same_bits(v1.position, from_.position) && same_bits(v0.position, to_.position)) {
+        return EdgeNormals(v1.normal, v0.normal);
+    }
+    return own;
+}
+// The mean of the PN control points built with both sides' normals: either side gets the same bits (x + y = y + x).
+fn aen_control(pi: vec3<f32>, ni: vec3<f32>, ni_adj: vec3<f32>, pj: vec3<f32>) -> vec3<f32> {
+    return 0.5 * (pn_control(pi, ni, pj) + pn_control(pi, ni_adj, pj));
+}
+// Positions ordered by their bits as unsigned integers, x then y then z (split-normal sides differ in index).
+fn position_before(a: vec3<f32>, b: vec3<f32>) -> bool {
+    let ka = bitcast<vec3<u32>>(a); let kb = bitcast<vec3<u32>>(b);
+    for (var k = 0u; k < 3u; k++) {
+        if (ka[k] != kb[k]) { return ka[k] < kb[k]; }
+    }
+    return false;
+}
+fn aen_first(a: Corner, wa: u32, b: Corner, wb: u32) -> bool {
+    if (same_bits(a.position, b.position)) { return wa >= wb; }
+    return position_before(a.position, b.position);
+}
+// x + 0.0f of the CPU (-0.0 becomes +0.0) on the bits: a shader compiler may fold an add of zero away.
+fn without_negative_zero(p: vec3<f32>) -> vec3<f32> {
+    let b = bitcast<vec3<u32>>(p);
+    return bitcast<vec3<f32>>(select(b, vec3<u32>(0u), b == vec3<u32>(0x80000000u)));
+}
+// A PN-AEN edge point: a first (aen_first), t measured from a; a_adj, b_adj the neighbour's normals at a and b.
+fn aen_edge_surface(a: Corner, a_adj: vec3<f32>, b: Corner, b_adj: vec3<f32>, s: f32, t: f32, alpha: f32) -> SurfacePoint {
+    let flat_p = s * a.position + t * b.position;
+    let flat_n = s * a.normal + t * b.normal;
+    let uv = vec2<f32>(s * a.uv.x + t * b.uv.x, s * a.uv.y + t * b.uv.y);
+    let bab = aen_control(a.position, a.normal, a_adj, b.position);
+    let bba = aen_control(b.position, b.normal, b_adj, a.position);
+    let s2 = s * s; let t2 = t * t;
+    let pn = (s2 * s) * a.position + (3.0 * s2 * t) * bab + (3.0 * s * t2) * bba + (t2 * t) * b.position;
+    let nn = s2 * a.normal + t2 * b.normal + (s * t) * pn_edge_normal(a, b);
+    return SurfacePoint(without_negative_zero(blend(flat_p, pn, alpha)), normalize_or_zero(blend(flat_n, nn, alpha)), uv);
+}
+// en[e]: the neighbour's normals on edge e (adjacent_normals).
+fn evaluate_surface_aen(corners: array<Corner, 3>, edges: array<EdgeNormals, 3>, weights: array<u32, 3>, alpha: f32) -> SurfacePoint {
+    var c = corners;
+    var en = edges;
+    var w = weights;
+    for (var k = 0u; k < 3u; k++) {
+        if (w[k] == FIXED_ONE) {
+            return SurfacePoint(without_negative_zero(c[k].position), normalize_or_zero(c[k].normal), c[k].uv);
+        }
+    }
+    for (var k = 0u; k < 3u; k++) {
+        if (w[k] != 0u) { continue; }
+        let i = (k + 1u) % 3u; let j = (k + 2u) % 3u; // the edge opposite corner k is edge i: c[i] -> c[j]
+        if (aen_first(c[i], w[i], c[j], w[j])) {
+            return aen_edge_surface(c[i], en[i].at_from, c[j], en[i].at_to, fixed_weight(w[i]), fixed_weight(w[j]), alpha);
+        }
+        return aen_edge_surface(c[j], en[i].at_to, c[i], en[i].at_from, fixed_weight(w[j]), fixed_weight(w[i]), alpha);
+    }
+    let w0 = fixed_weight(w[0]); let w1 = fixed_weight(w[1]); let w2 = fixed_weight(w[2]);
+    let flat_p = w0 * c[0].position + w1 * c[1].position + w2 * c[2].position;
+    let flat_n = w0 * c[0].normal + w1 * c[1].normal + w2 * c[2].normal;
+    let uv = vec2<f32>(w0 * c[0].uv.x + w1 * c[1].uv.x + w2 * c[2].uv.x, w0 * c[0].uv.y + w1 * c[1].uv.y + w2 * c[2].uv.y);
+    let pn = pn_cubic(c[0], c[1], c[2],
+                      array<vec3<f32>, 6>(aen_control(c[0].position, c[0].normal, en[0].at_from, c[1].position),
+                                          aen_control(c[1].position, c[1].normal, en[0].at_to, c[0].position),
+                                          aen_control(c[1].position, c[1].normal, en[1].at_from, c[2].position),
+                                          aen_control(c[2].position, c[2].normal, en[1].at_to, c[1].position),
+                                          aen_control(c[2].position, c[2].normal, en[2].at_from, c[0].position),
+                                          aen_control(c[0].position, c[0].normal, en[2].at_to, c[2].position)),
+                      w0, w1, w2);
+    return SurfacePoint(without_negative_zero(blend(flat_p, pn.position, alpha)),
+                        normalize_or_zero(blend(flat_n, pn.normal, alpha)), uv);
+}
+
+// ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
 // A point strictly inside quad q0 q1 q2 q3 at (s, t) of its unit square: bilinear (flat, zeros as +0), Phong
 // (the bilinear point projected onto the corner tangent planes, blended bilinearly) or the PN bicubic patch
 // whose boundary is the PN triangles' edge curves, with the biquadratic normal field.
-fn quad_interior(corners: array<Corner, 4>, s: u32, t: u32, surface: u32, alpha: f32) -> SurfacePoint {
+// PN-AEN (aen): the PN patch on PN-AEN edge control points, en[k] the neighbour's normals on edge k.
+fn quad_interior(corners: array<Corner, 4>, edges: array<EdgeNormals, 4>, aen: bool, s: u32, t: u32, surface: u32,
+                 alpha: f32) -> SurfacePoint {
     var q = corners;
+    var en = edges;
     let fs = fixed_weight(s); let ft = fixed_weight(t);
     let gs = fixed_weight(FIXED_ONE - s); let gt = fixed_weight(FIXED_ONE - t);
     var w = array<f32, 4>(gs * gt, fs * gt, fs * ft, gs * ft);
@@ -595,20 +696,32 @@ fn quad_interior(corners: array<Corner, 4>, s: u32, t: u32, surface: u32, alpha:
         for (var k = 0u; k < 4u; k++) { ph = ph + w[k] * phong_project(flat_p, q[k]); }
         return SurfacePoint(blend(flat_p, ph, alpha), normalize_or_zero(flat_n), uv);
     }
-    if (surface != SURFACE_PN) {
-        return SurfacePoint(flat_p + vec3<f32>(0.0), normalize_or_zero(flat_n) + vec3<f32>(0.0), uv + vec2<f32>(0.0));
+    if (surface != SURFACE_PN && !aen) {
+        let uv_zeros = without_negative_zero(vec3<f32>(uv, 0.0));
+        return SurfacePoint(without_negative_zero(flat_p), without_negative_zero(normalize_or_zero(flat_n)), uv_zeros.xy);
     }
     // The Bezier net b[i][j] (i along s, j along t) at b[4 * i + j].
     var b: array<vec3<f32>, 16>;
     b[0] = q[0].position; b[12] = q[1].position; b[15] = q[2].position; b[3] = q[3].position;
-    b[4] = pn_control(q[0].position, q[0].normal, q[1].position);
-    b[8] = pn_control(q[1].position, q[1].normal, q[0].position);
-    b[13] = pn_control(q[1].position, q[1].normal, q[2].position);
-    b[14] = pn_control(q[2].position, q[2].normal, q[1].position);
-    b[11] = pn_control(q[2].position, q[2].normal, q[3].position);
-    b[7] = pn_control(q[3].position, q[3].normal, q[2].position);
-    b[2] = pn_control(q[3].position, q[3].normal, q[0].position);
-    b[1] = pn_control(q[0].position, q[0].normal, q[3].position);
+    if (aen) {
+        b[4] = aen_control(q[0].position, q[0].normal, en[0].at_from, q[1].position);
+        b[8] = aen_control(q[1].position, q[1].normal, en[0].at_to, q[0].position);
+        b[13] = aen_control(q[1].position, q[1].normal, en[1].at_from, q[2].position);
+        b[14] = aen_control(q[2].position, q[2].normal, en[1].at_to, q[1].position);
+        b[11] = aen_control(q[2].position, q[2].normal, en[2].at_from, q[3].position);
+        b[7] = aen_control(q[3].position, q[3].normal, en[2].at_to, q[2].position);
+        b[2] = aen_control(q[3].position, q[3].normal, en[3].at_from, q[0].position);
+        b[1] = aen_control(q[0].position, q[0].normal, en[3].at_to, q[3].position);
+    } else {
+        b[4] = pn_control(q[0].position, q[0].normal, q[1].position);
+        b[8] = pn_control(q[1].position, q[1].normal, q[0].position);
+        b[13] = pn_control(q[1].position, q[1].normal, q[2].position);
+        b[14] = pn_control(q[2].position, q[2].normal, q[1].position);
+        b[11] = pn_control(q[2].position, q[2].normal, q[3].position);
+        b[7] = pn_control(q[3].position, q[3].normal, q[2].position);
+        b[2] = pn_control(q[3].position, q[3].normal, q[0].position);
+        b[1] = pn_control(q[0].position, q[0].normal, q[3].position);
+    }
     let twist = (1.0 / 9.0) * ((q[0].position + q[2].position) - (q[1].position + q[3].position));
     b[5] = ((b[4] + b[1]) - q[0].position) + twist;
     b[9] = ((b[8] + b[13]) - q[1].position) - twist;
@@ -635,21 +748,31 @@ fn quad_interior(corners: array<Corner, 4>, s: u32, t: u32, surface: u32, alpha:
         for (var i = 0u; i < 3u; i++) { row = row + cs[i] * nq[3u * i + j]; }
         nn = nn + ct[j] * row;
     }
-    return SurfacePoint(blend(flat_p, pn, alpha), normalize_or_zero(blend(flat_n, nn, alpha)), uv);
+    let position = blend(flat_p, pn, alpha);
+    return SurfacePoint(select(position, without_negative_zero(position), aen), normalize_or_zero(blend(flat_n, nn, alpha)), uv);
 }
 // The surface point of (s, t) of a quad's unit square (quad_vertex on the CPU): a point on quad edge k goes
 // through evaluate_surface on (q_k, q_k+1, q_k+2) with weights (1 - r, r, 0), the very operations a triangle on
 // the other side of the edge runs; an inner point through quad_interior.
-fn quad_surface(corners: array<Corner, 4>, s: u32, t: u32, surface: u32, alpha: f32) -> SurfacePoint {
+// PN-AEN: the edge point through evaluate_surface_aen with edge k's neighbours (the other two edges of the
+// triangle are its own boundary), en[k] as for quad_interior.
+fn quad_surface(corners: array<Corner, 4>, edges: array<EdgeNormals, 4>, s: u32, t: u32, surface: u32, alpha: f32) -> SurfacePoint {
     var q = corners;
+    var en = edges;
+    let aen = surface == SURFACE_PN_AEN;
     var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
     var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
     for (var k = 0u; k < 4u; k++) {
         if (!on_edge[k]) { continue; }
-        return evaluate_surface(array<Corner, 3>(q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]),
-                                array<u32, 3>(FIXED_ONE - r[k], r[k], 0u), surface, alpha);
+        let tri = array<Corner, 3>(q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
+        let w = array<u32, 3>(FIXED_ONE - r[k], r[k], 0u);
+        if (aen) {
+            let own = array<EdgeNormals, 3>(en[k], EdgeNormals(tri[1].normal, tri[2].normal), EdgeNormals(tri[2].normal, tri[0].normal));
+            return evaluate_surface_aen(tri, own, w, alpha);
+        }
+        return evaluate_surface(tri, w, surface, alpha);
     }
-    return quad_interior(q, s, t, surface, alpha);
+    return quad_interior(q, en, aen, s, t, surface, alpha);
 }
 
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
@@ -1023,15 +1146,26 @@ fn emit_quad_vertices(t: u32, lane: u32, surface: u32, alpha: f32) {
     var w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
     let r = patches[rec + REC_ROTATION];
     // Pattern corner q_k is the mesh quad's corner (k + rotation) % 4.
-    let q = array<Corner, 4>(mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
+    var q = array<Corner, 4>(mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
                              mesh_corner(w[(3u + r) % 4u]));
+    // PN-AEN: pattern edge k is mesh edge m = (k + rotation) % 4, edge 0 or 1 of face triangle (q0, q1, q2)
+    // (adjacency block triangle_count + 2 quad) for m < 2, edge 1 or 2 of (q0, q2, q3) (the next block) after.
+    var en: array<EdgeNormals, 4>;
+    let face = triangle_count() + 2u * (t - triangle_count());
+    for (var k = 0u; k < 4u; k++) {
+        let m = (k + r) % 4u;
+        let from_ = q[k];
+        let to_ = q[(k + 1u) % 4u];
+        en[k] = EdgeNormals(from_.normal, to_.normal);
+        if (surface == SURFACE_PN_AEN) { en[k] = adjacent_normals(face + select(0u, 1u, m >= 2u), select(m, m - 1u, m >= 2u), from_, to_); }
+    }
     var pa: Patch;
     var pb: Patch;
     let h = quad_halves(rec, &pa, &pb);
     let first = patches[rec + REC_FIRST_VERTEX];
     for (var i = lane; i < count; i += EMIT_GROUP) {
         let d = quad_vertex(h, &pa, &pb, i);
-        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, d.x, d.y, surface, alpha));
+        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, en, d.x, d.y, surface, alpha));
     }
 }
 
@@ -1112,6 +1246,12 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
         let rot = patches[rec + REC_ROTATION];
         let first = patches[rec + REC_FIRST_VERTEX];
         let c = array<Corner, 3>(mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
+        let aen = surface == SURFACE_PN_AEN;
+        var en: array<EdgeNormals, 3>;
+        if (aen) {
+            en = array<EdgeNormals, 3>(adjacent_normals(t, 0u, c[0], c[1]), adjacent_normals(t, 1u, c[1], c[2]),
+                                       adjacent_normals(t, 2u, c[2], c[0]));
+        }
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
             var d: vec2<u32>;
             if (uniform_) { d = uniform_vertex(words, i); } else { d = patch_vertex(&p, i); }
@@ -1119,7 +1259,9 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
             var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
             var bw: array<u32, 3>;
             for (var k = 0u; k < 3u; k++) { bw[(k + rot) % 3u] = pw[k]; }
-            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], evaluate_surface(c, bw, surface, alpha));
+            var sp: SurfacePoint;
+            if (aen) { sp = evaluate_surface_aen(c, en, bw, alpha); } else { sp = evaluate_surface(c, bw, surface, alpha); }
+            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], sp);
         }
     }
 }

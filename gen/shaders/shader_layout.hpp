@@ -142,6 +142,7 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"SURFACE_PN", static_cast<std::uint32_t>(rt::Surface::pn_triangles),
                    "rt::Surface::pn_triangles"},
     ShaderConstant{"SURFACE_PHONG", static_cast<std::uint32_t>(rt::Surface::phong), "rt::Surface::phong"},
+    ShaderConstant{"SURFACE_PN_AEN", static_cast<std::uint32_t>(rt::Surface::pn_aen), "rt::Surface::pn_aen"},
     // workgroups, dispatch limits and the totals
     ShaderConstant{"SETUP_GROUP", setup_workgroup, "rt::patch_setup_workgroup"},
     ShaderConstant{"SCAN_GROUP", scan_workgroup, "rt::gpu::scan_workgroup"},

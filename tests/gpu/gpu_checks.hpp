@@ -21,10 +21,25 @@ struct CrackReport {
     std::size_t unmatched_points = 0;    // an edge point that the other side of the edge does not have
 };
 
-// Every vertex with a zero base weight lies on a base edge: key it by (lower mesh index, higher mesh index,
+// Each vertex's position id: the first vertex with a bit-identical position (models::Adjacency::position_ids'
+// rule), so that the two sides of a seam (different vertices at one position) name the same edge.
+inline std::vector<std::uint32_t> position_ids(const Scene& scene) {
+    using Position = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
+    std::map<Position, std::uint32_t> first;
+    std::vector<std::uint32_t> ids(scene.vertices.size() / rt::mesh_vertex_floats);
+    for (std::uint32_t v = 0; v < ids.size(); ++v) {
+        std::uint32_t p[3];
+        std::memcpy(p, &scene.vertices[std::size_t{v} * rt::mesh_vertex_floats], sizeof p);
+        ids[v] = first.try_emplace({p[0], p[1], p[2]}, v).first->second;
+    }
+    return ids;
+}
+
+// Every vertex with a zero base weight lies on a base edge: key it by (lower position id, higher position id,
 // parameter from the lower one) and require both patches of the edge to produce the same keys with the same
-// position bits.
+// position bits. Without duplicated positions the ids are the mesh indices.
 inline CrackReport crack_check(const Scene& scene, const PipelineOutput& out) {
+    const std::vector<std::uint32_t> id = position_ids(scene);
     using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
     using Position = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
     std::map<Key, std::vector<std::pair<std::uint32_t, Position>>> points; // key -> (patch, position bits)
@@ -33,7 +48,8 @@ inline CrackReport crack_check(const Scene& scene, const PipelineOutput& out) {
     const std::uint32_t n = scene.patch_count();
     for (std::uint32_t t = 0; t < n; ++t) {
         const std::uint32_t* rec = &out.patches[std::size_t{t} * patch_words];
-        const std::uint32_t w[3] = {scene.indices[3 * t], scene.indices[3 * t + 1], scene.indices[3 * t + 2]};
+        const std::uint32_t w[3] = {id[scene.indices[3 * t]], id[scene.indices[3 * t + 1]],
+                                    id[scene.indices[3 * t + 2]]};
         for (unsigned k = 0; k < 3; ++k) ++edge_users[std::minmax(w[k], w[(k + 1) % 3])];
         std::map<Key, Position> mine; // the provoking-layout copies repeat points within a patch
         for (std::uint32_t i = 0; i < rec[7]; ++i) {

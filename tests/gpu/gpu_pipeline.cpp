@@ -50,12 +50,13 @@ PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits 
 }
 
 // Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[gen::param_word::words], vertex
-// floats, index count, then the vertex floats and the indices. Result file: "CTGO", patch words, vertex
-// words, index words, milliseconds (float bits), then the three arrays.
+// floats, index word count, then the vertex floats and the index words (binding 3: mesh_index_words). Result
+// file: "CTGO", patch words, vertex words, index words, milliseconds (float bits), then the three arrays.
 PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
                         unsigned max_factor, const Scene& scene, const std::string& work_file,
                         RunLimits limits) {
     const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
+    const std::vector<std::uint32_t> index_words = mesh_index_words(scene);
     const std::string scene_path = work_file + ".scene";
     const std::string result_path = work_file + ".result";
     {
@@ -63,7 +64,6 @@ PipelineOutput run_dawn(const std::string& node, const std::string& script, cons
         const std::uint32_t head[] = {0x43535443u, 3u};
         f.write(reinterpret_cast<const char*>(head), sizeof head);
         f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
-        const std::vector<std::uint32_t> index_words = scene.index_words();
         const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
                                        static_cast<std::uint32_t>(index_words.size())};
         f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);

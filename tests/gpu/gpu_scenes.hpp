@@ -1,5 +1,5 @@
 // Test meshes for the GPU pipeline tests, in the mesh pipeline's vertex layout (8 floats: position, normal,
-// uv).
+// uv). split_normal_icosphere needs ctess::models linked (meshoptimizer's adjacency).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include <ctess/runtime/models/adjacency.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 namespace ctess::gpu_test {
@@ -16,23 +17,31 @@ struct Scene {
     std::vector<float> vertices;
     std::vector<std::uint32_t> indices; // 3 per triangle
     std::vector<std::uint32_t> quads;   // 4 per quad (the patches after the triangles)
+    // Empty, or 12 per face triangle (the triangles, then each quad's (q0, q1, q2) and (q0, q2, q3)):
+    // meshopt_generateTessellationIndexBuffer's layout (rt::MeshView::adjacency), which PN-AEN reads.
+    std::vector<std::uint32_t> adjacency;
     rt::PipelineOptions options;
 
     rt::MeshView view() const {
-        return {vertices.data(), static_cast<std::uint32_t>(vertices.size() / rt::mesh_vertex_floats),
-                indices.data(),  static_cast<std::uint32_t>(indices.size() / 3),
-                quads.data(),    static_cast<std::uint32_t>(quads.size() / 4)};
+        rt::MeshView v{vertices.data(), static_cast<std::uint32_t>(vertices.size() / rt::mesh_vertex_floats),
+                       indices.data(),  static_cast<std::uint32_t>(indices.size() / 3),
+                       quads.data(),    static_cast<std::uint32_t>(quads.size() / 4)};
+        if (!adjacency.empty()) v.adjacency = adjacency.data();
+        return v;
     }
     std::uint32_t patch_count() const {
         return static_cast<std::uint32_t>(indices.size() / 3 + quads.size() / 4);
     }
-    // Binding 3 as the hosts upload it: the triangles' indices, then the quads'.
-    std::vector<std::uint32_t> index_words() const {
-        std::vector<std::uint32_t> words = indices;
-        words.insert(words.end(), quads.begin(), quads.end());
-        return words;
-    }
 };
+
+// The words a host uploads as binding 3 (docs/shaders.md, "Passes and bindings"): the triangles' indices, the
+// quads', then the adjacency when the scene has it.
+inline std::vector<std::uint32_t> mesh_index_words(const Scene& scene) {
+    std::vector<std::uint32_t> words = scene.indices;
+    words.insert(words.end(), scene.quads.begin(), scene.quads.end());
+    words.insert(words.end(), scene.adjacency.begin(), scene.adjacency.end());
+    return words;
+}
 
 namespace detail {
 inline std::uint32_t hash(std::uint32_t x) { // small integer hash for deterministic jitter
@@ -141,6 +150,40 @@ inline Scene icosphere(unsigned subdivisions, rt::Surface surface, float dice_ra
     s.options.dice.dice_rate = dice_rate;
     s.options.dice.projection_scale = 800.0f;
     s.options.surface = {surface, 1.0f};
+    return s;
+}
+
+// icosphere() cut into the 20 regions of its base icosahedron's faces, each region with its own copies of its
+// vertices: along a region border one position carries two vertices, always with different uvs (a uv seam)
+// and, where either region is odd, with different normals (a hard edge: odd regions tilt their normals their
+// own way). Closed by position; adjacency from models::build_adjacency (meshoptimizer), as `ctess mesh`
+// computes it.
+inline Scene split_normal_icosphere(unsigned subdivisions, rt::Surface surface, float dice_rate) {
+    const Scene smooth = icosphere(subdivisions, surface, dice_rate);
+    Scene s;
+    s.options = smooth.options;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> copy; // (vertex, region) -> new vertex
+    for (std::size_t k = 0; k < smooth.indices.size(); ++k) {
+        // Subdivision puts a face's four children in a row: triangle t lies in base face t / 4^subdivisions.
+        const auto region = static_cast<std::uint32_t>((k / 3) >> (2 * subdivisions));
+        const std::uint32_t v = smooth.indices[k];
+        const auto [it, fresh] = copy.try_emplace({v, region}, static_cast<std::uint32_t>(copy.size()));
+        s.indices.push_back(it->second);
+        if (!fresh) continue;
+        const float* a = &smooth.vertices[std::size_t{v} * rt::mesh_vertex_floats];
+        rt::Vec3 n = {a[3], a[4], a[5]};
+        if (region % 2 == 1) {
+            const std::uint32_t seed = 1000 + 3 * (v * 20 + region);
+            n = rt::normalize_or_zero(n + 0.5f * rt::Vec3{detail::unit(seed) - 0.5f,
+                                                          detail::unit(seed + 1) - 0.5f,
+                                                          detail::unit(seed + 2) - 0.5f});
+        }
+        detail::push_vertex(s, {a[0], a[1], a[2]}, n, a[6] + 0.05f * static_cast<float>(region), a[7]);
+    }
+    models::Model model;
+    model.vertices = s.vertices;
+    model.triangles = s.indices;
+    s.adjacency = models::build_adjacency(model).tessellation_indices;
     return s;
 }
 

@@ -4,9 +4,13 @@
 // maximum factors run in every build. No test skips: a missing driver or node module is a failure.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <ctess/runtime/cp/table_set.hpp>
 
@@ -60,7 +64,10 @@ PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name
 #endif
 
 const char* surface_name(rt::Surface s) {
-    return s == rt::Surface::flat ? "flat" : s == rt::Surface::pn_triangles ? "PN" : "Phong";
+    return s == rt::Surface::flat           ? "flat"
+           : s == rt::Surface::pn_triangles ? "PN"
+           : s == rt::Surface::pn_aen       ? "PN-AEN"
+                                            : "Phong";
 }
 
 const char* pattern_name(rt::Pattern p) {
@@ -290,3 +297,197 @@ TEST_CASE("GPU crack test, quads: a mixed torus stays closed on the GPU, both qu
     check_mixed_torus(256, rt::Surface::flat, rt::Pattern::uniform, rt::QuadRule::longer_pair);
     check_mixed_torus(64, rt::Surface::pn_triangles, rt::Pattern::uniform, rt::QuadRule::as_labelled);
 }
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+// PN-AEN (docs/algorithm.md §6.1) reads the adjacency after the triangle indices in binding 3
+// (docs/shaders.md). The scene: a split-normal icosphere of 320 patches, every region border a uv seam and
+// most of them hard edges, adjacency from meshoptimizer.
+namespace {
+
+Scene aen_scene(unsigned max_factor, rt::Surface surface, rt::Pattern pattern) {
+    // Max 256: 80 larger patches, whose factors pass 64.
+    Scene scene = max_factor == 64 ? split_normal_icosphere(2, surface, 6.0f)
+                                   : split_normal_icosphere(1, surface, 5.0f);
+    scene.options.pattern = pattern;
+    return scene;
+}
+
+// Position words of the GPU output that differ in bits from the CPU's.
+std::size_t position_bit_differences(const PipelineOutput& cpu, const PipelineOutput& gpu) {
+    std::size_t n = 0;
+    for (std::size_t v = 0;
+         v + vertex_words <= cpu.vertices.size() && v + vertex_words <= gpu.vertices.size();
+         v += vertex_words)
+        for (std::size_t k = 2; k < 5; ++k) n += cpu.vertices[v + k] != gpu.vertices[v + k];
+    return n;
+}
+
+} // namespace
+
+TEST_CASE("GPU PN-AEN: split-normal icosphere with adjacency, CP and uniform, max 64 and 256: the CPU's "
+          "output, watertight") {
+    for (unsigned max_factor : {64u, 256u}) {
+        for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+            const Scene scene = aen_scene(max_factor, rt::Surface::pn_aen, pattern);
+            INFO("max " << max_factor << ", " << pattern_name(pattern));
+            REQUIRE(scene.adjacency.size() == 12 * std::size_t{scene.patch_count()});
+            const PipelineOutput gpu =
+                run_gpu(max_factor, scene, pattern == rt::Pattern::uniform ? "aen_uniform" : "aen");
+            const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
+            const Comparison c = compare(cpu, gpu);
+            const CrackReport r = crack_check(scene, gpu);
+            std::printf(
+                "%s, max %u, %s, PN-AEN split-normal icosphere: %u patches, %u vertices, %zu shared "
+                "edges, %zu edge points, %zu cracks; max position error %.2g, %zu of %u position words "
+                "differ in bits from the CPU\n",
+                backend_name, max_factor, pattern_name(pattern), scene.patch_count(), cpu.total_vertices(),
+                r.shared_edges, r.edge_points, r.position_mismatches, c.max_position_error,
+                position_bit_differences(cpu, gpu), 3 * cpu.total_vertices());
+            INFO(c.first_difference);
+            CHECK(c.equal());
+            CHECK(r.shared_edges == scene.patch_count() * 3 / 2); // closed by position
+            CHECK(r.edge_points > 3 * r.shared_edges);
+            CHECK(r.unmatched_points == 0);
+            CHECK(r.position_mismatches == 0);
+            float largest = 0.0f; // the base edge factors, before clamping
+            for (std::uint32_t t = 0; t < scene.patch_count(); ++t)
+                for (unsigned k = 0; k < 3; ++k)
+                    largest =
+                        std::max(largest, bits_float(cpu.patches[std::size_t{t} * patch_words + 11 + k]));
+            CHECK(largest > (max_factor == 64 ? 16.0f : 64.0f));
+        }
+    }
+}
+
+TEST_CASE("GPU PN-AEN: plain PN on the same split-normal icosphere cracks") {
+    const Scene scene = aen_scene(64, rt::Surface::pn_triangles, rt::Pattern::cp);
+    const PipelineOutput gpu = run_gpu(64, scene, "aen_pn");
+    const CrackReport r = crack_check(scene, gpu);
+    std::printf("%s, max 64, CP, PN split-normal icosphere: %zu of %zu edge points crack\n", backend_name,
+                r.position_mismatches, r.edge_points);
+    CHECK(r.shared_edges == scene.patch_count() * 3 / 2);
+    CHECK(r.position_mismatches > r.edge_points / 10); // the hard edges bend differently from each side
+    const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+}
+
+TEST_CASE("GPU PN-AEN: an adjacency index past the vertex count, or no adjacency, makes the edge a boundary, "
+          "as on the CPU") {
+    const Scene good = aen_scene(64, rt::Surface::pn_aen, rt::Pattern::cp);
+    const auto vertex_count = static_cast<std::uint32_t>(good.vertices.size() / rt::mesh_vertex_floats);
+    // Two hard edges of different triangles: a neighbour's vertex has another normal than the own corner at
+    // its position.
+    const auto floats = [&good](std::uint32_t v, unsigned at) {
+        return &good.vertices[std::size_t{v} * rt::mesh_vertex_floats + at];
+    };
+    std::vector<std::pair<std::uint32_t, unsigned>> hard; // (triangle, edge)
+    for (std::uint32_t t = 0; t < good.patch_count() && hard.size() < 2; ++t)
+        for (unsigned e = 0; e < 3; ++e) {
+            bool other_normal = false;
+            for (unsigned k = 0; k < 2; ++k) {
+                const std::uint32_t adj = good.adjacency[12 * t + 3 + 2 * e + k];
+                for (unsigned j = 0; j < 2; ++j) {
+                    const std::uint32_t own = good.indices[3 * t + (e + j) % 3];
+                    other_normal = other_normal || (std::memcmp(floats(adj, 0), floats(own, 0), 12) == 0 &&
+                                                    std::memcmp(floats(adj, 3), floats(own, 3), 12) != 0);
+                }
+            }
+            if (other_normal) {
+                hard.emplace_back(t, e);
+                break;
+            }
+        }
+    REQUIRE(hard.size() == 2);
+    Scene bad = good, boundary = good;
+    // The first: its second vertex one past the end; the second: both the largest index.
+    bad.adjacency[12 * hard[0].first + 4 + 2 * hard[0].second] = vertex_count;
+    bad.adjacency[12 * hard[1].first + 3 + 2 * hard[1].second] = 0xFFFFFFFFu;
+    bad.adjacency[12 * hard[1].first + 4 + 2 * hard[1].second] = 0xFFFFFFFFu;
+    // The documented result (docs/shaders.md): those edges as boundaries, their own two corners.
+    for (const auto& [t, e] : hard)
+        for (unsigned k = 0; k < 2; ++k)
+            boundary.adjacency[12 * t + 3 + 2 * e + k] = good.indices[3 * t + (e + k) % 3];
+    const PipelineOutput cpu = run_cpu(rt::cp_tables_64, bad);
+    const PipelineOutput gpu = run_gpu(64, bad, "aen_bad");
+    const Comparison c = compare(cpu, gpu);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+    // The CPU's result is the boundary form's, bit for bit, and not the good adjacency's (the edges are
+    // hard).
+    const bool as_boundary = cpu.vertices == run_cpu(rt::cp_tables_64, boundary).vertices;
+    const bool as_good = cpu.vertices == run_cpu(rt::cp_tables_64, good).vertices;
+    CHECK(as_boundary);
+    CHECK_FALSE(as_good);
+    // Binding 3 without adjacency words: every edge a boundary, the CPU's MeshView::adjacency = null.
+    Scene none = good;
+    none.adjacency.clear();
+    const Comparison n = compare(run_cpu(rt::cp_tables_64, none), run_gpu(64, none, "aen_none"));
+    INFO(n.first_difference);
+    CHECK(n.equal());
+}
+#endif
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+namespace {
+// The mixed torus with every face on its own vertex copies, each with its own tilted normal: every edge is a
+// hard edge and a uv seam; adjacency from meshoptimizer (models::build_adjacency), quads included.
+Scene faceted_mixed_torus(rt::Surface surface) {
+    const pipeline_fixtures::Model smooth = pipeline_fixtures::torus(16, 8, pipeline_fixtures::Faces::mixed);
+    Scene s;
+    std::uint32_t face = 0;
+    const auto copy = [&](std::uint32_t v) {
+        const float* a = &smooth.vertices[std::size_t{v} * rt::mesh_vertex_floats];
+        const std::uint32_t seed = 7 * (v * 97 + face);
+        const rt::Vec3 n =
+            rt::normalize_or_zero(rt::Vec3{a[3], a[4], a[5]} +
+                                  0.4f * rt::Vec3{detail::unit(seed) - 0.5f, detail::unit(seed + 1) - 0.5f,
+                                                  detail::unit(seed + 2) - 0.5f});
+        detail::push_vertex(s, {a[0], a[1], a[2]}, n, a[6] + 0.01f * static_cast<float>(face), a[7]);
+        return static_cast<std::uint32_t>(s.vertices.size() / rt::mesh_vertex_floats - 1);
+    };
+    for (std::size_t k = 0; k < smooth.triangles.size(); k += 3, ++face)
+        for (unsigned c = 0; c < 3; ++c) s.indices.push_back(copy(smooth.triangles[k + c]));
+    for (std::size_t k = 0; k < smooth.quads.size(); k += 4, ++face)
+        for (unsigned c = 0; c < 4; ++c) s.quads.push_back(copy(smooth.quads[k + c]));
+    models::Model model;
+    model.vertices = s.vertices;
+    model.triangles = s.indices;
+    model.quads = s.quads;
+    s.adjacency = models::build_adjacency(model).tessellation_indices;
+    s.options.surface = {surface, 1.0f};
+    s.options.dice.eye = {2.0f, 3.0f, 9.0f};
+    s.options.dice.projection_scale = 300.0f;
+    return s;
+}
+
+bool closed_by_position(const PipelineOutput& out) {
+    std::vector<rt::TessVertex> vertices(out.total_vertices());
+    std::memcpy(static_cast<void*>(vertices.data()), out.vertices.data(),
+                vertices.size() * sizeof(rt::TessVertex));
+    return pipeline_fixtures::closed_manifold(
+        pipeline_fixtures::directed_edges(out.indices, pipeline_fixtures::weld_ids(vertices, false)));
+}
+} // namespace
+
+TEST_CASE(
+    "GPU PN-AEN, quads: a faceted mixed torus (every edge hard) is the CPU's output and closed; PN opens") {
+    for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+        Scene scene = faceted_mixed_torus(rt::Surface::pn_aen);
+        scene.options.pattern = pattern;
+        REQUIRE(scene.adjacency.size() == 12 * (scene.indices.size() / 3 + scene.quads.size() / 2));
+        const PipelineOutput gpu =
+            run_gpu(64, scene, pattern == rt::Pattern::uniform ? "aen_quads_uniform" : "aen_quads");
+        const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+        std::printf("%s, max 64, %s, PN-AEN faceted mixed torus (%zu quads): %u vertices; max position error "
+                    "%.2g\n",
+                    backend_name, pattern_name(pattern), scene.quads.size() / 4, gpu.total_vertices(),
+                    c.max_position_error);
+        INFO(pattern_name(pattern) << ": " << c.first_difference);
+        CHECK(c.equal());
+        CHECK(closed_by_position(gpu));
+    }
+    Scene pn = faceted_mixed_torus(rt::Surface::pn_triangles);
+    CHECK_FALSE(closed_by_position(run_gpu(64, pn, "aen_quads_pn")));
+}
+#endif

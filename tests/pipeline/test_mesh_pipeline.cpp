@@ -202,6 +202,38 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
     }
 }
 
+// Two triangles meeting along a hard edge: A = (0, 1, 2), B = (3, 4, 5), vertex 3 at vertex 2's position and
+// 4 at 1's, with other normals; the adjacency in meshopt_generateTessellationIndexBuffer's layout, written
+// out.
+TEST_CASE("mesh pipeline, PN-AEN bad input: an adjacency index past the vertex count is a boundary") {
+    Scene scene;
+    const float corners[6][rt::mesh_vertex_floats] = {
+        {0, 0, 0, 0, 0, 1, 0, 0},          {1, 0, 0, 0, 0, 1, 1, 0},
+        {0, 1, 0, 0, 0, 1, 0, 1},          {0, 1, 0, 0.6f, 0.2f, 0.5f, 0, 0},
+        {1, 0, 0, 0.6f, 0.2f, 0.5f, 1, 1}, {1, 1, 0.5f, 0.6f, 0.2f, 0.5f, 0, 1},
+    };
+    scene.vertices.assign(&corners[0][0], &corners[0][0] + 6 * rt::mesh_vertex_floats);
+    scene.indices = {0, 1, 2, 3, 4, 5};
+    scene.adjacency = {0, 1, 2, 0, 1, 4, 3, 2, 0, 0, 1, 2,  // A: edge 1 (1 -> 2) borders B's (4, 3)
+                       3, 4, 5, 2, 1, 4, 5, 5, 3, 3, 4, 5}; // B: edge 0 (3 -> 4) borders A's (2, 1)
+    scene.options.dice = {{0.5f, 0.5f, 3.0f}, 200.0f, 2.0f};
+    scene.options.surface = {rt::Surface::pn_aen, 1.0f};
+    Scene bad = scene, boundary = scene;
+    bad.adjacency[5] = 6;                                // one past the end
+    bad.adjacency[15] = bad.adjacency[16] = 0xFFFFFFFFu; // both
+    boundary.adjacency[5] = 1, boundary.adjacency[6] = 2;
+    boundary.adjacency[15] = 3, boundary.adjacency[16] = 4;
+    const PipelineOutput good_out = run_cpu(rt::cp_tables_64, scene),
+                         bad_out = run_cpu(rt::cp_tables_64, bad);
+    const PipelineOutput boundary_out = run_cpu(rt::cp_tables_64, boundary);
+    CHECK(bad_out.patches == boundary_out.patches);
+    CHECK(bad_out.indices == boundary_out.indices);
+    const bool as_boundary = bad_out.vertices == boundary_out.vertices;
+    const bool as_good = bad_out.vertices == good_out.vertices;
+    CHECK(as_boundary);
+    CHECK_FALSE(as_good); // the hard edge's averaged control points are gone
+}
+
 TEST_CASE("setup block: counts equal CpPatch's for every line-state triple; skips fit their words") {
     for (unsigned max_factor : {64u, 256u}) {
         const rt::CpTableSet& tables = tables_for(max_factor);

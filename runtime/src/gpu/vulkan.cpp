@@ -418,11 +418,21 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
     const std::size_t vertex_bytes = std::size_t{mesh.vertex_count} * rt::mesh_vertex_floats * 4;
     const Device::Buffer b_mesh = make(vertex_bytes, mesh.vertices, vertex_bytes);
-    // Binding 3: the triangles' 3 indices each, then the quads' 4.
+    // Binding 3: the triangles' 3 indices each, the quads' 4, then for PN-AEN the adjacency's 12 per face
+    // triangle (docs/shaders.md, "PN-AEN"; without it every edge is a boundary, as on the CPU).
+    const bool aen = params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
     const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
-    const Device::Buffer b_indices = make(triangle_bytes + quad_bytes, mesh.indices, triangle_bytes);
-    if (quad_bytes != 0)
-        std::memcpy(static_cast<char*>(b_indices.mapped) + triangle_bytes, mesh.quad_indices, quad_bytes);
+    const std::size_t adjacency_bytes = aen ? (std::size_t{n - quads} + 2 * std::size_t{quads}) * 48 : 0;
+    const Device::Buffer b_indices =
+        make(triangle_bytes + quad_bytes + adjacency_bytes, mesh.indices, triangle_bytes);
+    auto* index_bytes = static_cast<char*>(b_indices.mapped);
+    if (quad_bytes != 0) std::memcpy(index_bytes + triangle_bytes, mesh.quad_indices, quad_bytes);
+    if (aen) {
+        // The first n - quads triangles' blocks, then the quads' (after all mesh.triangle_count triangles').
+        std::memcpy(index_bytes + triangle_bytes + quad_bytes, mesh.adjacency, std::size_t{n - quads} * 48);
+        std::memcpy(index_bytes + triangle_bytes + quad_bytes + std::size_t{n - quads} * 48,
+                    mesh.adjacency + std::size_t{mesh.triangle_count} * 12, std::size_t{quads} * 96);
+    }
     const Device::Buffer b_patches = make(patch_words * 4, nullptr, 0);
     const Device::Buffer b_none = make(16, nullptr, 0);
 

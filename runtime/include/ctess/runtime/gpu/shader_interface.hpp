@@ -80,7 +80,9 @@ constexpr std::uint32_t emit_workgroups(std::uint32_t patch_count,
 
 // The params of a run over mesh's patches (base triangles, then quads) with options (the split and D3D11
 // patterns are CPU only: a host refuses them, see gpu_options_status), the emit range covering every patch.
-// Binding 3 then holds mesh.indices (3 per triangle) followed by mesh.quad_indices (4 per quad).
+// Binding 3 then holds mesh.indices (3 per triangle) followed by mesh.quad_indices (4 per quad) and, for
+// PN-AEN, mesh.adjacency (12 per face triangle: the triangles, then each quad's two; docs/shaders.md,
+// "PN-AEN").
 inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshView& mesh,
                                                                     const PipelineOptions& options) {
     const auto bits = [](float f) {
@@ -107,7 +109,7 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
 }
 
 // Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (the
-// uniform_split and D3D11 patterns, the PN-AEN surface, displacement, factors other than FactorMode::camera)
+// uniform_split and D3D11 patterns, displacement, factors other than FactorMode::camera)
 // and for a QuadRule outside its enum, or too_many_patches.
 constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
     if (options.displacement != nullptr) return PipelineStatus::bad_option;
@@ -116,8 +118,9 @@ constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const Pipeline
     if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;
     if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
         return PipelineStatus::bad_option;
-    if (options.surface.surface != Surface::flat && options.surface.surface != Surface::pn_triangles &&
-        options.surface.surface != Surface::phong)
+    const Surface surface = options.surface.surface;
+    if (surface != Surface::flat && surface != Surface::pn_triangles && surface != Surface::phong &&
+        surface != Surface::pn_aen)
         return PipelineStatus::bad_option;
     return check_pipeline_size(mesh.patch_count(), 0, 0);
 }

@@ -28,9 +28,9 @@
 // pattern along a diagonal chosen by PipelineOptions::quad_rule (CP) or the shorter diagonal (the others);
 // quads are evaluated with every surface (evaluate_quad_surface inside, the exact edge rule of
 // evaluate_surface on their edges), so a mixed mesh is watertight where triangles meet quads. PN-AEN reads
-// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders run triangles and quads with the flat, PN and
-// Phong surfaces. A
-// welded, indexed output: setup_welded / emit_welded_mesh at the end of this header.
+// MeshView::adjacency (docs/algorithm.md §6.1); the GPU shaders run triangles and quads with the flat, PN,
+// PN-AEN and Phong surfaces, and read the adjacency after the triangle and quad indices (docs/shaders.md,
+// "PN-AEN"). A welded, indexed output: setup_welded / emit_welded_mesh at the end of this header.
 //
 // Bad input: a base triangle or quad with a vertex index >= vertex_count is culled (no vertices, no
 // triangles); factors follow tess_factor.hpp and CpPatch's clamping (NaN/inf positions give NaN/inf factors:

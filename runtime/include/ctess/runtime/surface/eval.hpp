@@ -9,8 +9,8 @@
 // Every CP edge point is exact and mirror-symmetric in 2^-24 units, so both sides also see the same
 // parameter. A corner (weight one) is copied. The shaders mirror these functions operation for operation.
 //
-// The shaders run the quad surfaces (flat, Phong, PN quad) too; PN-AEN (McDonald and Kilgard 2010) is CPU-only
-// for now (docs/algorithm.md §6). PN-AEN orders an edge by position bits instead of mesh index: the two sides of a
+// The shaders run PN-AEN (McDonald and Kilgard 2010) and the quad surfaces (flat, Phong, PN quad, PN-AEN quad)
+// too (docs/shaders.md). PN-AEN orders an edge by position bits instead of mesh index: the two sides of a
 // split-normal edge hold different vertices at the same positions.
 #pragma once
 #include <cstdint>
