@@ -587,7 +587,7 @@ SurfacePoint evaluate_surface(Corner c[3], uint w[3], uint surface, float alpha)
 
 // ---- PN-AEN (eval.cpp's evaluate_surface_aen, docs/algorithm.md §6.1; McDonald and Kilgard 2010) ----
 // The neighbour's normals on edge e (corner e -> e + 1) of base triangle t, as mesh_pipeline.cpp's adjacent_edge
-// reads them: binding 3 holds, after the 3 x patch_count triangle indices, 12 words per triangle in
+// reads them: binding 3 holds, after the 3 x T triangle and 4 x Q quad indices, 12 words per face triangle in
 // meshopt_generateTessellationIndexBuffer's layout, whose words 3 + 2e and 4 + 2e are the neighbour's two vertices
 // on edge e. Each is paired with the own corner of bit-identical position (either order). A boundary, an index
 // >= the mesh vertex count, words past the end of binding 3 or positions matching in neither order: the own
@@ -1005,18 +1005,18 @@ void setup_one_quad(uint t) {
         uvec2 ca = uniform_setup(ia, words);
         counts = saturating_add(ca, uniform_setup(ib, words));
     } else {
-        uvec2 sa[3], sb[3];
-        for (uint k = 0u; k < 3u; ++k) {
-            sa[k] = line_state(fa[k]);
-            sb[k] = line_state(fb[k]);
-            patches[rec + REC_TOKEN + k] = sa[k].x;
-            patches[rec + REC_T16 + k] = sa[k].y;
-            patches[rec + SETUP + QSETUP_B_TOKEN + k] = sb[k].x;
-            patches[rec + SETUP + QSETUP_B_T16 + k] = sb[k].y;
+        // One loop over the halves: one copy of patch_setup in the compiled pass, not two.
+        counts = uvec2(0u);
+        for (uint side = 0u; side < 2u; ++side) {
+            uvec2 st[3];
+            for (uint k = 0u; k < 3u; ++k) {
+                st[k] = line_state(side == 0u ? fa[k] : fb[k]);
+                patches[rec + (side == 0u ? REC_TOKEN : SETUP + QSETUP_B_TOKEN) + k] = st[k].x;
+                patches[rec + (side == 0u ? REC_T16 : SETUP + QSETUP_B_T16) + k] = st[k].y;
+            }
+            Patch half_patch = patch_setup(st[0], st[1], st[2]);
+            counts = saturating_add(counts, uvec2(half_patch.vertices, half_patch.triangles));
         }
-        Patch a = patch_setup(sa[0], sa[1], sa[2]);
-        Patch b = patch_setup(sb[0], sb[1], sb[2]);
-        counts = saturating_add(uvec2(a.vertices, a.triangles), uvec2(b.vertices, b.triangles));
     }
     patches[rec + REC_VERTEX_COUNT] = counts.x;
     patches[rec + REC_TRIANGLE_COUNT] = counts.y;
@@ -1051,8 +1051,11 @@ QuadHalves quad_halves(uint rec) {
         h.vertices_a = ca.x;
         h.triangles_a = ca.y;
     } else {
-        h.a = patch_setup(quad_half_state(rec, 0u, 0u), quad_half_state(rec, 0u, 1u), quad_half_state(rec, 0u, 2u));
-        h.b = patch_setup(quad_half_state(rec, 1u, 0u), quad_half_state(rec, 1u, 1u), quad_half_state(rec, 1u, 2u));
+        for (uint side = 0u; side < 2u; ++side) { // one copy of patch_setup in the compiled pass
+            Patch half_patch = patch_setup(quad_half_state(rec, side, 0u), quad_half_state(rec, side, 1u),
+                                           quad_half_state(rec, side, 2u));
+            if (side == 0u) h.a = half_patch; else h.b = half_patch;
+        }
         h.vertices_a = h.a.vertices;
         h.triangles_a = h.a.triangles;
     }

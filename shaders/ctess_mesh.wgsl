@@ -579,7 +579,7 @@ fn evaluate_surface(corners: array<Corner, 3>, weights: array<u32, 3>, surface: 
 
 // ---- PN-AEN (eval.cpp's evaluate_surface_aen, docs/algorithm.md §6.1; McDonald and Kilgard 2010) ----
 // The neighbour's normals on edge e (corner e -> e + 1) of base triangle t, as mesh_pipeline.cpp's adjacent_edge
-// reads them: binding 3 holds, after the 3 x patch_count triangle indices, 12 words per triangle in
+// reads them: binding 3 holds, after the 3 x T triangle and 4 x Q quad indices, 12 words per face triangle in
 // meshopt_generateTessellationIndexBuffer's layout, whose words 3 + 2e and 4 + 2e are the neighbour's two vertices
 // on edge e. Each is paired with the own corner of bit-identical position (either order). A boundary, an index
 // >= the mesh vertex count, words past the end of binding 3 or positions matching in neither order: the own
@@ -1057,19 +1057,18 @@ fn setup_one_quad(t: u32) {
         var words: vec3<u32>;
         counts = saturating_add(uniform_setup(ia, &words), uniform_setup(ib, &words));
     } else {
-        var sa: array<vec2<u32>, 3>;
-        var sb: array<vec2<u32>, 3>;
-        for (var k = 0u; k < 3u; k++) {
-            sa[k] = line_state(fa[k]);
-            sb[k] = line_state(fb[k]);
-            patches[rec + REC_TOKEN + k] = sa[k].x;
-            patches[rec + REC_T16 + k] = sa[k].y;
-            patches[rec + SETUP + QSETUP_B_TOKEN + k] = sb[k].x;
-            patches[rec + SETUP + QSETUP_B_T16 + k] = sb[k].y;
+        // One loop over the halves: one copy of patch_setup in the compiled pass, not two.
+        counts = vec2<u32>(0u);
+        for (var side = 0u; side < 2u; side++) {
+            var st: array<vec2<u32>, 3>;
+            for (var k = 0u; k < 3u; k++) {
+                st[k] = line_state(select(fb[k], fa[k], side == 0u));
+                patches[rec + select(SETUP + QSETUP_B_TOKEN, REC_TOKEN, side == 0u) + k] = st[k].x;
+                patches[rec + select(SETUP + QSETUP_B_T16, REC_T16, side == 0u) + k] = st[k].y;
+            }
+            let half_patch = patch_setup(st[0], st[1], st[2]);
+            counts = saturating_add(counts, vec2<u32>(half_patch.vertices, half_patch.triangles));
         }
-        let a = patch_setup(sa[0], sa[1], sa[2]);
-        let b = patch_setup(sb[0], sb[1], sb[2]);
-        counts = saturating_add(vec2<u32>(a.vertices, a.triangles), vec2<u32>(b.vertices, b.triangles));
     }
     patches[rec + REC_VERTEX_COUNT] = counts.x;
     patches[rec + REC_TRIANGLE_COUNT] = counts.y;
@@ -1098,8 +1097,10 @@ fn quad_halves(rec: u32, a: ptr<function, Patch>, b: ptr<function, Patch>) -> Qu
         h.vertices_a = ca.x;
         h.triangles_a = ca.y;
     } else {
-        *a = patch_setup(quad_half_state(rec, 0u, 0u), quad_half_state(rec, 0u, 1u), quad_half_state(rec, 0u, 2u));
-        *b = patch_setup(quad_half_state(rec, 1u, 0u), quad_half_state(rec, 1u, 1u), quad_half_state(rec, 1u, 2u));
+        for (var side = 0u; side < 2u; side++) { // one copy of patch_setup in the compiled pass
+            let half_patch = patch_setup(quad_half_state(rec, side, 0u), quad_half_state(rec, side, 1u), quad_half_state(rec, side, 2u));
+            if (side == 0u) { *a = half_patch; } else { *b = half_patch; }
+        }
         h.vertices_a = (*a).vertices;
         h.triangles_a = (*a).triangles;
     }

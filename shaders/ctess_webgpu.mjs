@@ -139,21 +139,28 @@ export class MeshPipeline {
     // quads), surface ('flat', 'pn', 'phong' or the code), alpha, factorScale, eye: [x, y, z], meshVertexCount,
     // first, end, pattern ('cp', 'uniform' or the code), quadCount (the last patches; meshIndices holds the
     // triangles' 3 indices each, then the quads' 4), quadRule ('longer-pair', the default, or 'as-labelled')}.
+    // Surface names: 'flat', 'pn', 'phong', 'pn-aen'. An unknown name throws.
     params(f, extra = 0) {
         const C = this.constants;
-        const code = (value, prefix, names) => (typeof value === 'number' ? value : C[`${prefix}_${names[value] ?? value.toUpperCase()}`]);
+        const code = (value, what, names) => {
+            if (typeof value === 'number') return value;
+            if (!(value in names)) throw new Error(`unknown ${what} '${value}' (one of ${Object.keys(names).join(', ')})`);
+            return names[value];
+        };
+        const surfaces = { flat: C.SURFACE_FLAT, pn: C.SURFACE_PN, phong: C.SURFACE_PHONG, 'pn-aen': C.SURFACE_PN_AEN };
         const p = new Uint32Array(C.PARAMS_WORDS + extra);
         p[C.PARAM_PATCH_COUNT] = f.patchCount;
-        p[C.PARAM_SURFACE] = code(f.surface ?? 'flat', 'SURFACE', { pn: 'PN', phong: 'PHONG', flat: 'FLAT' });
+        p[C.PARAM_SURFACE] = code(f.surface ?? 'flat', 'surface', surfaces);
         p[C.PARAM_ALPHA] = f32Bits(f.alpha ?? 1);
         p[C.PARAM_FACTOR_SCALE] = f32Bits(f.factorScale);
         p.set(f.eye.map(f32Bits), C.PARAM_EYE);
         p[C.PARAM_MESH_VERTEX_COUNT] = f.meshVertexCount;
         p[C.PARAM_FIRST_PATCH] = f.first ?? 0;
         p[C.PARAM_END_PATCH] = f.end ?? f.patchCount;
-        p[C.PARAM_PATTERN] = code(f.pattern ?? 'cp', 'PATTERN', {});
+        p[C.PARAM_PATTERN] = code(f.pattern ?? 'cp', 'pattern', { cp: C.PATTERN_CP, uniform: C.PATTERN_UNIFORM });
         p[C.PARAM_QUAD_COUNT] = f.quadCount ?? 0;
-        p[C.PARAM_QUAD_RULE] = [C.QUAD_RULE_AS_LABELLED, 'as-labelled'].includes(f.quadRule) ? C.QUAD_RULE_AS_LABELLED : C.QUAD_RULE_LONGER_PAIR;
+        p[C.PARAM_QUAD_RULE] = code(f.quadRule ?? 'longer-pair', 'quad rule',
+                                    { 'longer-pair': C.QUAD_RULE_LONGER_PAIR, 'as-labelled': C.QUAD_RULE_AS_LABELLED });
         return p;
     }
 
@@ -161,31 +168,53 @@ export class MeshPipeline {
     // totals recounted from the records and checked against the layout's limits, then both emit passes in batches
     // of about options.batchVertices output vertices (default: one batch), at most options.maxWorkgroups workgroups
     // per dispatch. options.countsOnly stops after the counts. Resolves to {patches (the records and totals, a
-    // Uint32Array), vertexCount, triangleCount, vertices, indices (GPUBuffers, or null with countsOnly),
-    // milliseconds}. indexUsage adds usage flags to the index buffer (e.g. GPUBufferUsage.INDEX to draw it).
+    // Uint32Array), vertexCount, triangleCount (the prefix sum's totals), vertices, indices (GPUBuffers, or null
+    // with countsOnly), milliseconds}. indexUsage and vertexUsage add usage flags to the output buffers (e.g.
+    // GPUBufferUsage.INDEX to draw the indices). Params that do not describe the arrays given, a binding past the
+    // device's maxStorageBufferBindingSize and any validation or out-of-memory error of the run throw.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
         const maxGroups = options.maxWorkgroups ?? C.MAX_DISPATCH_WORKGROUPS;
-        const n = params[C.PARAM_PATCH_COUNT];
+        const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT];
+        const first0 = params[C.PARAM_FIRST_PATCH], end0 = params[C.PARAM_END_PATCH];
         const pastLimits = (what) => Object.assign(new Error(`${what}: past the pipeline's limits (${maxPatches} ` +
                                                              `patches, ${maxVertices} vertices, ${maxTriangles} triangles)`), { pastLimits: true });
         if (n > maxPatches) throw pastLimits(`${n} patches`);
-        const { tables } = await this.tables(params[C.PARAM_PATTERN]);
-        const bParams = this.storage(params);
-        const bMesh = this.storage(meshVertices);
-        const bIndices = this.storage(meshIndices);
+        // The same checks as the C++ host (ctess::vulkan::Runner): the params must describe the mesh given.
+        if (quads > n || first0 > end0 || end0 > n)
+            throw new Error(`params: ${quads} quads, emit range [${first0}, ${end0}) for ${n} patches`);
+        if (3 * (n - quads) + 4 * quads > meshIndices.length || params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS > meshVertices.length)
+            throw new Error('params: more patches or mesh vertices than the index and vertex arrays hold');
+        const maxBinding = this.device.limits.maxStorageBufferBindingSize;
         const patchWords = n * this.patchWords + C.TOTALS_WORDS;
-        const bPatches = this.storage(null, patchWords);
-        const none = [this.storage(null, 4), this.storage(null, 4)];
-        const temporary = [bParams, bMesh, bIndices, bPatches, ...none];
+        for (const [what, words] of [['mesh vertices', meshVertices.length], ['mesh indices', meshIndices.length], ['patch records', patchWords]])
+            if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
+        const { tables } = await this.tables(params[C.PARAM_PATTERN]);
+        // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
+        this.device.pushErrorScope('out-of-memory');
+        this.device.pushErrorScope('validation');
+        const temporary = [];
+        const scoped = async (result) => {
+            const validation = await this.device.popErrorScope();
+            const memory = await this.device.popErrorScope();
+            if (validation || memory) throw new Error(`WebGPU: ${(validation ?? memory).message}`);
+            return result;
+        };
         try {
+            const keep = (buffer) => { temporary.push(buffer); return buffer; };
+            const bParams = keep(this.storage(params));
+            const bMesh = keep(this.storage(meshVertices));
+            const bIndices = keep(this.storage(meshIndices));
+            const bPatches = keep(this.storage(null, patchWords));
+            const none = [keep(this.storage(null, 4)), keep(this.storage(null, 4))];
             const setup = options.setup ? [this.extra[options.setup.entry], options.setup.groups]
                                         : [this.setup, Math.max(1, Math.min(Math.ceil(n / this.setupGroup), maxGroups))];
             let milliseconds = await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
             const patches = await this.read(bPatches, patchWords);
+            const totalV = patches[n * this.patchWords], totalT = patches[n * this.patchWords + 1];
             if (options.countsOnly)
-                return { patches, vertexCount: 0, triangleCount: 0, vertices: null, indices: null, milliseconds };
+                return await scoped({ patches, vertexCount: totalV, triangleCount: totalT, vertices: null, indices: null, milliseconds });
             // The u32 totals wrap (the shader then writes TOTALS_OVERFLOW): recount them exactly before sizing.
             let sumV = 0, sumT = 0;
             for (let t = 0; t < n; t++) {
@@ -193,17 +222,16 @@ export class MeshPipeline {
                 sumT += patches[t * this.patchWords + C.REC_TRIANGLE_COUNT];
             }
             if (sumV > maxVertices || sumT > maxTriangles) throw pastLimits(`${sumV} vertices, ${sumT} triangles`);
-            const vertexCount = patches[n * this.patchWords], triangleCount = patches[n * this.patchWords + 1];
-            const maxBinding = this.device.limits.maxStorageBufferBindingSize;
+            if (sumV !== totalV || sumT !== totalT) throw new Error("the prefix sum's totals differ from the records' counts");
+            const vertexCount = totalV, triangleCount = totalT;
             if (vertexCount * C.VERTEX_WORDS * 4 > maxBinding || triangleCount * 12 > maxBinding)
                 throw new Error(`${vertexCount} vertices / ${triangleCount} triangles need more than ${maxBinding} ` +
                                 'bytes in one storage binding');
-            const vertices = this.storage(null, vertexCount * C.VERTEX_WORDS);
+            const vertices = this.storage(null, vertexCount * C.VERTEX_WORDS, options.vertexUsage ?? 0);
             const indices = this.storage(null, triangleCount * 3, options.indexUsage ?? 0);
             // The emit passes' patch range (PARAM_FIRST_PATCH, PARAM_END_PATCH), one submit per batch, as a host
             // that streams a large mesh would use it.
             const batch = options.batchVertices ?? Infinity;
-            const first0 = params[C.PARAM_FIRST_PATCH], end0 = params[C.PARAM_END_PATCH];
             const batchParams = params.slice();
             for (let first = first0; first < end0;) {
                 let end = first, count = 0;
@@ -217,9 +245,19 @@ export class MeshPipeline {
                                                     [[this.emitVertices, groups], [this.emitTriangles, groups]]);
                 first = end;
             }
-            return { patches, vertexCount, triangleCount, vertices, indices, milliseconds };
+            return await scoped({ patches, vertexCount, triangleCount, vertices, indices, milliseconds });
+        } catch (e) {
+            await this.device.popErrorScope().catch(() => {});
+            await this.device.popErrorScope().catch(() => {});
+            throw e;
         } finally {
             for (const b of temporary) b.destroy();
         }
+    }
+
+    // Frees the table blobs (the pipelines need no freeing).
+    destroy() {
+        for (const blob of this.blobs.values()) blob.then(({ tables }) => tables.destroy(), () => {});
+        this.blobs.clear();
     }
 }

@@ -243,6 +243,26 @@ TEST_CASE(
     CHECK_THROWS_WITH(vulkan::Runner("/nonexistent", 64),
                       Catch::Contains("/nonexistent/ctess_mesh_64_patch_setup.spv"));
     CHECK_THROWS_AS(vulkan::Runner(CTESS_SHADER_DIR, 128), vulkan::Error);
+    // MeshView::position_ids: the shaders order edges by vertex index, so the host refuses them.
+    rt::MeshView with_ids = scene.view();
+    const std::vector<std::uint32_t> ids(with_ids.vertex_count, 0);
+    with_ids.position_ids = ids.data();
+    CHECK_THROWS_AS(gpu.tessellate(with_ids, scene.options), vulkan::Error);
+    // More quads in the params than patches or than the mesh has.
+    params = pipeline_params(scene);
+    params[rt::gpu::param_word::quad_count] = params[rt::gpu::param_word::patch_count] + 1;
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), params), vulkan::Error);
+    params = pipeline_params(scene);
+    params[rt::gpu::param_word::quad_count] = 1;
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), params), vulkan::Error);
+    // An empty mesh: no patches, zero totals, no output.
+    const vulkan::Output empty =
+        gpu.tessellate(rt::MeshView{scene.vertices.data(), 3, nullptr, 0}, scene.options);
+    CHECK(empty.patches.empty());
+    CHECK(empty.totals.vertices == 0);
+    CHECK(empty.totals.triangles == 0);
+    CHECK(empty.vertices.empty());
+    CHECK(empty.indices.empty());
 }
 #endif
 
@@ -470,8 +490,8 @@ bool closed_by_position(const PipelineOutput& out) {
 }
 } // namespace
 
-TEST_CASE(
-    "GPU PN-AEN, quads: a faceted mixed torus (every edge hard) is the CPU's output and closed; PN opens") {
+TEST_CASE("GPU PN-AEN, quads: a faceted mixed torus (every edge hard) is the CPU's output and closed, and PN "
+          "opens") {
     for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
         Scene scene = faceted_mixed_torus(rt::Surface::pn_aen);
         scene.options.pattern = pattern;
@@ -491,3 +511,27 @@ TEST_CASE(
     CHECK_FALSE(closed_by_position(run_gpu(64, pn, "aen_quads_pn")));
 }
 #endif
+
+// The second WebGPU implementation (Dawn's Vulkan backend on SwiftShader) runs only this case: one run per
+// feature, each against the CPU (tests/gpu/CMakeLists.txt). The other backends run it too.
+TEST_CASE("GPU second implementation: CP PN, uniform Phong, a mixed grid with quads and PN-AEN, one run each",
+          "[second-implementation]") {
+    std::vector<std::pair<const char*, Scene>> scenes;
+    scenes.emplace_back("one_cp", factor_sweep_grid(64, 24, rt::Surface::pn_triangles));
+    Scene uniform = factor_sweep_grid(rt::uniform_tables.max_factor, 24, rt::Surface::phong);
+    uniform.options.pattern = rt::Pattern::uniform;
+    scenes.emplace_back("one_uniform", uniform);
+    scenes.emplace_back("one_quads", factor_sweep_grid(64, 24, rt::Surface::pn_triangles, 4));
+#if defined(CTESS_GPU_HAVE_MODELS)
+    scenes.emplace_back("one_aen_quads", faceted_mixed_torus(rt::Surface::pn_aen));
+#endif
+    for (const auto& [work, scene] : scenes) {
+        const PipelineOutput gpu = run_gpu(64, scene, work);
+        const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+        std::printf("%s, %s: %u patches (%zu quads), %u vertices; max position error %.2g\n", backend_name,
+                    work, scene.patch_count(), scene.quads.size() / 4, gpu.total_vertices(),
+                    c.max_position_error);
+        INFO(work << ": " << c.first_difference);
+        CHECK(c.equal());
+    }
+}

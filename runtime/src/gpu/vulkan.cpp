@@ -1,5 +1,6 @@
 #include <ctess/runtime/gpu/vulkan.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <fstream>
@@ -148,16 +149,21 @@ MeshPipeline& MeshPipeline::operator=(MeshPipeline&& other) noexcept {
 
 void MeshPipeline::write_descriptor_set(VkDescriptorSet set,
                                         const VkBuffer (&buffers)[rt::gpu::binding::count]) const {
-    VkDescriptorBufferInfo info[rt::gpu::binding::count];
+    VkDescriptorBufferInfo ranges[rt::gpu::binding::count];
+    for (std::uint32_t i = 0; i < rt::gpu::binding::count; ++i) ranges[i] = {buffers[i], 0, VK_WHOLE_SIZE};
+    write_descriptor_set(set, ranges);
+}
+
+void MeshPipeline::write_descriptor_set(
+    VkDescriptorSet set, const VkDescriptorBufferInfo (&ranges)[rt::gpu::binding::count]) const {
     VkWriteDescriptorSet writes[rt::gpu::binding::count];
     for (std::uint32_t i = 0; i < rt::gpu::binding::count; ++i) {
-        info[i] = {buffers[i], 0, VK_WHOLE_SIZE};
         writes[i] = vk_struct<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[i].pBufferInfo = &info[i];
+        writes[i].pBufferInfo = &ranges[i];
     }
     vkUpdateDescriptorSets(device_, rt::gpu::binding::count, writes, 0, nullptr);
 }
@@ -202,6 +208,7 @@ struct Runner::Device {
     VkCommandPool command_pool = VK_NULL_HANDLE;
     VkDescriptorPool descriptor_pool = VK_NULL_HANDLE;
     std::string name;
+    VkPhysicalDeviceLimits limits{};
     std::unique_ptr<MeshPipeline> pipeline;
     std::vector<std::uint32_t> tables[2]; // CP blob, uniform blob (loaded on first use)
 
@@ -212,6 +219,15 @@ struct Runner::Device {
     };
 
     Device() {
+        try {
+            init();
+        } catch (...) {
+            release(); // a constructor that throws runs no destructor
+            throw;
+        }
+    }
+
+    void init() {
         auto app = vk_struct<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
         app.pApplicationName = "ctess";
         app.apiVersion = VK_API_VERSION_1_1;
@@ -242,6 +258,7 @@ struct Runner::Device {
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(physical, &props);
         name = props.deviceName;
+        limits = props.limits;
         const float priority = 1.0f;
         auto qci = vk_struct<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
         qci.queueFamilyIndex = queue_family;
@@ -263,7 +280,9 @@ struct Runner::Device {
         check(vkCreateDescriptorPool(device, &dpci, nullptr, &descriptor_pool), "vkCreateDescriptorPool");
     }
 
-    ~Device() {
+    ~Device() { release(); }
+
+    void release() noexcept {
         pipeline.reset();
         if (device != VK_NULL_HANDLE) {
             vkDeviceWaitIdle(device);
@@ -272,12 +291,19 @@ struct Runner::Device {
             vkDestroyDevice(device, nullptr);
         }
         if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+        device = VK_NULL_HANDLE;
+        instance = VK_NULL_HANDLE;
     }
 
     // A zero-filled host-visible, host-coherent storage buffer of at least 16 bytes.
     Buffer create_buffer(std::uint64_t bytes) {
         Buffer b;
         bytes = bytes < 16 ? 16 : bytes;
+        // Every buffer is one whole storage binding: the device's range limit (2^27 bytes guaranteed).
+        if (bytes > limits.maxStorageBufferRange)
+            throw Error("a binding of " + std::to_string(bytes) +
+                        " bytes is past this device's maxStorageBufferRange (" +
+                        std::to_string(limits.maxStorageBufferRange) + ")");
         auto bci = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
         bci.size = bytes;
         bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
@@ -304,8 +330,12 @@ struct Runner::Device {
             vkDestroyBuffer(device, b.buffer, nullptr);
             check(r, "vkAllocateMemory");
         }
-        check(vkBindBufferMemory(device, b.buffer, b.memory, 0), "vkBindBufferMemory");
-        check(vkMapMemory(device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
+        VkResult r = vkBindBufferMemory(device, b.buffer, b.memory, 0);
+        if (r == VK_SUCCESS) r = vkMapMemory(device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped);
+        if (r != VK_SUCCESS) {
+            destroy(b);
+            check(r, "vkBindBufferMemory / vkMapMemory");
+        }
         std::memset(b.mapped, 0, static_cast<std::size_t>(bytes));
         return b;
     }
@@ -372,10 +402,11 @@ std::string Runner::device_name() const {
 Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run) {
     if (const rt::PipelineStatus st = rt::gpu::gpu_options_status(mesh, options);
         st != rt::PipelineStatus::ok) {
-        throw Error(st == rt::PipelineStatus::bad_option
-                        ? "the shaders run triangles with the cp or uniform pattern, the flat, pn or phong "
-                          "surface and camera factors, without displacement (docs/shaders.md)"
-                        : rt::pipeline_status_message(st));
+        throw Error(
+            st == rt::PipelineStatus::bad_option
+                ? "the shaders run the cp or uniform pattern and camera factors, without displacement "
+                  "or position_ids (docs/shaders.md, \"Hosts\")"
+                : rt::pipeline_status_message(st));
     }
     return tessellate(mesh, rt::gpu::pipeline_params(mesh, options), run);
 }
@@ -399,6 +430,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         tables = load_table_blob(shader_dir_, max_factor_, uniform ? rt::Pattern::uniform : rt::Pattern::cp);
 
     Device& d = *device_;
+    run.max_workgroups = std::min(run.max_workgroups, d.limits.maxComputeWorkGroupCount[0]);
     std::vector<Device::Buffer> owned;
     struct Release { // frees every buffer and the descriptor sets on every path out
         Device& d;
@@ -408,6 +440,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
             vkResetDescriptorPool(d.device, d.descriptor_pool, 0);
         }
     } release{d, owned};
+    owned.reserve(8); // make() never reallocates, so a created buffer is always owned
     const auto make = [&](std::uint64_t bytes, const void* data, std::size_t data_bytes) {
         owned.push_back(d.create_buffer(bytes));
         if (data_bytes != 0) std::memcpy(owned.back().mapped, data, data_bytes);
@@ -457,7 +490,8 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         [&](VkCommandBuffer cmd) { d.pipeline->record_counts(cmd, counts_set, n, run.max_workgroups); });
     const auto* words = static_cast<const std::uint32_t*>(b_patches.mapped);
     out.patches.resize(n);
-    std::memcpy(static_cast<void*>(out.patches.data()), words, std::size_t{n} * sizeof(rt::PatchRecord));
+    if (n != 0)
+        std::memcpy(static_cast<void*>(out.patches.data()), words, std::size_t{n} * sizeof(rt::PatchRecord));
     // The shader's u32 totals wrap past 2^32 (it then writes the overflow marker): recount them in 64 bits
     // and refuse a mesh past the pipeline's limits before sizing the outputs, as the CPU pipeline does.
     std::uint64_t sum_v = 0, sum_t = 0;
@@ -486,10 +520,11 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                                 run.max_workgroups);
     });
     out.vertices.resize(out.totals.vertices);
-    std::memcpy(static_cast<void*>(out.vertices.data()), b_vertices.mapped,
-                out.vertices.size() * sizeof(rt::TessVertex));
+    if (!out.vertices.empty())
+        std::memcpy(static_cast<void*>(out.vertices.data()), b_vertices.mapped,
+                    out.vertices.size() * sizeof(rt::TessVertex));
     out.indices.resize(std::size_t{out.totals.triangles} * 3);
-    std::memcpy(out.indices.data(), b_out_indices.mapped, out.indices.size() * 4);
+    if (!out.indices.empty()) std::memcpy(out.indices.data(), b_out_indices.mapped, out.indices.size() * 4);
     return out;
 }
 

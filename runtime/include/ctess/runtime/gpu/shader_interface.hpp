@@ -5,7 +5,7 @@
 // one source. No GPU API here: a host for any API includes this header.
 //
 //   const auto params = ctess::rt::gpu::pipeline_params(mesh, options); // binding 0
-//   // binding 4: patch_buffer_words(mesh.triangle_count) words; the prefix sum writes the totals after the
+//   // binding 4: patch_buffer_words(mesh.patch_count()) words; the prefix sum writes the totals after the
 //   // records: totals_words(...) below reads them back.
 #pragma once
 #include <array>
@@ -109,10 +109,12 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
 }
 
 // Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (the
-// uniform_split and D3D11 patterns, displacement, factors other than FactorMode::camera)
+// uniform_split and D3D11 patterns, displacement, factors other than FactorMode::camera, and
+// MeshView::position_ids: the shaders order shared edges by vertex index, so a seam between different indices
+// would not get the CPU's bits)
 // and for a QuadRule outside its enum, or too_many_patches.
 constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
-    if (options.displacement != nullptr) return PipelineStatus::bad_option;
+    if (options.displacement != nullptr || mesh.position_ids != nullptr) return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
     if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;

@@ -2,7 +2,9 @@
 // share/ctess/shaders (ctess_SHADER_DIR) as four compute pipelines, in two layers.
 //
 // MeshPipeline is for a renderer: it creates the pipelines on your VkDevice and records the passes into your
-// command buffer; you own the buffers (device-local or not), the descriptor set and the synchronisation.
+// command buffer; you own the buffers (device-local or not), the descriptor set and the synchronisation
+// around the passes (record_counts and record_emit put barriers only between their own dispatches and before
+// record_emit; see there).
 //
 //   ctess::vulkan::MeshPipeline pipeline(device, ctess_shader_dir, 64);
 //   // descriptor set of pipeline.set_layout(): the seven buffers of rt::gpu::binding, params from
@@ -11,9 +13,9 @@
 //   ...                                    // size the outputs, bind them
 //   pipeline.record_emit(cmd, set, n);     // vertices + triangles
 //
-// Runner is the whole round trip on host-visible buffers, for tools and tests (`ctess mesh --backend
-// vulkan`, tests/gpu): its own instance and device (the loader's first device with a compute queue; lavapipe
-// where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back.
+// Runner is the whole round trip on host-visible buffers, for tools and tests (tests/gpu, the consumer
+// example in docs/shaders.md): its own instance and device (the loader's first device with a compute queue;
+// lavapipe where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back.
 //
 //   ctess::vulkan::Runner gpu(ctess_shader_dir, 64);
 //   const ctess::vulkan::Output out = gpu.tessellate(mesh, options);   // out.vertices, out.indices
@@ -67,15 +69,23 @@ class MeshPipeline {
     VkPipelineLayout pipeline_layout() const noexcept { return pipeline_layout_; }
     unsigned max_factor() const noexcept { return max_factor_; }
 
-    // Points the seven bindings of set at buffers (whole ranges), in rt::gpu::binding order.
+    // Points the seven bindings of set at buffers (whole ranges), in rt::gpu::binding order. Every binding
+    // must be valid in every pass: bind 16-byte placeholders as outputs for record_counts. Binding 3's range
+    // is read to its end by PN-AEN (arrayLength): give its exact words.
     void write_descriptor_set(VkDescriptorSet set, const VkBuffer (&buffers)[rt::gpu::binding::count]) const;
+    // The same with ranges (sub-allocated buffers).
+    void write_descriptor_set(VkDescriptorSet set,
+                              const VkDescriptorBufferInfo (&ranges)[rt::gpu::binding::count]) const;
 
     // Records the setup pass and the prefix sum over patch_count patches (the params' patch count), with a
     // compute-to-compute barrier between them and one after; the totals then follow the records in binding 4.
+    // Before it, make the params and mesh uploads visible to the compute stage; to read the totals on the
+    // host, add a compute-to-host (or -transfer) barrier after it.
     void record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                        std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
     // Records both emit passes for the params' patch range [first, end) (patch_count = end - first), with a
-    // barrier before (for the counts) and between; the outputs are written when the command buffer completes.
+    // barrier before (for the counts) and between; to draw the outputs, add a compute-to-vertex-input (and
+    // index-read) barrier after it.
     void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                      std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
 
@@ -91,7 +101,7 @@ class MeshPipeline {
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
 struct Output {
-    std::vector<rt::PatchRecord> patches; // one per base triangle
+    std::vector<rt::PatchRecord> patches; // one per patch: the base triangles, then the quads
     rt::PipelineTotals totals;            // vertices and triangles (clamped_edges is not counted on the GPU)
     std::vector<rt::TessVertex> vertices; // totals.vertices
     std::vector<std::uint32_t> indices;   // 3 x totals.triangles
@@ -112,7 +122,7 @@ class Runner {
 
     std::string device_name() const;
 
-    // The mesh pipeline on mesh's base triangles with options (rt::gpu::gpu_options_status must be ok). The
+    // The mesh pipeline on mesh's patches with options (rt::gpu::gpu_options_status must be ok). The
     // totals are recounted from the records in 64 bits and checked against rt::check_pipeline_size before
     // the outputs are allocated.
     Output tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run = {});
