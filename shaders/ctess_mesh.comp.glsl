@@ -767,29 +767,6 @@ SurfacePoint quad_interior(Corner q[4], vec3 adj_from[4], vec3 adj_to[4], bool a
     o.normal = normalize_or_zero(blend(flat_n, nn, alpha));
     return o;
 }
-// The surface point of (s, t) of a quad's unit square (quad_vertex on the CPU): a point on quad edge k goes
-// through evaluate_surface on (q_k, q_k+1, q_k+2) with weights (1 - r, r, 0), the very operations a triangle on
-// the other side of the edge runs; an inner point through quad_interior.
-// PN-AEN: the edge point through evaluate_surface_aen with edge k's neighbours (the other two edges of the
-// triangle are its own boundary), adj_from and adj_to as for quad_interior.
-SurfacePoint quad_surface(Corner q[4], vec3 adj_from[4], vec3 adj_to[4], uint s, uint t, uint surface, float alpha) {
-    bool aen = surface == SURFACE_PN_AEN;
-    bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
-    uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
-    for (uint k = 0u; k < 4u; ++k) {
-        if (!on_edge[k]) continue;
-        Corner tri[3] = Corner[3](q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
-        uint w[3] = uint[3](FIXED_ONE - r[k], r[k], 0u);
-        if (aen) {
-            vec3 from3[3] = vec3[3](adj_from[k], tri[1].normal, tri[2].normal);
-            vec3 to3[3] = vec3[3](adj_to[k], tri[2].normal, tri[0].normal);
-            return evaluate_surface_aen(tri, from3, to3, w, alpha);
-        }
-        return evaluate_surface(tri, w, surface, alpha);
-    }
-    return quad_interior(q, adj_from, adj_to, aen, s, t, surface, alpha);
-}
-
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
 // uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
 // bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
@@ -1026,54 +1003,25 @@ uvec2 quad_half_state(uint rec, uint h, uint k) {
     if (h == 0u) return uvec2(patches[rec + REC_TOKEN + k], patches[rec + REC_T16 + k]);
     return uvec2(patches[rec + SETUP + QSETUP_B_TOKEN + k], patches[rec + SETUP + QSETUP_B_T16 + k]);
 }
-// Both halves of a quad record, as the emit passes need them: the CP patches (CP) or the uniform setup words,
-// and half A's counts.
-struct QuadHalves {
-    Patch a;
-    Patch b;
-    uvec3 words_a;
-    uvec3 words_b;
-    uint vertices_a;
-    uint triangles_a;
-};
-QuadHalves quad_halves(uint rec) {
-    QuadHalves h;
-    if (uniform_pattern()) {
-        uint fa[3], fb[3];
-        for (uint k = 0u; k < 3u; ++k) {
-            fa[k] = quad_half_state(rec, 0u, k).x;
-            fb[k] = quad_half_state(rec, 1u, k).x;
+// Both halves of a quad record, as the emit passes need them: the CP patches (CP) or the uniform setup words of
+// half A (index 0) and B (1); returns half A's vertex and triangle counts.
+uvec2 quad_halves(uint rec, out Patch halves[2], out uvec3 words[2]) {
+    uvec2 counts_a;
+    for (uint side = 0u; side < 2u; ++side) { // one copy of patch_setup in the compiled pass
+        uvec2 s0 = quad_half_state(rec, side, 0u), s1 = quad_half_state(rec, side, 1u), s2 = quad_half_state(rec, side, 2u);
+        uvec2 counts;
+        if (uniform_pattern()) {
+            uint f[3] = uint[3](s0.x, s1.x, s2.x);
+            counts = uniform_setup(f, words[side]);
+            halves[side] = patch_zero();
+        } else {
+            halves[side] = patch_setup(s0, s1, s2);
+            counts = uvec2(halves[side].vertices, halves[side].triangles);
+            words[side] = uvec3(0u);
         }
-        uvec2 ca = uniform_setup(fa, h.words_a);
-        uniform_setup(fb, h.words_b);
-        h.a = patch_zero();
-        h.b = patch_zero();
-        h.vertices_a = ca.x;
-        h.triangles_a = ca.y;
-    } else {
-        for (uint side = 0u; side < 2u; ++side) { // one copy of patch_setup in the compiled pass
-            Patch half_patch = patch_setup(quad_half_state(rec, side, 0u), quad_half_state(rec, side, 1u),
-                                           quad_half_state(rec, side, 2u));
-            if (side == 0u) h.a = half_patch; else h.b = half_patch;
-        }
-        h.vertices_a = h.a.vertices;
-        h.triangles_a = h.a.triangles;
+        if (side == 0u) counts_a = counts;
     }
-    return h;
-}
-// Vertex i of a quad in its unit square: half A's points as they are, B's reflected (cp::quad_point).
-uvec2 quad_vertex(QuadHalves h, uint i) {
-    bool uniform_ = uniform_pattern();
-    if (i < h.vertices_a) return uniform_ ? uniform_vertex(h.words_a, i) : patch_vertex(h.a, i);
-    uvec2 d = uniform_ ? uniform_vertex(h.words_b, i - h.vertices_a) : patch_vertex(h.b, i - h.vertices_a);
-    return uvec2(FIXED_ONE - d.x, FIXED_ONE - d.y);
-}
-// Triangle i of a quad, as indices into the quad's vertices (B's after A's).
-uvec3 quad_triangle(QuadHalves h, uint i) {
-    bool uniform_ = uniform_pattern();
-    if (i < h.triangles_a) return uniform_ ? uniform_triangle(h.words_a, i) : patch_triangle(h.a, i);
-    uvec3 tri = uniform_ ? uniform_triangle(h.words_b, i - h.triangles_a) : patch_triangle(h.b, i - h.triangles_a);
-    return tri + uvec3(h.vertices_a);
+    return counts_a;
 }
 void store_vertex(uint o, uint u, uint v, SurfacePoint sp) {
     out_vertices[o + VERTEX_U] = u;
@@ -1087,35 +1035,6 @@ void store_vertex(uint o, uint u, uint v, SurfacePoint sp) {
     out_vertices[o + VERTEX_UV] = floatBitsToUint(sp.uv.x);
     out_vertices[o + (VERTEX_UV + 1u)] = floatBitsToUint(sp.uv.y);
 }
-// Every vertex of quad patch t (this invocation's share of the workgroup on it).
-void emit_quad_vertices(uint t, uint surface, float alpha) {
-    uint rec = t * PATCH_WORDS;
-    uint count = patches[rec + REC_VERTEX_COUNT];
-    uint w[4];
-    if (count == 0u || !base_quad(t - triangle_count(), w)) return;
-    uint r = patches[rec + REC_ROTATION];
-    // Pattern corner q_k is the mesh quad's corner (k + rotation) % 4.
-    Corner q[4] = Corner[4](mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
-                            mesh_corner(w[(3u + r) % 4u]));
-    // PN-AEN: pattern edge k is mesh edge m = (k + rotation) % 4, edge 0 or 1 of face triangle (q0, q1, q2)
-    // (adjacency block triangle_count + 2 quad) for m < 2, edge 1 or 2 of (q0, q2, q3) (the next block) after.
-    vec3 adj_from[4], adj_to[4];
-    uint face = triangle_count() + 2u * (t - triangle_count());
-    for (uint k = 0u; k < 4u; ++k) {
-        uint m = (k + r) % 4u;
-        adj_from[k] = q[k].normal;
-        adj_to[k] = q[(k + 1u) % 4u].normal;
-        if (surface == SURFACE_PN_AEN)
-            adjacent_normals(face + (m >= 2u ? 1u : 0u), m >= 2u ? m - 1u : m, q[k], q[(k + 1u) % 4u], adj_from[k], adj_to[k]);
-    }
-    QuadHalves h = quad_halves(rec);
-    uint first = patches[rec + REC_FIRST_VERTEX];
-    for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-        uvec2 d = quad_vertex(h, i);
-        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, adj_from, adj_to, d.x, d.y, surface, alpha));
-    }
-}
-
 // Pass 1, one invocation per patch: factors, rotation, line states, counts and the setup block (quads: setup_one_quad).
 void setup_one_patch(uint t) {
     uint rec = t * PATCH_WORDS;
@@ -1217,61 +1136,126 @@ void ctess_prefix_sum() {
     }
 }
 
-// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex.
+// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex. One
+// loop for triangles and quads, with one call site of each pattern and surface function, so that a compiler
+// that inlines everything keeps one copy of each (docs/shaders.md, "Quads").
 void ctess_emit_vertices() {
     uint end = min(params[PARAM_END_PATCH], patch_count());
     float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
     uint surface = params[PARAM_SURFACE];
+    bool aen = surface == SURFACE_PN_AEN;
+    bool uniform_ = uniform_pattern();
     for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
-        if (t >= triangle_count()) {
-            emit_quad_vertices(t, surface, alpha);
-            continue;
-        }
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
-        uvec3 w;
-        if (count == 0u || !base_triangle(t, w)) continue;
-        bool uniform_ = uniform_pattern();
-        Patch p = uniform_ ? patch_zero() : record_patch(rec);
-        uvec3 words = uniform_words(rec);
+        if (count == 0u) continue;
+        bool quad = t >= triangle_count();
         uint rot = patches[rec + REC_ROTATION];
+        // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a
+        // triangle; adj_from[k], adj_to[k]: the neighbour's normals on edge k (the own ones unless PN-AEN).
+        Corner q[4];
+        vec3 adj_from[4], adj_to[4];
+        Patch halves[2];
+        uvec3 words[2];
+        uint vertices_a = count;
+        if (quad) {
+            uint w[4];
+            if (!base_quad(t - triangle_count(), w)) continue;
+            for (uint k = 0u; k < 4u; ++k) q[k] = mesh_corner(w[(k + rot) % 4u]);
+            // Pattern edge k is mesh edge m = (k + rotation) % 4: edge 0 or 1 of face triangle (q0, q1, q2)
+            // (adjacency block triangle_count + 2 quad) for m < 2, edge 1 or 2 of (q0, q2, q3) (the next) after.
+            uint face = triangle_count() + 2u * (t - triangle_count());
+            for (uint k = 0u; k < 4u; ++k) {
+                uint m = (k + rot) % 4u;
+                adj_from[k] = q[k].normal;
+                adj_to[k] = q[(k + 1u) % 4u].normal;
+                if (aen) adjacent_normals(face + (m >= 2u ? 1u : 0u), m >= 2u ? m - 1u : m, q[k], q[(k + 1u) % 4u], adj_from[k], adj_to[k]);
+            }
+            vertices_a = quad_halves(rec, halves, words).x;
+        } else {
+            uvec3 w;
+            if (!base_triangle(t, w)) continue;
+            q[0] = mesh_corner(w.x);
+            q[1] = mesh_corner(w.y);
+            q[2] = mesh_corner(w.z);
+            q[3] = q[0];
+            for (uint e = 0u; e < 3u; ++e) {
+                adj_from[e] = q[e].normal;
+                adj_to[e] = q[(e + 1u) % 3u].normal;
+                if (aen) adjacent_normals(t, e, q[e], q[(e + 1u) % 3u], adj_from[e], adj_to[e]);
+            }
+            halves[0] = uniform_ ? patch_zero() : record_patch(rec);
+            words[0] = uniform_words(rec);
+        }
         uint first = patches[rec + REC_FIRST_VERTEX];
-        Corner c[3] = Corner[3](mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
-        bool aen = surface == SURFACE_PN_AEN;
-        vec3 adj_from[3] = vec3[3](c[0].normal, c[1].normal, c[2].normal);
-        vec3 adj_to[3] = vec3[3](c[1].normal, c[2].normal, c[0].normal);
-        for (uint e = 0u; aen && e < 3u; ++e) adjacent_normals(t, e, c[e], c[(e + 1u) % 3u], adj_from[e], adj_to[e]);
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec2 d = uniform_ ? uniform_vertex(words, i) : patch_vertex(p, i);
-            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
-            uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y);
-            uint bw[3];
-            for (uint k = 0u; k < 3u; ++k) bw[(k + rot) % 3u] = pw[k];
-            SurfacePoint sp =
-                aen ? evaluate_surface_aen(c, adj_from, adj_to, bw, alpha) : evaluate_surface(c, bw, surface, alpha);
-            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], sp);
+            uint side = i < vertices_a ? 0u : 1u;
+            uint local = side == 0u ? i : i - vertices_a;
+            uvec2 d = uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local);
+            // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
+            // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
+            // q_k+2) with weights (1 - r, r, 0), the operations the neighbour across the edge runs (quad_vertex on
+            // the CPU); a point inside a quad goes to quad_interior.
+            Corner tri[3] = Corner[3](q[0], q[1], q[2]);
+            uint w3[3];
+            vec3 from3[3] = vec3[3](adj_from[0], adj_from[1], adj_from[2]);
+            vec3 to3[3] = vec3[3](adj_to[0], adj_to[1], adj_to[2]);
+            bool inner = false;
+            uvec2 out_uv;
+            if (quad) {
+                if (side == 1u) d = uvec2(FIXED_ONE - d.x, FIXED_ONE - d.y); // half B: cp::quad_point
+                out_uv = d;
+                bool on_edge[4] = bool[4](d.y == 0u, d.x == FIXED_ONE, d.y == FIXED_ONE, d.x == 0u);
+                uint r[4] = uint[4](d.x, d.y, FIXED_ONE - d.x, FIXED_ONE - d.y);
+                uint k = 4u;
+                for (uint e = 0u; e < 4u && k == 4u; ++e) if (on_edge[e]) k = e;
+                inner = k == 4u;
+                if (!inner) {
+                    tri = Corner[3](q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
+                    w3 = uint[3](FIXED_ONE - r[k], r[k], 0u);
+                    // Edge k's neighbours; the triangle's other two edges are its own boundary.
+                    from3 = vec3[3](adj_from[k], tri[1].normal, tri[2].normal);
+                    to3 = vec3[3](adj_to[k], tri[2].normal, tri[0].normal);
+                }
+            } else {
+                uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y);
+                for (uint k = 0u; k < 3u; ++k) w3[(k + rot) % 3u] = pw[k];
+                out_uv = uvec2(w3[1], w3[2]);
+            }
+            SurfacePoint sp;
+            if (inner) sp = quad_interior(q, adj_from, adj_to, aen, out_uv.x, out_uv.y, surface, alpha);
+            else if (aen) sp = evaluate_surface_aen(tri, from3, to3, w3, alpha);
+            else sp = evaluate_surface(tri, w3, surface, alpha);
+            store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }
 }
 
-// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices.
+// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices (a quad's
+// half B after A, its indices after A's vertices). One call site per pattern function, as in pass 3.
 void ctess_emit_triangles() {
     uint end = min(params[PARAM_END_PATCH], patch_count());
+    bool uniform_ = uniform_pattern();
     for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) continue;
-        bool quad = t >= triangle_count();
-        bool uniform_ = uniform_pattern();
-        Patch p = uniform_ || quad ? patch_zero() : record_patch(rec);
-        QuadHalves h;
-        if (quad) h = quad_halves(rec);
-        uvec3 words = uniform_words(rec);
+        Patch halves[2];
+        uvec3 words[2];
+        uvec2 counts_a = uvec2(0u, count);
+        if (t >= triangle_count()) {
+            counts_a = quad_halves(rec, halves, words);
+        } else {
+            halves[0] = uniform_ ? patch_zero() : record_patch(rec);
+            words[0] = uniform_words(rec);
+        }
         uint vfirst = patches[rec + REC_FIRST_VERTEX];
         uint tfirst = patches[rec + REC_FIRST_TRIANGLE];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec3 tri = quad ? quad_triangle(h, i) : uniform_ ? uniform_triangle(words, i) : patch_triangle(p, i);
-            tri += uvec3(vfirst);
+            uint side = i < counts_a.y ? 0u : 1u;
+            uint local = side == 0u ? i : i - counts_a.y;
+            uvec3 tri = uniform_ ? uniform_triangle(words[side], local) : patch_triangle(side == 0u ? halves[0] : halves[1], local);
+            tri += uvec3(vfirst + (side == 0u ? 0u : counts_a.x));
             uint o = 3u * (tfirst + i);
             out_indices[o] = tri.x;
             out_indices[o + 1u] = tri.y;

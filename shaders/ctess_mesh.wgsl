@@ -751,30 +751,6 @@ fn quad_interior(corners: array<Corner, 4>, edges: array<EdgeNormals, 4>, aen: b
     let position = blend(flat_p, pn, alpha);
     return SurfacePoint(select(position, without_negative_zero(position), aen), normalize_or_zero(blend(flat_n, nn, alpha)), uv);
 }
-// The surface point of (s, t) of a quad's unit square (quad_vertex on the CPU): a point on quad edge k goes
-// through evaluate_surface on (q_k, q_k+1, q_k+2) with weights (1 - r, r, 0), the very operations a triangle on
-// the other side of the edge runs; an inner point through quad_interior.
-// PN-AEN: the edge point through evaluate_surface_aen with edge k's neighbours (the other two edges of the
-// triangle are its own boundary), en[k] as for quad_interior.
-fn quad_surface(corners: array<Corner, 4>, edges: array<EdgeNormals, 4>, s: u32, t: u32, surface: u32, alpha: f32) -> SurfacePoint {
-    var q = corners;
-    var en = edges;
-    let aen = surface == SURFACE_PN_AEN;
-    var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
-    var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
-    for (var k = 0u; k < 4u; k++) {
-        if (!on_edge[k]) { continue; }
-        let tri = array<Corner, 3>(q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
-        let w = array<u32, 3>(FIXED_ONE - r[k], r[k], 0u);
-        if (aen) {
-            let own = array<EdgeNormals, 3>(en[k], EdgeNormals(tri[1].normal, tri[2].normal), EdgeNormals(tri[2].normal, tri[0].normal));
-            return evaluate_surface_aen(tri, own, w, alpha);
-        }
-        return evaluate_surface(tri, w, surface, alpha);
-    }
-    return quad_interior(q, en, aen, s, t, surface, alpha);
-}
-
 // ---- uniform-density pattern (uniform_patch.hpp, uniform_pipeline_patch.hpp) ----
 // uniform::round_factor (constexpr/ctess/uniform/factor.hpp, docs/algorithm.md §3.4) line for line, on the float's
 // bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
@@ -1078,53 +1054,24 @@ fn quad_half_state(rec: u32, h: u32, k: u32) -> vec2<u32> {
     if (h == 0u) { return vec2<u32>(patches[rec + REC_TOKEN + k], patches[rec + REC_T16 + k]); }
     return vec2<u32>(patches[rec + SETUP + QSETUP_B_TOKEN + k], patches[rec + SETUP + QSETUP_B_T16 + k]);
 }
-// Both halves of a quad record, as the emit passes need them: the CP patches (CP, into *a and *b) or the
-// uniform setup words, and half A's counts.
-struct QuadHalves {
-    words_a: vec3<u32>,
-    words_b: vec3<u32>,
-    vertices_a: u32,
-    triangles_a: u32,
-}
-fn quad_halves(rec: u32, a: ptr<function, Patch>, b: ptr<function, Patch>) -> QuadHalves {
-    var h: QuadHalves;
-    if (uniform_pattern()) {
-        var fa: array<u32, 3>;
-        var fb: array<u32, 3>;
-        for (var k = 0u; k < 3u; k++) { fa[k] = quad_half_state(rec, 0u, k).x; fb[k] = quad_half_state(rec, 1u, k).x; }
-        let ca = uniform_setup(fa, &h.words_a);
-        uniform_setup(fb, &h.words_b);
-        h.vertices_a = ca.x;
-        h.triangles_a = ca.y;
-    } else {
-        for (var side = 0u; side < 2u; side++) { // one copy of patch_setup in the compiled pass
-            let half_patch = patch_setup(quad_half_state(rec, side, 0u), quad_half_state(rec, side, 1u), quad_half_state(rec, side, 2u));
-            if (side == 0u) { *a = half_patch; } else { *b = half_patch; }
+// Both halves of a quad record, as the emit passes need them: the CP patches (CP) or the uniform setup words of
+// half A (index 0) and B (1); returns half A's vertex and triangle counts.
+fn quad_halves(rec: u32, halves: ptr<function, array<Patch, 2>>, words: ptr<function, array<vec3<u32>, 2>>) -> vec2<u32> {
+    var counts_a: vec2<u32>;
+    for (var side = 0u; side < 2u; side++) { // one copy of patch_setup in the compiled pass
+        let s0 = quad_half_state(rec, side, 0u); let s1 = quad_half_state(rec, side, 1u); let s2 = quad_half_state(rec, side, 2u);
+        var counts: vec2<u32>;
+        if (uniform_pattern()) {
+            var w: vec3<u32>;
+            counts = uniform_setup(array<u32, 3>(s0.x, s1.x, s2.x), &w);
+            (*words)[side] = w;
+        } else {
+            (*halves)[side] = patch_setup(s0, s1, s2);
+            counts = vec2<u32>((*halves)[side].vertices, (*halves)[side].triangles);
         }
-        h.vertices_a = (*a).vertices;
-        h.triangles_a = (*a).triangles;
+        if (side == 0u) { counts_a = counts; }
     }
-    return h;
-}
-// Vertex i of a quad in its unit square: half A's points as they are, B's reflected (cp::quad_point).
-fn quad_vertex(h: QuadHalves, a: ptr<function, Patch>, b: ptr<function, Patch>, i: u32) -> vec2<u32> {
-    if (i < h.vertices_a) {
-        if (uniform_pattern()) { return uniform_vertex(h.words_a, i); }
-        return patch_vertex(a, i);
-    }
-    var d: vec2<u32>;
-    if (uniform_pattern()) { d = uniform_vertex(h.words_b, i - h.vertices_a); } else { d = patch_vertex(b, i - h.vertices_a); }
-    return vec2<u32>(FIXED_ONE - d.x, FIXED_ONE - d.y);
-}
-// Triangle i of a quad, as indices into the quad's vertices (B's after A's).
-fn quad_triangle(h: QuadHalves, a: ptr<function, Patch>, b: ptr<function, Patch>, i: u32) -> vec3<u32> {
-    if (i < h.triangles_a) {
-        if (uniform_pattern()) { return uniform_triangle(h.words_a, i); }
-        return patch_triangle(a, i);
-    }
-    var tri: vec3<u32>;
-    if (uniform_pattern()) { tri = uniform_triangle(h.words_b, i - h.triangles_a); } else { tri = patch_triangle(b, i - h.triangles_a); }
-    return tri + vec3<u32>(h.vertices_a);
+    return counts_a;
 }
 fn store_vertex(o: u32, u: u32, v: u32, sp: SurfacePoint) {
     out_vertices[o + VERTEX_U] = u;
@@ -1138,38 +1085,6 @@ fn store_vertex(o: u32, u: u32, v: u32, sp: SurfacePoint) {
     out_vertices[o + VERTEX_UV] = bitcast<u32>(sp.uv.x);
     out_vertices[o + (VERTEX_UV + 1u)] = bitcast<u32>(sp.uv.y);
 }
-// Every vertex of quad patch t (the emit pass's invocation lid of the workgroup on it).
-fn emit_quad_vertices(t: u32, lane: u32, surface: u32, alpha: f32) {
-    let rec = t * PATCH_WORDS;
-    let count = patches[rec + REC_VERTEX_COUNT];
-    let wq = base_quad(t - triangle_count());
-    if (count == 0u || !base_quad_valid(wq)) { return; }
-    var w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
-    let r = patches[rec + REC_ROTATION];
-    // Pattern corner q_k is the mesh quad's corner (k + rotation) % 4.
-    var q = array<Corner, 4>(mesh_corner(w[r % 4u]), mesh_corner(w[(1u + r) % 4u]), mesh_corner(w[(2u + r) % 4u]),
-                             mesh_corner(w[(3u + r) % 4u]));
-    // PN-AEN: pattern edge k is mesh edge m = (k + rotation) % 4, edge 0 or 1 of face triangle (q0, q1, q2)
-    // (adjacency block triangle_count + 2 quad) for m < 2, edge 1 or 2 of (q0, q2, q3) (the next block) after.
-    var en: array<EdgeNormals, 4>;
-    let face = triangle_count() + 2u * (t - triangle_count());
-    for (var k = 0u; k < 4u; k++) {
-        let m = (k + r) % 4u;
-        let from_ = q[k];
-        let to_ = q[(k + 1u) % 4u];
-        en[k] = EdgeNormals(from_.normal, to_.normal);
-        if (surface == SURFACE_PN_AEN) { en[k] = adjacent_normals(face + select(0u, 1u, m >= 2u), select(m, m - 1u, m >= 2u), from_, to_); }
-    }
-    var pa: Patch;
-    var pb: Patch;
-    let h = quad_halves(rec, &pa, &pb);
-    let first = patches[rec + REC_FIRST_VERTEX];
-    for (var i = lane; i < count; i += EMIT_GROUP) {
-        let d = quad_vertex(h, &pa, &pb, i);
-        store_vertex((first + i) * VERTEX_WORDS, d.x, d.y, quad_surface(q, en, d.x, d.y, surface, alpha));
-    }
-}
-
 // Grid-stride: a host may dispatch fewer workgroups than patches / SETUP_GROUP (at most MAX_DISPATCH_WORKGROUPS).
 @compute @workgroup_size(SETUP_GROUP)
 fn ctess_patch_setup(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
@@ -1224,77 +1139,133 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     }
 }
 
-// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex.
+// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex. One
+// loop for triangles and quads, with one call site of each pattern and surface function, so that a compiler
+// that inlines everything keeps one copy of each (docs/shaders.md, "Quads").
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                        @builtin(local_invocation_id) lid: vec3<u32>) {
     let end = min(params[PARAM_END_PATCH], patch_count());
     let alpha = bitcast<f32>(params[PARAM_ALPHA]);
     let surface = params[PARAM_SURFACE];
+    let aen = surface == SURFACE_PN_AEN;
+    let uniform_ = uniform_pattern();
     for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
-        if (t >= triangle_count()) {
-            emit_quad_vertices(t, lid.x, surface, alpha);
-            continue;
-        }
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
-        let w = base_triangle(t);
-        if (count == 0u || !base_triangle_valid(w)) { continue; }
-        let uniform_ = uniform_pattern();
-        var p: Patch;
-        if (!uniform_) { p = record_patch(rec); }
-        let words = uniform_words(rec);
+        if (count == 0u) { continue; }
+        let quad = t >= triangle_count();
         let rot = patches[rec + REC_ROTATION];
-        let first = patches[rec + REC_FIRST_VERTEX];
-        let c = array<Corner, 3>(mesh_corner(w.x), mesh_corner(w.y), mesh_corner(w.z));
-        let aen = surface == SURFACE_PN_AEN;
-        var en: array<EdgeNormals, 3>;
-        if (aen) {
-            en = array<EdgeNormals, 3>(adjacent_normals(t, 0u, c[0], c[1]), adjacent_normals(t, 1u, c[1], c[2]),
-                                       adjacent_normals(t, 2u, c[2], c[0]));
+        // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a
+        // triangle; en[k]: the neighbour's normals on edge k (the own ones unless PN-AEN).
+        var q: array<Corner, 4>;
+        var en: array<EdgeNormals, 4>;
+        var halves: array<Patch, 2>;
+        var words: array<vec3<u32>, 2>;
+        var vertices_a = count;
+        if (quad) {
+            let wq = base_quad(t - triangle_count());
+            if (!base_quad_valid(wq)) { continue; }
+            var w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
+            for (var k = 0u; k < 4u; k++) { q[k] = mesh_corner(w[(k + rot) % 4u]); }
+            // Pattern edge k is mesh edge m = (k + rotation) % 4: edge 0 or 1 of face triangle (q0, q1, q2)
+            // (adjacency block triangle_count + 2 quad) for m < 2, edge 1 or 2 of (q0, q2, q3) (the next) after.
+            let face = triangle_count() + 2u * (t - triangle_count());
+            for (var k = 0u; k < 4u; k++) {
+                let m = (k + rot) % 4u;
+                en[k] = EdgeNormals(q[k].normal, q[(k + 1u) % 4u].normal);
+                if (aen) { en[k] = adjacent_normals(face + select(0u, 1u, m >= 2u), select(m, m - 1u, m >= 2u), q[k], q[(k + 1u) % 4u]); }
+            }
+            vertices_a = quad_halves(rec, &halves, &words).x;
+        } else {
+            let w = base_triangle(t);
+            if (!base_triangle_valid(w)) { continue; }
+            q[0] = mesh_corner(w.x);
+            q[1] = mesh_corner(w.y);
+            q[2] = mesh_corner(w.z);
+            q[3] = q[0];
+            for (var e = 0u; e < 3u; e++) {
+                en[e] = EdgeNormals(q[e].normal, q[(e + 1u) % 3u].normal);
+                if (aen) { en[e] = adjacent_normals(t, e, q[e], q[(e + 1u) % 3u]); }
+            }
+            if (!uniform_) { halves[0] = record_patch(rec); }
+            words[0] = uniform_words(rec);
         }
+        let first = patches[rec + REC_FIRST_VERTEX];
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
+            let side = select(1u, 0u, i < vertices_a);
+            let local = select(i - vertices_a, i, side == 0u);
             var d: vec2<u32>;
-            if (uniform_) { d = uniform_vertex(words, i); } else { d = patch_vertex(&p, i); }
-            // to_base_point: pattern weights (1 - u - v, u, v) move to base vertices (k + rot) % 3 (uniform: rot 0)
-            var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
-            var bw: array<u32, 3>;
-            for (var k = 0u; k < 3u; k++) { bw[(k + rot) % 3u] = pw[k]; }
+            if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
+            // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
+            // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
+            // q_k+2) with weights (1 - r, r, 0), the operations the neighbour across the edge runs (quad_vertex on
+            // the CPU); a point inside a quad goes to quad_interior.
+            var tri = array<Corner, 3>(q[0], q[1], q[2]);
+            var w3: array<u32, 3>;
+            var en3 = array<EdgeNormals, 3>(en[0], en[1], en[2]);
+            var inner = false;
+            var out_uv: vec2<u32>;
+            if (quad) {
+                if (side == 1u) { d = vec2<u32>(FIXED_ONE - d.x, FIXED_ONE - d.y); } // half B: cp::quad_point
+                out_uv = d;
+                var on_edge = array<bool, 4>(d.y == 0u, d.x == FIXED_ONE, d.y == FIXED_ONE, d.x == 0u);
+                var r = array<u32, 4>(d.x, d.y, FIXED_ONE - d.x, FIXED_ONE - d.y);
+                var k = 4u;
+                for (var e = 0u; e < 4u && k == 4u; e++) { if (on_edge[e]) { k = e; } }
+                inner = k == 4u;
+                if (!inner) {
+                    tri = array<Corner, 3>(q[k], q[(k + 1u) % 4u], q[(k + 2u) % 4u]);
+                    w3 = array<u32, 3>(FIXED_ONE - r[k], r[k], 0u);
+                    // Edge k's neighbours; the triangle's other two edges are its own boundary.
+                    en3 = array<EdgeNormals, 3>(en[k], EdgeNormals(tri[1].normal, tri[2].normal), EdgeNormals(tri[2].normal, tri[0].normal));
+                }
+            } else {
+                var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
+                for (var k = 0u; k < 3u; k++) { w3[(k + rot) % 3u] = pw[k]; }
+                out_uv = vec2<u32>(w3[1], w3[2]);
+            }
             var sp: SurfacePoint;
-            if (aen) { sp = evaluate_surface_aen(c, en, bw, alpha); } else { sp = evaluate_surface(c, bw, surface, alpha); }
-            store_vertex((first + i) * VERTEX_WORDS, bw[1], bw[2], sp);
+            if (inner) {
+                sp = quad_interior(q, en, aen, out_uv.x, out_uv.y, surface, alpha);
+            } else if (aen) {
+                sp = evaluate_surface_aen(tri, en3, w3, alpha);
+            } else {
+                sp = evaluate_surface(tri, w3, surface, alpha);
+            }
+            store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }
 }
 
-// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices.
+// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices (a quad's
+// half B after A, its indices after A's vertices). One call site per pattern function, as in pass 3.
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                         @builtin(local_invocation_id) lid: vec3<u32>) {
     let end = min(params[PARAM_END_PATCH], patch_count());
+    let uniform_ = uniform_pattern();
     for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) { continue; }
-        let quad = t >= triangle_count();
-        let uniform_ = uniform_pattern();
-        var p: Patch;
-        var pb: Patch;
-        var h: QuadHalves;
-        if (quad) { h = quad_halves(rec, &p, &pb); } else if (!uniform_) { p = record_patch(rec); }
-        let words = uniform_words(rec);
+        var halves: array<Patch, 2>;
+        var words: array<vec3<u32>, 2>;
+        var counts_a = vec2<u32>(0u, count);
+        if (t >= triangle_count()) {
+            counts_a = quad_halves(rec, &halves, &words);
+        } else {
+            if (!uniform_) { halves[0] = record_patch(rec); }
+            words[0] = uniform_words(rec);
+        }
         let vfirst = patches[rec + REC_FIRST_VERTEX];
         let tfirst = patches[rec + REC_FIRST_TRIANGLE];
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
+            let side = select(1u, 0u, i < counts_a.y);
+            let local = select(i - counts_a.y, i, side == 0u);
             var tri: vec3<u32>;
-            if (quad) {
-                tri = quad_triangle(h, &p, &pb, i);
-            } else if (uniform_) {
-                tri = uniform_triangle(words, i);
-            } else {
-                tri = patch_triangle(&p, i);
-            }
-            tri += vec3<u32>(vfirst);
+            if (uniform_) { tri = uniform_triangle(words[side], local); } else { tri = patch_triangle(&halves[side], local); }
+            tri += vec3<u32>(vfirst + select(counts_a.x, 0u, side == 0u));
             let o = 3u * (tfirst + i);
             out_indices[o] = tri.x;
             out_indices[o + 1u] = tri.y;
