@@ -1136,20 +1136,23 @@ void ctess_prefix_sum() {
     }
 }
 
-// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex. One
-// loop for triangles and quads, with one call site of each pattern and surface function, so that a compiler
-// that inlines everything keeps one copy of each (docs/shaders.md, "Quads").
-void ctess_emit_vertices() {
-    uint end = min(params[PARAM_END_PATCH], patch_count());
+// Passes 3 and 4 (vertices), a workgroup per patch (looping when there are more patches than workgroups): every
+// output vertex of the emit range's triangles (quad_pass false: ctess_emit_vertices) or quads (true:
+// ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
+// adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
+// pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
+void emit_vertices(bool quad_pass) {
+    uint first_patch = quad_pass ? max(params[PARAM_FIRST_PATCH], triangle_count()) : params[PARAM_FIRST_PATCH];
+    uint end = min(params[PARAM_END_PATCH], quad_pass ? patch_count() : triangle_count());
     float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
     uint surface = params[PARAM_SURFACE];
     bool aen = surface == SURFACE_PN_AEN;
     bool uniform_ = uniform_pattern();
-    for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
         if (count == 0u) continue;
-        bool quad = t >= triangle_count();
+        bool quad = quad_pass;
         uint rot = patches[rec + REC_ROTATION];
         // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a
         // triangle; adj_from[k], adj_to[k]: the neighbour's normals on edge k (the own ones unless PN-AEN).
@@ -1231,19 +1234,23 @@ void ctess_emit_vertices() {
     }
 }
 
-// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices (a quad's
-// half B after A, its indices after A's vertices). One call site per pattern function, as in pass 3.
-void ctess_emit_triangles() {
-    uint end = min(params[PARAM_END_PATCH], patch_count());
+void ctess_emit_vertices() { emit_vertices(false); }
+void ctess_emit_quad_vertices() { emit_vertices(true); }
+
+// Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices
+// (a quad's half B after A, its indices after A's vertices).
+void emit_triangles(bool quad_pass) {
+    uint first_patch = quad_pass ? max(params[PARAM_FIRST_PATCH], triangle_count()) : params[PARAM_FIRST_PATCH];
+    uint end = min(params[PARAM_END_PATCH], quad_pass ? patch_count() : triangle_count());
     bool uniform_ = uniform_pattern();
-    for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) continue;
         Patch halves[2];
         uvec3 words[2];
         uvec2 counts_a = uvec2(0u, count);
-        if (t >= triangle_count()) {
+        if (quad_pass) {
             counts_a = quad_halves(rec, halves, words);
         } else {
             halves[0] = uniform_ ? patch_zero() : record_patch(rec);
@@ -1263,5 +1270,8 @@ void ctess_emit_triangles() {
         }
     }
 }
+
+void ctess_emit_triangles() { emit_triangles(false); }
+void ctess_emit_quad_triangles() { emit_triangles(true); }
 
 void main() { {{ENTRY}}(); }

@@ -1139,22 +1139,23 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     }
 }
 
-// Pass 3, a workgroup per patch (looping when there are more patches than workgroups): every output vertex. One
-// loop for triangles and quads, with one call site of each pattern and surface function, so that a compiler
-// that inlines everything keeps one copy of each (docs/shaders.md, "Quads").
-@compute @workgroup_size(EMIT_GROUP)
-fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
-                       @builtin(local_invocation_id) lid: vec3<u32>) {
-    let end = min(params[PARAM_END_PATCH], patch_count());
+// Passes 3 and 4 (vertices), a workgroup per patch (looping when there are more patches than workgroups): every
+// output vertex of the emit range's triangles (quad_pass false: ctess_emit_vertices) or quads (true:
+// ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
+// adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
+// pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
+fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
+    let first_patch = select(params[PARAM_FIRST_PATCH], max(params[PARAM_FIRST_PATCH], triangle_count()), quad_pass);
+    let end = min(params[PARAM_END_PATCH], select(triangle_count(), patch_count(), quad_pass));
     let alpha = bitcast<f32>(params[PARAM_ALPHA]);
     let surface = params[PARAM_SURFACE];
     let aen = surface == SURFACE_PN_AEN;
     let uniform_ = uniform_pattern();
-    for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
+    for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
         if (count == 0u) { continue; }
-        let quad = t >= triangle_count();
+        let quad = quad_pass;
         let rot = patches[rec + REC_ROTATION];
         // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a
         // triangle; en[k]: the neighbour's normals on edge k (the own ones unless PN-AEN).
@@ -1238,21 +1239,31 @@ fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workg
     }
 }
 
-// Pass 4, a workgroup per patch: every output triangle, in provoking-vertex order, as mesh-wide indices (a quad's
-// half B after A, its indices after A's vertices). One call site per pattern function, as in pass 3.
 @compute @workgroup_size(EMIT_GROUP)
-fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
-                        @builtin(local_invocation_id) lid: vec3<u32>) {
-    let end = min(params[PARAM_END_PATCH], patch_count());
+fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                       @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(false, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                            @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(true, wid, groups, lid);
+}
+
+// Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices
+// (a quad's half B after A, its indices after A's vertices).
+fn emit_triangles(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
+    let first_patch = select(params[PARAM_FIRST_PATCH], max(params[PARAM_FIRST_PATCH], triangle_count()), quad_pass);
+    let end = min(params[PARAM_END_PATCH], select(triangle_count(), patch_count(), quad_pass));
     let uniform_ = uniform_pattern();
-    for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
+    for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) { continue; }
         var halves: array<Patch, 2>;
         var words: array<vec3<u32>, 2>;
         var counts_a = vec2<u32>(0u, count);
-        if (t >= triangle_count()) {
+        if (quad_pass) {
             counts_a = quad_halves(rec, &halves, &words);
         } else {
             if (!uniform_) { halves[0] = record_patch(rec); }
@@ -1272,4 +1283,14 @@ fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_work
             out_indices[o + 2u] = tri.z;
         }
     }
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                        @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_triangles(false, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_quad_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                             @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_triangles(true, wid, groups, lid);
 }

@@ -54,10 +54,11 @@ export class MeshPipeline {
         // Compiled concurrently (each pipeline compiles the whole module: seconds on a software adapter).
         const make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
         const pass = Object.fromEntries(layout.passes.map((x) => [x.name, x]));
-        const made = await Promise.all([pass.patch_setup, pass.prefix_sum, pass.emit_vertices, pass.emit_triangles]
-            .map((x) => make(x.entry)).concat(extraEntryPoints.map(make)));
-        [p.setup, p.scan, p.emitVertices, p.emitTriangles] = made;
-        extraEntryPoints.forEach((name, k) => { p.extra[name] = made[4 + k]; });
+        const own = [pass.patch_setup, pass.prefix_sum, pass.emit_vertices, pass.emit_triangles, pass.emit_quad_vertices,
+                     pass.emit_quad_triangles];
+        const made = await Promise.all(own.map((x) => make(x.entry)).concat(extraEntryPoints.map(make)));
+        [p.setup, p.scan, p.emitVertices, p.emitTriangles, p.emitQuadVertices, p.emitQuadTriangles] = made;
+        extraEntryPoints.forEach((name, k) => { p.extra[name] = made[own.length + k]; });
         const err = await device.popErrorScope();
         if (err) throw new Error(err.message);
         return p;
@@ -240,9 +241,13 @@ export class MeshPipeline {
                 batchParams[C.PARAM_FIRST_PATCH] = first;
                 batchParams[C.PARAM_END_PATCH] = end;
                 this.device.queue.writeBuffer(bParams, 0, batchParams);
-                const groups = Math.min(end - first, maxGroups);
-                milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices],
-                                                    [[this.emitVertices, groups], [this.emitTriangles, groups]]);
+                // The batch's triangles and quads go to their own entry points (the quads are the last patches).
+                const triangles = n - quads;
+                const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
+                    .map((count) => Math.min(count, maxGroups));
+                const passes = [[this.emitVertices, groups[0]], [this.emitTriangles, groups[0]],
+                                [this.emitQuadVertices, groups[1]], [this.emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
+                milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
                 first = end;
             }
             return await scoped({ patches, vertexCount, triangleCount, vertices, indices, milliseconds });

@@ -43,7 +43,8 @@ std::string first_match(const std::string& text, const char* pattern) {
     return std::regex_search(text, m, std::regex(pattern)) ? m.str() : std::string();
 }
 
-const char* pass_names[] = {"patch_setup", "prefix_sum", "emit_vertices", "emit_triangles"};
+const char* pass_names[] = {"patch_setup",    "prefix_sum",         "emit_vertices",
+                            "emit_triangles", "emit_quad_vertices", "emit_quad_triangles"};
 
 } // namespace
 
@@ -83,8 +84,9 @@ TEST_CASE("layout.json and the generated shaders hold every constant's value") {
         CHECK(contains(json, "\"max_vertices\": " + std::to_string(ctess::rt::max_pipeline_vertices)));
         CHECK(contains(json, "\"max_triangles\": " + std::to_string(ctess::rt::max_pipeline_triangles)));
         const unsigned sizes[] = {ctess::gen::setup_workgroup, ctess::gen::scan_workgroup,
-                                  ctess::gen::emit_workgroup, ctess::gen::emit_workgroup};
-        for (std::size_t k = 0; k < 4; ++k) {
+                                  ctess::gen::emit_workgroup,  ctess::gen::emit_workgroup,
+                                  ctess::gen::emit_workgroup,  ctess::gen::emit_workgroup};
+        for (std::size_t k = 0; k < std::size(pass_names); ++k) {
             INFO(pass_names[k]);
             CHECK(contains(json, std::string("\"name\": \"") + pass_names[k] + "\", \"entry\": \"ctess_" +
                                      pass_names[k] + "\", \"workgroup_size\": " + std::to_string(sizes[k])));

@@ -39,8 +39,9 @@ std::vector<std::uint32_t> read_words(const std::string& path) {
     return words;
 }
 
-constexpr const char* pass_suffix[4] = {"_patch_setup.spv", "_prefix_sum.spv", "_emit_vertices.spv",
-                                        "_emit_triangles.spv"};
+constexpr const char* pass_suffix[MeshPipeline::passes] = {
+    "_patch_setup.spv",    "_prefix_sum.spv",         "_emit_vertices.spv",
+    "_emit_triangles.spv", "_emit_quad_vertices.spv", "_emit_quad_triangles.spv"};
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -86,7 +87,7 @@ MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsig
         pl.setLayoutCount = 1;
         pl.pSetLayouts = &set_layout_;
         check(vkCreatePipelineLayout(device_, &pl, nullptr, &pipeline_layout_), "vkCreatePipelineLayout");
-        for (unsigned k = 0; k < 4; ++k) {
+        for (unsigned k = 0; k < passes; ++k) {
             const std::vector<std::uint32_t> code =
                 read_words(shader_file(shader_dir, max_factor, pass_suffix[k]));
             auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
@@ -140,7 +141,7 @@ MeshPipeline& MeshPipeline::operator=(MeshPipeline&& other) noexcept {
     max_factor_ = other.max_factor_;
     set_layout_ = std::exchange(other.set_layout_, VK_NULL_HANDLE);
     pipeline_layout_ = std::exchange(other.pipeline_layout_, VK_NULL_HANDLE);
-    for (unsigned k = 0; k < 4; ++k) {
+    for (unsigned k = 0; k < passes; ++k) {
         modules_[k] = std::exchange(other.modules_[k], VK_NULL_HANDLE);
         pipelines_[k] = std::exchange(other.pipelines_[k], VK_NULL_HANDLE);
     }
@@ -183,18 +184,22 @@ void MeshPipeline::record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::
     compute_barrier(cmd);
 }
 
-void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
-                               std::uint32_t max_workgroups) const {
-    if (patch_count == 0) return;
+void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
+                               std::uint32_t quad_patches, std::uint32_t max_workgroups) const {
+    if (triangle_patches == 0 && quad_patches == 0) return;
     if (max_workgroups == 0) max_workgroups = 1;
-    const std::uint32_t groups = rt::gpu::emit_workgroups(patch_count, max_workgroups);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2]);
-    vkCmdDispatch(cmd, groups, 1, 1);
-    compute_barrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[3]);
-    vkCmdDispatch(cmd, groups, 1, 1);
+    // Vertices, then triangles, of the triangles (passes 2, 3) and of the quads (4, 5).
+    const std::uint32_t count[2] = {triangle_patches, quad_patches};
+    for (unsigned kind = 0; kind < 2; ++kind) {
+        if (count[kind] == 0) continue;
+        const std::uint32_t groups = rt::gpu::emit_workgroups(count[kind], max_workgroups);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2 + 2 * kind]);
+        vkCmdDispatch(cmd, groups, 1, 1);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[3 + 2 * kind]);
+        vkCmdDispatch(cmd, groups, 1, 1);
+    }
 }
 
 // ---- Runner ----
@@ -516,8 +521,12 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     const Device::Buffer b_out_indices = make(std::uint64_t{out.totals.triangles} * 12, nullptr, 0);
     const VkDescriptorSet emit_set = descriptor_set(b_vertices.buffer, b_out_indices.buffer);
     out.milliseconds += d.submit([&](VkCommandBuffer cmd) {
-        d.pipeline->record_emit(cmd, emit_set, params[pw::end_patch] - params[pw::first_patch],
-                                run.max_workgroups);
+        // The emit range [first, end) split at the first quad.
+        const std::uint32_t first = params[pw::first_patch], end = params[pw::end_patch],
+                            triangles = n - quads;
+        const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
+        d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
+                                end > quad_first ? end - quad_first : 0, run.max_workgroups);
     });
     out.vertices.resize(out.totals.vertices);
     if (!out.vertices.empty())

@@ -11,7 +11,7 @@
 //   // rt::gpu::pipeline_params, the patches buffer rt::gpu::patch_buffer_words(n) words
 //   pipeline.record_counts(cmd, set, n);   // setup + prefix sum; read the totals after the records,
 //   ...                                    // size the outputs, bind them
-//   pipeline.record_emit(cmd, set, n);     // vertices + triangles
+//   pipeline.record_emit(cmd, set, t, q);  // vertices + triangles of the t triangles and q quads
 //
 // Runner is the whole round trip on host-visible buffers, for tools and tests (tests/gpu, the consumer
 // example in docs/shaders.md): its own instance and device (the loader's first device with a compute queue;
@@ -53,9 +53,9 @@ std::string shader_file(const std::string& shader_dir, unsigned max_factor, cons
 std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsigned max_factor,
                                            rt::Pattern pattern);
 
-// The four compute pipelines (patch setup, prefix sum, emit vertices, emit triangles) on a device, with the
-// descriptor set layout of rt::gpu::binding (seven storage buffers, compute stage). Move-only; destroys what
-// it created, so destroy it before the device.
+// The six compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles, and
+// of the quads) on a device, with the descriptor set layout of rt::gpu::binding (seven storage buffers,
+// compute stage). Move-only; destroys what it created, so destroy it before the device.
 class MeshPipeline {
   public:
     MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor);
@@ -83,11 +83,14 @@ class MeshPipeline {
     // host, add a compute-to-host (or -transfer) barrier after it.
     void record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                        std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
-    // Records both emit passes for the params' patch range [first, end) (patch_count = end - first), with a
-    // barrier before (for the counts) and between; to draw the outputs, add a compute-to-vertex-input (and
-    // index-read) barrier after it.
-    void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+    // Records the emit passes for the params' patch range [first, end), which holds triangle_patches base
+    // triangles and quad_patches quads (a pass with none is skipped), with a barrier before (for the counts);
+    // to draw the outputs, add a compute-to-vertex-input (and index-read) barrier after it.
+    void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
+                     std::uint32_t quad_patches,
                      std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+
+    static constexpr unsigned passes = 6;
 
   private:
     void destroy() noexcept;
@@ -95,8 +98,8 @@ class MeshPipeline {
     unsigned max_factor_ = 0;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-    VkShaderModule modules_[4] = {};
-    VkPipeline pipelines_[4] = {}; // setup, prefix sum, emit vertices, emit triangles
+    VkShaderModule modules_[passes] = {};
+    VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
