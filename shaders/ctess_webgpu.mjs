@@ -196,7 +196,9 @@ export class MeshPipeline {
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
         const temporary = [];
+        let scopes = 2; // still pushed
         const scoped = async (result) => {
+            scopes = 0;
             const validation = await this.device.popErrorScope();
             const memory = await this.device.popErrorScope();
             if (validation || memory) throw new Error(`WebGPU: ${(validation ?? memory).message}`);
@@ -252,8 +254,7 @@ export class MeshPipeline {
             }
             return await scoped({ patches, vertexCount, triangleCount, vertices, indices, milliseconds });
         } catch (e) {
-            await this.device.popErrorScope().catch(() => {});
-            await this.device.popErrorScope().catch(() => {});
+            for (; scopes > 0; scopes--) await this.device.popErrorScope().catch(() => {});
             throw e;
         } finally {
             for (const b of temporary) b.destroy();
