@@ -40,11 +40,13 @@ PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits 
     PipelineOutput out;
     out.milliseconds = gpu.milliseconds;
     out.patches.resize(gpu.patches.size() * patch_words + gen::totals_words);
-    std::memcpy(out.patches.data(), gpu.patches.data(), gpu.patches.size() * sizeof(rt::PatchRecord));
+    if (!gpu.patches.empty()) // memcpy with a null pointer is undefined even for 0 bytes
+        std::memcpy(out.patches.data(), gpu.patches.data(), gpu.patches.size() * sizeof(rt::PatchRecord));
     out.patches[gpu.patches.size() * patch_words] = gpu.totals.vertices;
     out.patches[gpu.patches.size() * patch_words + 1] = gpu.totals.triangles;
     out.vertices.resize(gpu.vertices.size() * vertex_words);
-    std::memcpy(out.vertices.data(), gpu.vertices.data(), gpu.vertices.size() * sizeof(rt::TessVertex));
+    if (!gpu.vertices.empty())
+        std::memcpy(out.vertices.data(), gpu.vertices.data(), gpu.vertices.size() * sizeof(rt::TessVertex));
     out.indices = gpu.indices;
     return out;
 }
