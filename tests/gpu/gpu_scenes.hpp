@@ -153,6 +153,15 @@ inline Scene icosphere(unsigned subdivisions, rt::Surface surface, float dice_ra
     return s;
 }
 
+// The scene's PN-AEN adjacency from models::build_adjacency (meshoptimizer), as `ctess mesh` computes it.
+inline void add_adjacency(Scene& s) {
+    models::Model model;
+    model.vertices = s.vertices;
+    model.triangles = s.indices;
+    model.quads = s.quads;
+    s.adjacency = models::build_adjacency(model).tessellation_indices;
+}
+
 // icosphere() cut into the 20 regions of its base icosahedron's faces, each region with its own copies of its
 // vertices: along a region border one position carries two vertices, always with different uvs (a uv seam)
 // and, where either region is odd, with different normals (a hard edge: odd regions tilt their normals their
@@ -180,10 +189,7 @@ inline Scene split_normal_icosphere(unsigned subdivisions, rt::Surface surface, 
         }
         detail::push_vertex(s, {a[0], a[1], a[2]}, n, a[6] + 0.05f * static_cast<float>(region), a[7]);
     }
-    models::Model model;
-    model.vertices = s.vertices;
-    model.triangles = s.indices;
-    s.adjacency = models::build_adjacency(model).tessellation_indices;
+    add_adjacency(s);
     return s;
 }
 

@@ -278,33 +278,41 @@ TEST_CASE("GPU parity, quads: a mixed grid (every fourth cell a quad), CP and un
 }
 
 namespace {
-// The GPU output of a closed mixed torus is closed by exact position bits (the independent weld of the CPU
-// tests), and equals the CPU's.
-void check_mixed_torus(unsigned max_factor, rt::Surface surface, rt::Pattern pattern, rt::QuadRule rule) {
-    const pipeline_fixtures::Model torus = pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed);
+// A pipeline_fixtures torus as a scene, seen from outside at DiceRate 2 with the surface given.
+Scene torus_scene(const pipeline_fixtures::Model& torus, rt::Surface surface) {
     Scene scene;
     scene.vertices = torus.vertices;
     scene.indices = torus.triangles;
     scene.quads = torus.quads;
-    scene.options.pattern = pattern;
-    scene.options.quad_rule = rule;
     scene.options.surface = {surface, 1.0f};
     scene.options.dice.eye = {2.0f, 3.0f, 9.0f};
     scene.options.dice.projection_scale = 300.0f;
     scene.options.dice.dice_rate = 2.0f;
+    return scene;
+}
+
+// Closed by exact position bits: the independent weld of the CPU tests.
+bool closed_by_position(const PipelineOutput& out) {
+    std::vector<rt::TessVertex> vertices(out.total_vertices());
+    std::memcpy(static_cast<void*>(vertices.data()), out.vertices.data(),
+                vertices.size() * sizeof(rt::TessVertex));
+    return pipeline_fixtures::closed_manifold(
+        pipeline_fixtures::directed_edges(out.indices, pipeline_fixtures::weld_ids(vertices, false)));
+}
+
+// The GPU output of a closed mixed torus is closed by position and equals the CPU's.
+void check_mixed_torus(unsigned max_factor, rt::Surface surface, rt::Pattern pattern, rt::QuadRule rule) {
+    Scene scene = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed), surface);
+    scene.options.pattern = pattern;
+    scene.options.quad_rule = rule;
     const char* work = pattern == rt::Pattern::uniform ? "torus_uniform" : "torus";
     const PipelineOutput gpu = run_gpu(max_factor, scene, work);
-    std::vector<rt::TessVertex> vertices(gpu.total_vertices());
-    std::memcpy(static_cast<void*>(vertices.data()), gpu.vertices.data(),
-                vertices.size() * sizeof(rt::TessVertex));
-    const pipeline_fixtures::EdgeCounts edges =
-        pipeline_fixtures::directed_edges(gpu.indices, pipeline_fixtures::weld_ids(vertices, false));
     std::printf("%s, max %u, %s, %s mixed torus (%zu quads, %zu triangles): %u vertices, %u triangles\n",
                 backend_name, max_factor, pattern_name(pattern), surface_name(surface),
                 scene.quads.size() / 4, scene.indices.size() / 3, gpu.total_vertices(),
                 gpu.total_triangles());
     CHECK(gpu.total_triangles() > 20 * scene.patch_count());
-    CHECK(pipeline_fixtures::closed_manifold(edges));
+    CHECK(closed_by_position(gpu));
     const Comparison c = compare(run_cpu(tables_for(max_factor), scene), gpu);
     INFO(c.first_difference);
     CHECK(c.equal());
@@ -454,7 +462,7 @@ namespace {
 // hard edge and a uv seam; adjacency from meshoptimizer (models::build_adjacency), quads included.
 Scene faceted_mixed_torus(rt::Surface surface) {
     const pipeline_fixtures::Model smooth = pipeline_fixtures::torus(16, 8, pipeline_fixtures::Faces::mixed);
-    Scene s;
+    pipeline_fixtures::Model faceted;
     std::uint32_t face = 0;
     const auto copy = [&](std::uint32_t v) {
         const float* a = &smooth.vertices[std::size_t{v} * rt::mesh_vertex_floats];
@@ -463,30 +471,15 @@ Scene faceted_mixed_torus(rt::Surface surface) {
             rt::normalize_or_zero(rt::Vec3{a[3], a[4], a[5]} +
                                   0.4f * rt::Vec3{detail::unit(seed) - 0.5f, detail::unit(seed + 1) - 0.5f,
                                                   detail::unit(seed + 2) - 0.5f});
-        detail::push_vertex(s, {a[0], a[1], a[2]}, n, a[6] + 0.01f * static_cast<float>(face), a[7]);
-        return static_cast<std::uint32_t>(s.vertices.size() / rt::mesh_vertex_floats - 1);
+        return faceted.add(a[0], a[1], a[2], n.x, n.y, n.z, a[6] + 0.01f * static_cast<float>(face), a[7]);
     };
     for (std::size_t k = 0; k < smooth.triangles.size(); k += 3, ++face)
-        for (unsigned c = 0; c < 3; ++c) s.indices.push_back(copy(smooth.triangles[k + c]));
+        for (unsigned c = 0; c < 3; ++c) faceted.triangles.push_back(copy(smooth.triangles[k + c]));
     for (std::size_t k = 0; k < smooth.quads.size(); k += 4, ++face)
-        for (unsigned c = 0; c < 4; ++c) s.quads.push_back(copy(smooth.quads[k + c]));
-    models::Model model;
-    model.vertices = s.vertices;
-    model.triangles = s.indices;
-    model.quads = s.quads;
-    s.adjacency = models::build_adjacency(model).tessellation_indices;
-    s.options.surface = {surface, 1.0f};
-    s.options.dice.eye = {2.0f, 3.0f, 9.0f};
-    s.options.dice.projection_scale = 300.0f;
+        for (unsigned c = 0; c < 4; ++c) faceted.quads.push_back(copy(smooth.quads[k + c]));
+    Scene s = torus_scene(faceted, surface);
+    add_adjacency(s);
     return s;
-}
-
-bool closed_by_position(const PipelineOutput& out) {
-    std::vector<rt::TessVertex> vertices(out.total_vertices());
-    std::memcpy(static_cast<void*>(vertices.data()), out.vertices.data(),
-                vertices.size() * sizeof(rt::TessVertex));
-    return pipeline_fixtures::closed_manifold(
-        pipeline_fixtures::directed_edges(out.indices, pipeline_fixtures::weld_ids(vertices, false)));
 }
 } // namespace
 
