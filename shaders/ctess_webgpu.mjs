@@ -51,13 +51,14 @@ export class MeshPipeline {
             entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < C.READ_ONLY_BINDINGS ? 'read-only-storage' : 'storage' } });
         p.layout = device.createBindGroupLayout({ entries });
         const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
-        // Compiled concurrently (each pipeline compiles the whole module: seconds on a software adapter).
-        const make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
+        // Compiled concurrently (seconds each on a software adapter). The two quad passes hold about half of the
+        // module's code: they compile on the first run with quads, so a triangle mesh never waits for them.
+        p.make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
         const pass = Object.fromEntries(layout.passes.map((x) => [x.name, x]));
-        const own = [pass.patch_setup, pass.prefix_sum, pass.emit_vertices, pass.emit_triangles, pass.emit_quad_vertices,
-                     pass.emit_quad_triangles];
-        const made = await Promise.all(own.map((x) => make(x.entry)).concat(extraEntryPoints.map(make)));
-        [p.setup, p.scan, p.emitVertices, p.emitTriangles, p.emitQuadVertices, p.emitQuadTriangles] = made;
+        p.quadEntries = [pass.emit_quad_vertices.entry, pass.emit_quad_triangles.entry];
+        const own = [pass.patch_setup, pass.prefix_sum, pass.emit_vertices, pass.emit_triangles];
+        const made = await Promise.all(own.map((x) => p.make(x.entry)).concat(extraEntryPoints.map(p.make)));
+        [p.setup, p.scan, p.emitVertices, p.emitTriangles] = made;
         extraEntryPoints.forEach((name, k) => { p.extra[name] = made[own.length + k]; });
         const err = await device.popErrorScope();
         if (err) throw new Error(err.message);
@@ -192,6 +193,7 @@ export class MeshPipeline {
         for (const [what, words] of [['mesh vertices', meshVertices.length], ['mesh indices', meshIndices.length], ['patch records', patchWords]])
             if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
+        if (quads > 0) await this.quadPipelines();
         // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
@@ -259,6 +261,18 @@ export class MeshPipeline {
         } finally {
             for (const b of temporary) b.destroy();
         }
+    }
+
+    // The quad passes' pipelines, compiled once, on the first run with quads.
+    quadPipelines() {
+        if (!this.quadsMade) {
+            this.quadsMade = Promise.all(this.quadEntries.map(this.make)).then(([vertices, triangles]) => {
+                this.emitQuadVertices = vertices;
+                this.emitQuadTriangles = triangles;
+            });
+            this.quadsMade.catch(() => { this.quadsMade = null; });
+        }
+        return this.quadsMade;
     }
 
     // Frees the table blobs (the pipelines need no freeing).

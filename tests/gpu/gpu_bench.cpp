@@ -87,8 +87,10 @@ int main(int argc, char** argv) {
                         const PipelineOutput gpu =
                             backend[0] == 'l'
                                 ? run_vulkan(*runners[b], s.scene)
-                                : run_dawn(CTESS_NODE, CTESS_RUN_WGSL, builds[b].dir, 64, s.scene,
-                                           std::string(CTESS_WORK_DIR) + "/bench_" + builds[b].label);
+                                : run_dawn(
+                                      CTESS_NODE, CTESS_RUN_WGSL, builds[b].dir, 64,
+                                      {{&s.scene, std::string(CTESS_WORK_DIR) + "/bench_" + builds[b].label}})
+                                      .front();
                         if (r < 0 && !same_output(cpu, gpu)) return 1;
                         if (r >= 0) ms[b].push_back(gpu.milliseconds);
                     }

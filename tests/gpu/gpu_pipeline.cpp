@@ -51,62 +51,63 @@ PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits 
     return out;
 }
 
+namespace {
+
 // Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[gen::param_word::words], vertex
-// floats, index word count, then the vertex floats and the index words (binding 3: mesh_index_words). Result
-// file: "CTGO", patch words, vertex words, index words, milliseconds (float bits), then the three arrays.
-PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
-                        unsigned max_factor, const Scene& scene, const std::string& work_file,
-                        RunLimits limits) {
+// floats, index word count, then the vertex floats and the index words (binding 3: mesh_index_words).
+void write_scene_file(const Scene& scene, const std::string& path) {
     const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
     const std::vector<std::uint32_t> index_words = mesh_index_words(scene);
-    const std::string scene_path = work_file + ".scene";
-    const std::string result_path = work_file + ".result";
-    {
-        std::ofstream f(scene_path, std::ios::binary);
-        const std::uint32_t head[] = {0x43535443u, 3u};
-        f.write(reinterpret_cast<const char*>(head), sizeof head);
-        f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
-        const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
-                                       static_cast<std::uint32_t>(index_words.size())};
-        f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);
-        f.write(reinterpret_cast<const char*>(scene.vertices.data()),
-                static_cast<std::streamsize>(scene.vertices.size() * 4));
-        f.write(reinterpret_cast<const char*>(index_words.data()),
-                static_cast<std::streamsize>(index_words.size() * 4));
-        if (!f) throw std::runtime_error("cannot write the scene file");
-    }
-    std::remove(result_path.c_str());
-    std::string cmd = "CTESS_MAX_WORKGROUPS=" + std::to_string(limits.max_workgroups) +
-                      (limits.counts_only ? " CTESS_COUNTS_ONLY=1 " : " ") + node;
-    cmd += " ";
-    cmd += script;
-    cmd += " ";
-    cmd += shader_dir;
-    cmd += " ";
-    cmd += std::to_string(max_factor);
-    cmd += " ";
-    cmd += scene_path;
-    cmd += " ";
-    cmd += result_path;
-    const int status = std::system(cmd.c_str());
-    if (WIFEXITED(status) && WEXITSTATUS(status) == run_wgsl_past_limits)
-        throw std::runtime_error(
-            "the mesh is past the pipeline's limits (run_wgsl.mjs recounted the totals)");
-    if (status != 0) {
-        std::string why = "the Dawn run failed: ";
-        why += cmd;
-        throw std::runtime_error(why);
-    }
-    const std::vector<std::uint32_t> r = read_result_words(result_path);
-    if (r.size() < 5 || r[0] != 0x4F475443u) throw std::runtime_error("bad Dawn result file");
+    std::ofstream f(path, std::ios::binary);
+    const std::uint32_t head[] = {0x43535443u, 3u};
+    f.write(reinterpret_cast<const char*>(head), sizeof head);
+    f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
+    const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
+                                   static_cast<std::uint32_t>(index_words.size())};
+    f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);
+    f.write(reinterpret_cast<const char*>(scene.vertices.data()),
+            static_cast<std::streamsize>(scene.vertices.size() * 4));
+    f.write(reinterpret_cast<const char*>(index_words.data()),
+            static_cast<std::streamsize>(index_words.size() * 4));
+    if (!f) throw std::runtime_error("cannot write the scene file " + path);
+}
+
+// Result file: "CTGO", patch words, vertex words, index words, milliseconds (float bits), then the three
+// arrays.
+PipelineOutput read_result_file(const std::string& path) {
+    const std::vector<std::uint32_t> r = read_result_words(path);
+    if (r.size() < 5 || r[0] != 0x4F475443u) throw std::runtime_error("bad Dawn result file " + path);
     const std::size_t np = r[1], nv = r[2], ni = r[3];
-    if (r.size() != 5 + np + nv + ni) throw std::runtime_error("truncated Dawn result file");
+    if (r.size() != 5 + np + nv + ni) throw std::runtime_error("truncated Dawn result file " + path);
     PipelineOutput out;
     out.milliseconds = bits_float(r[4]);
     out.patches.assign(r.begin() + 5, r.begin() + 5 + static_cast<std::ptrdiff_t>(np));
     out.vertices.assign(r.begin() + 5 + static_cast<std::ptrdiff_t>(np),
                         r.begin() + 5 + static_cast<std::ptrdiff_t>(np + nv));
     out.indices.assign(r.begin() + 5 + static_cast<std::ptrdiff_t>(np + nv), r.end());
+    return out;
+}
+
+} // namespace
+
+std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string& script,
+                                     const std::string& shader_dir, unsigned max_factor,
+                                     const std::vector<DawnJob>& jobs, RunLimits limits) {
+    std::string cmd = "CTESS_MAX_WORKGROUPS=" + std::to_string(limits.max_workgroups) +
+                      (limits.counts_only ? " CTESS_COUNTS_ONLY=1 " : " ") + node + " " + script + " " +
+                      shader_dir + " " + std::to_string(max_factor);
+    for (const DawnJob& job : jobs) {
+        write_scene_file(*job.scene, job.work_file + ".scene");
+        std::remove((job.work_file + ".result").c_str());
+        cmd += " " + job.work_file + ".scene " + job.work_file + ".result";
+    }
+    const int status = std::system(cmd.c_str());
+    if (WIFEXITED(status) && WEXITSTATUS(status) == run_wgsl_past_limits)
+        throw std::runtime_error(
+            "the mesh is past the pipeline's limits (run_wgsl.mjs recounted the totals)");
+    if (status != 0) throw std::runtime_error("the Dawn run failed: " + cmd);
+    std::vector<PipelineOutput> out;
+    for (const DawnJob& job : jobs) out.push_back(read_result_file(job.work_file + ".result"));
     return out;
 }
 

@@ -26,11 +26,16 @@ inline constexpr std::uint32_t totals_overflow = gen::totals_overflow;
 
 // Both throw std::runtime_error on failure, and when the totals overflow (unless counts_only).
 PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits limits = {});
-// Writes the scene next to out_dir, runs `node run_wgsl.mjs`, reads the result back. `node` is a shell
-// command prefix: the node binary, optionally preceded by environment assignments (the backend,
-// tests/gpu/CMakeLists.txt).
-PipelineOutput run_dawn(const std::string& node, const std::string& script, const std::string& shader_dir,
-                        unsigned max_factor, const Scene& scene, const std::string& work_file,
-                        RunLimits limits = {});
+// One scene of a Dawn run and the path its scene and result files start with.
+struct DawnJob {
+    const Scene* scene;
+    std::string work_file;
+};
+// Writes each job's scene file, runs `node run_wgsl.mjs` once for all of them (node and the pipelines start
+// once), reads the results back in job order. `node` is a shell command prefix: the node binary, optionally
+// preceded by environment assignments.
+std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string& script,
+                                     const std::string& shader_dir, unsigned max_factor,
+                                     const std::vector<DawnJob>& jobs, RunLimits limits = {});
 
 } // namespace ctess::gpu_test

@@ -1,5 +1,6 @@
-// Runs the generated WGSL mesh pipeline (either pattern) on Dawn (npm `webgpu`) and writes every output buffer to a file.
-//   node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE
+// Runs the generated WGSL mesh pipeline (either pattern) on Dawn (npm `webgpu`) and writes every output buffer to a file,
+// for one scene or several in turn (the device and pipelines are made once):
+//   node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE [SCENE_FILE RESULT_FILE ...]
 // Backend: Dawn's OpenGL ES backend on Mesa's llvmpipe in compatibility mode, with EGL_PLATFORM=surfaceless
 // (Dawn's Vulkan backend rejects bookworm's lavapipe 22.3, docs/shaders.md). CTESS_DAWN_BACKEND
 // overrides the backend flag (e.g. "vulkan" on a machine with a newer driver).
@@ -14,8 +15,9 @@ import { create, globals } from 'webgpu';
 
 Object.assign(globalThis, globals);
 const fail = (msg) => { console.error(`run_wgsl: ${msg}`); process.exit(1); };
-const [dir, max, scenePath, resultPath] = process.argv.slice(2);
-if (!resultPath) fail('usage: node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE');
+const [dir, max, ...files] = process.argv.slice(2);
+if (files.length === 0 || files.length % 2 !== 0)
+    fail('usage: node run_wgsl.mjs SHADER_DIR MAX_FACTOR SCENE_FILE RESULT_FILE [SCENE_FILE RESULT_FILE ...]');
 process.env.EGL_PLATFORM ??= 'surfaceless';
 const backend = process.env.CTESS_DAWN_BACKEND ?? 'opengles';
 // The instance stays referenced for the whole run: collected (it is not needed after requestAdapter), it
@@ -36,39 +38,43 @@ const load = (name) => {
 };
 const pipeline = await MeshPipeline.create(device, { maxFactor: Number(max), load }).catch((e) => fail(e.message));
 const C = pipeline.constants;
-const scene = new Uint32Array(readFileSync(scenePath).buffer.slice(0));
-if (scene[0] !== 0x43535443 || scene[1] !== 3) fail('bad scene file');
-const sizes = 2 + C.PARAMS_WORDS;
-const params = scene.slice(2, sizes);
-const vertexFloats = scene[sizes], indexCount = scene[sizes + 1];
-const meshVertices = scene.slice(sizes + 2, sizes + 2 + vertexFloats);
-const meshIndices = scene.slice(sizes + 2 + vertexFloats, sizes + 2 + vertexFloats + indexCount);
-const n = params[C.PARAM_PATCH_COUNT];
 const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
-// Emit in batches of about 128k vertices, one submit each (the emit passes' patch range), as a host that streams
-// a large mesh would.
-let out;
-try {
-    out = await pipeline.run(params, meshVertices, meshIndices, {
-        maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly, batchVertices: 1 << 17 });
-} catch (e) {
-    console.error(`run_wgsl: ${e.message}`);
-    process.exit(e.pastLimits ? 3 : 1);
-}
-const vertices = countsOnly ? new Uint32Array(0) : await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS);
-const indices = countsOnly ? new Uint32Array(0) : await pipeline.read(out.indices, out.triangleCount * 3);
-if (deviceError) fail(deviceError);
-const patches = out.patches, ms = out.milliseconds;
-
-const header = new Uint32Array([0x4F475443, patches.length, vertices.length, indices.length, 0]);
-new Float32Array(header.buffer, 16, 1)[0] = ms;
-const result = new Uint32Array(header.length + patches.length + vertices.length + indices.length);
-result.set(header, 0);
-result.set(patches, header.length);
-result.set(vertices, header.length + patches.length);
-result.set(indices, header.length + patches.length + vertices.length);
-writeFileSync(resultPath, result);
 const info = adapter.info ?? {};
-console.log(`run_wgsl: ${info.description ?? backend}: ${n} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles, ${ms.toFixed(2)} ms`);
+for (let job = 0; job < files.length; job += 2) {
+    const scene = new Uint32Array(readFileSync(files[job]).buffer.slice(0));
+    if (scene[0] !== 0x43535443 || scene[1] !== 3) fail('bad scene file');
+    const sizes = 2 + C.PARAMS_WORDS;
+    const params = scene.slice(2, sizes);
+    const vertexFloats = scene[sizes], indexCount = scene[sizes + 1];
+    const meshVertices = scene.slice(sizes + 2, sizes + 2 + vertexFloats);
+    const meshIndices = scene.slice(sizes + 2 + vertexFloats, sizes + 2 + vertexFloats + indexCount);
+    const n = params[C.PARAM_PATCH_COUNT];
+    // Emit in batches of about 128k vertices, one submit each (the emit passes' patch range), as a host that streams
+    // a large mesh would.
+    let out;
+    try {
+        out = await pipeline.run(params, meshVertices, meshIndices, {
+            maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly, batchVertices: 1 << 17 });
+    } catch (e) {
+        console.error(`run_wgsl: ${e.message}`);
+        process.exit(e.pastLimits ? 3 : 1);
+    }
+    const vertices = countsOnly ? new Uint32Array(0) : await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS);
+    const indices = countsOnly ? new Uint32Array(0) : await pipeline.read(out.indices, out.triangleCount * 3);
+    out.vertices?.destroy();
+    out.indices?.destroy();
+    if (deviceError) fail(deviceError);
+    const patches = out.patches, ms = out.milliseconds;
+
+    const header = new Uint32Array([0x4F475443, patches.length, vertices.length, indices.length, 0]);
+    new Float32Array(header.buffer, 16, 1)[0] = ms;
+    const result = new Uint32Array(header.length + patches.length + vertices.length + indices.length);
+    result.set(header, 0);
+    result.set(patches, header.length);
+    result.set(vertices, header.length + patches.length);
+    result.set(indices, header.length + patches.length + vertices.length);
+    writeFileSync(files[job + 1], result);
+    console.log(`run_wgsl: ${info.description ?? backend}: ${n} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles, ${ms.toFixed(2)} ms`);
+}
 device.destroy();
 process.exit(0);

@@ -1,13 +1,15 @@
-// The generated shaders against the CPU mesh pipeline, on one backend per build of this file:
-// CTESS_GPU_VULKAN (GLSL -> SPIR-V on lavapipe) or CTESS_GPU_DAWN (WGSL on Dawn: its GLES backend on
-// llvmpipe, or its Vulkan backend on SwiftShader, as tests/gpu/CMakeLists.txt sets the environment). Both
-// maximum factors run in every build. No test skips: a missing driver or node module is a failure.
+// The generated shaders against the CPU mesh pipeline, on the backend CTESS_GPU_BACKEND names: the GLSL as
+// SPIR-V on lavapipe, or the WGSL on Dawn (its GLES backend on llvmpipe, or its Vulkan backend on
+// SwiftShader), as tests/gpu/CMakeLists.txt sets the environment. Both maximum factors run on every backend.
+// No test skips: a missing driver or node module is a failure.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,12 +29,39 @@ const rt::CpTableSet& tables_for(unsigned max_factor) {
     return max_factor == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
 }
 
-#if defined(CTESS_GPU_VULKAN)
-const char* const backend_name = "Vulkan (lavapipe)";
+// The backend of this run: CTESS_GPU_BACKEND, which tests/gpu/CMakeLists.txt sets per ctest variant. One
+// executable serves all three, so it compiles once.
+enum class Backend { vulkan, dawn, dawn_swiftshader };
+Backend backend() {
+    static const Backend chosen = [] {
+        const char* name = std::getenv("CTESS_GPU_BACKEND");
+        const std::string value = name ? name : "";
+        if (value == "vulkan") {
+            setenv("VK_DRIVER_FILES", CTESS_LAVAPIPE_ICD, 1); // before the runner makes its instance
+            return Backend::vulkan;
+        }
+        if (value == "dawn") return Backend::dawn;
+        if (value == "dawn_swiftshader") return Backend::dawn_swiftshader;
+        throw std::runtime_error("set CTESS_GPU_BACKEND to vulkan, dawn or dawn_swiftshader (ctest does)");
+    }();
+    return chosen;
+}
+// The node command: Dawn's GLES backend by default (run_wgsl.mjs), its Vulkan backend on SwiftShader for the
+// second implementation (XDG_RUNTIME_DIR: the Vulkan loader complains without it, harmlessly).
+std::string node_command() {
+    if (backend() == Backend::dawn) return CTESS_NODE;
+    return "CTESS_DAWN_BACKEND=vulkan VK_DRIVER_FILES=" CTESS_SWIFTSHADER_ICD
+           " XDG_RUNTIME_DIR=" CTESS_WORK_DIR " " CTESS_NODE;
+}
+const char* backend_name() {
+    return backend() == Backend::vulkan ? "Vulkan (lavapipe)"
+           : backend() == Backend::dawn ? "Dawn (OpenGL ES on llvmpipe)"
+                                        : "Dawn (Vulkan on SwiftShader)";
+}
 } // namespace
 // Under the asan-ubsan preset LeakSanitizer finds 128 bytes that lavapipe reallocs and never frees, in a
 // module the Vulkan loader has unloaded by exit, so no suppression can name it: leak checks are off for the
-// Vulkan tests only. (A hook ASan reads at start-up; without ASan nothing calls it.)
+// GPU tests only. (A hook ASan reads at start-up; without ASan nothing calls it.)
 extern "C" const char* __asan_default_options() {
     return "detect_leaks=0";
 }
@@ -41,27 +70,33 @@ namespace {
 vulkan::Runner& runner(unsigned max_factor) {
     static std::unique_ptr<vulkan::Runner> runners[2];
     std::unique_ptr<vulkan::Runner>& r = runners[max_factor == 64 ? 0 : 1];
+    if (backend() != Backend::vulkan) throw std::runtime_error("the Vulkan runner on a Dawn variant");
     if (!r) r = std::make_unique<vulkan::Runner>(CTESS_SHADER_DIR, max_factor);
     return *r;
 }
-PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char*, RunLimits limits = {}) {
-    return run_vulkan(runner(max_factor), scene, limits);
+// Dawn's work files: the variants run in parallel under ctest, so each has its own names.
+std::string dawn_work_file(unsigned max_factor, const char* name) {
+    return std::string(CTESS_WORK_DIR) + "/" + (backend() == Backend::dawn ? "dawn_" : "swiftshader_") +
+           name + "_" + std::to_string(max_factor);
 }
-#elif defined(CTESS_GPU_DAWN)
-const char* const backend_name = CTESS_GPU_BACKEND_NAME;
 PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
-    std::string work = CTESS_WORK_DIR;
-    work += "/";
-    work += CTESS_GPU_WORK_PREFIX; // ctest runs the variants in parallel
-    work += name;
-    work += "_";
-    work += std::to_string(max_factor);
-    return run_dawn(CTESS_DAWN_ENV CTESS_NODE, CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, scene, work,
-                    limits);
+    if (backend() == Backend::vulkan) return run_vulkan(runner(max_factor), scene, limits);
+    return run_dawn(node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor,
+                    {{&scene, dawn_work_file(max_factor, name)}}, limits)
+        .front();
 }
-#else
-#error "define CTESS_GPU_VULKAN or CTESS_GPU_DAWN"
-#endif
+// Several scenes in one Dawn run: node and the pipelines start once (seconds on SwiftShader).
+std::vector<PipelineOutput> run_gpu_batch(unsigned max_factor,
+                                          const std::vector<std::pair<const char*, Scene>>& scenes) {
+    std::vector<PipelineOutput> out;
+    if (backend() == Backend::vulkan) {
+        for (const auto& entry : scenes) out.push_back(run_gpu(max_factor, entry.second, entry.first));
+        return out;
+    }
+    std::vector<DawnJob> jobs;
+    for (const auto& [name, scene] : scenes) jobs.push_back({&scene, dawn_work_file(max_factor, name)});
+    return run_dawn(node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, jobs);
+}
 
 const char* surface_name(rt::Surface s) {
     return s == rt::Surface::flat           ? "flat"
@@ -95,7 +130,7 @@ void check_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern 
     std::printf(
         "%s, max %u, %s, %s: %u patches (%zu quads), %u vertices, %u triangles; GPU %.1f ms (first run "
         "%.1f ms), CPU %.1f ms; max position error %.2g\n",
-        backend_name, max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
+        backend_name(), max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
         scene.quads.size() / 4, cpu.total_vertices(), cpu.total_triangles(), again.milliseconds,
         gpu.milliseconds, cpu.milliseconds, c.max_position_error);
     INFO(c.first_difference);
@@ -121,7 +156,7 @@ void check_watertight(unsigned max_factor, rt::Surface surface, rt::Pattern patt
     const CrackReport r = crack_check(scene, gpu);
     std::printf(
         "%s, max %u, %s, %s icosphere: %u patches, %zu shared edges, %zu edge points, %zu mismatches\n",
-        backend_name, max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
+        backend_name(), max_factor, pattern_name(pattern), surface_name(surface), scene.patch_count(),
         r.shared_edges, r.edge_points, r.position_mismatches);
     CHECK(r.shared_edges == scene.patch_count() * 3 / 2); // closed: every edge has two patches
     CHECK(r.edge_points > 3 * r.shared_edges);
@@ -210,9 +245,8 @@ TEST_CASE("GPU large output: a 51 MB vertex binding (once past what a collected 
     CHECK(c.equal());
 }
 
-#if defined(CTESS_GPU_VULKAN)
-TEST_CASE(
-    "Vulkan host: options the shaders do not run, bad params and missing files are errors, not output") {
+TEST_CASE("Vulkan host: options the shaders do not run, bad params and missing files are errors, not output",
+          "[vulkan]") {
     const Scene scene = icosphere(1, rt::Surface::flat, 4.0f);
     vulkan::Runner& gpu = runner(64);
     const auto refused = [&](rt::PipelineOptions options, rt::MeshView mesh) {
@@ -264,7 +298,6 @@ TEST_CASE(
     CHECK(empty.vertices.empty());
     CHECK(empty.indices.empty());
 }
-#endif
 
 // ---- quads (docs/algorithm.md §7.2, §7.3): mixed with triangles in one dispatch ----
 
@@ -308,7 +341,7 @@ void check_mixed_torus(unsigned max_factor, rt::Surface surface, rt::Pattern pat
     const char* work = pattern == rt::Pattern::uniform ? "torus_uniform" : "torus";
     const PipelineOutput gpu = run_gpu(max_factor, scene, work);
     std::printf("%s, max %u, %s, %s mixed torus (%zu quads, %zu triangles): %u vertices, %u triangles\n",
-                backend_name, max_factor, pattern_name(pattern), surface_name(surface),
+                backend_name(), max_factor, pattern_name(pattern), surface_name(surface),
                 scene.quads.size() / 4, scene.indices.size() / 3, gpu.total_vertices(),
                 gpu.total_triangles());
     CHECK(gpu.total_triangles() > 20 * scene.patch_count());
@@ -368,7 +401,7 @@ TEST_CASE("GPU PN-AEN: split-normal icosphere with adjacency, CP and uniform, ma
                 "%s, max %u, %s, PN-AEN split-normal icosphere: %u patches, %u vertices, %zu shared "
                 "edges, %zu edge points, %zu cracks; max position error %.2g, %zu of %u position words "
                 "differ in bits from the CPU\n",
-                backend_name, max_factor, pattern_name(pattern), scene.patch_count(), cpu.total_vertices(),
+                backend_name(), max_factor, pattern_name(pattern), scene.patch_count(), cpu.total_vertices(),
                 r.shared_edges, r.edge_points, r.position_mismatches, c.max_position_error,
                 position_bit_differences(cpu, gpu), 3 * cpu.total_vertices());
             INFO(c.first_difference);
@@ -391,7 +424,7 @@ TEST_CASE("GPU PN-AEN: plain PN on the same split-normal icosphere cracks") {
     const Scene scene = aen_scene(64, rt::Surface::pn_triangles, rt::Pattern::cp);
     const PipelineOutput gpu = run_gpu(64, scene, "aen_pn");
     const CrackReport r = crack_check(scene, gpu);
-    std::printf("%s, max 64, CP, PN split-normal icosphere: %zu of %zu edge points crack\n", backend_name,
+    std::printf("%s, max 64, CP, PN split-normal icosphere: %zu of %zu edge points crack\n", backend_name(),
                 r.position_mismatches, r.edge_points);
     CHECK(r.shared_edges == scene.patch_count() * 3 / 2);
     CHECK(r.position_mismatches > r.edge_points / 10); // the hard edges bend differently from each side
@@ -494,7 +527,7 @@ TEST_CASE("GPU PN-AEN, quads: a faceted mixed torus (every edge hard) is the CPU
         const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
         std::printf("%s, max 64, %s, PN-AEN faceted mixed torus (%zu quads): %u vertices; max position error "
                     "%.2g\n",
-                    backend_name, pattern_name(pattern), scene.quads.size() / 4, gpu.total_vertices(),
+                    backend_name(), pattern_name(pattern), scene.quads.size() / 4, gpu.total_vertices(),
                     c.max_position_error);
         INFO(pattern_name(pattern) << ": " << c.first_difference);
         CHECK(c.equal());
@@ -505,8 +538,8 @@ TEST_CASE("GPU PN-AEN, quads: a faceted mixed torus (every edge hard) is the CPU
 }
 #endif
 
-// The second WebGPU implementation (Dawn's Vulkan backend on SwiftShader) runs only this case: one run per
-// feature, each against the CPU (tests/gpu/CMakeLists.txt). The other backends run it too.
+// The second WebGPU implementation (Dawn's Vulkan backend on SwiftShader) runs only this case: one scene per
+// feature, each against the CPU, in one node run (tests/gpu/CMakeLists.txt). The other backends run it too.
 TEST_CASE("GPU second implementation: CP PN, uniform Phong, a mixed grid with quads and PN-AEN, one run each",
           "[second-implementation]") {
     std::vector<std::pair<const char*, Scene>> scenes;
@@ -518,10 +551,13 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, a mixed grid with qu
 #if defined(CTESS_GPU_HAVE_MODELS)
     scenes.emplace_back("one_aen_quads", faceted_mixed_torus(rt::Surface::pn_aen));
 #endif
-    for (const auto& [work, scene] : scenes) {
-        const PipelineOutput gpu = run_gpu(64, scene, work);
+    const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
+    REQUIRE(outputs.size() == scenes.size());
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const auto& [work, scene] = scenes[i];
+        const PipelineOutput& gpu = outputs[i];
         const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
-        std::printf("%s, %s: %u patches (%zu quads), %u vertices; max position error %.2g\n", backend_name,
+        std::printf("%s, %s: %u patches (%zu quads), %u vertices; max position error %.2g\n", backend_name(),
                     work, scene.patch_count(), scene.quads.size() / 4, gpu.total_vertices(),
                     c.max_position_error);
         INFO(work << ": " << c.first_difference);
