@@ -141,6 +141,12 @@ export class MeshPipeline {
     // first, end, pattern ('cp', 'uniform' or the code), quadCount (the last patches; meshIndices holds the
     // triangles' 3 indices each, then the quads' 4), quadRule ('longer-pair', the default, or 'as-labelled')}.
     // Surface names: 'flat', 'pn', 'phong', 'pn-aen'. An unknown name throws.
+    // displacement (docs/shaders.md, "Displacement"; triangle meshes only): {scale, factor, offset, normalStep,
+    // factorBound (rt::Displacement's defaults 1, 1, 0, 1/256, 0), width, height (the height map's texels; 0 x 0
+    // an empty map), address ('repeat', the default, or 'clamp'), directions (true: run() gets options.directions),
+    // adjacency (true: meshIndices holds the adjacency after the indices)}; run() then needs options.texels.
+    // Values rt::displacement_valid refuses (non-finite numbers, factorBound < 0, normalStep outside (0, 0.5])
+    // and quads throw.
     params(f, extra = 0) {
         const C = this.constants;
         const code = (value, what, names) => {
@@ -162,6 +168,20 @@ export class MeshPipeline {
         p[C.PARAM_QUAD_COUNT] = f.quadCount ?? 0;
         p[C.PARAM_QUAD_RULE] = code(f.quadRule ?? 'longer-pair', 'quad rule',
                                     { 'longer-pair': C.QUAD_RULE_LONGER_PAIR, 'as-labelled': C.QUAD_RULE_AS_LABELLED });
+        const d = f.displacement;
+        if (d) {
+            const [scale, factor, offset, normalStep, bound] = [d.scale ?? 1, d.factor ?? 1, d.offset ?? 0,
+                                                                d.normalStep ?? 1 / 256, d.factorBound ?? 0].map(Math.fround);
+            if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
+                throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
+            if (p[C.PARAM_QUAD_COUNT] !== 0) throw new Error('displacement: the shaders displace triangle meshes only');
+            p[C.PARAM_DISPLACEMENT_FLAGS] = C.DISPLACEMENT_ON | (d.directions ? C.DISPLACEMENT_DIRECTIONS : 0) |
+                                            (d.adjacency ? C.DISPLACEMENT_ADJACENCY : 0);
+            p.set([scale, factor, offset, normalStep, bound].map(f32Bits), C.PARAM_DISPLACEMENT_SCALE);
+            p[C.PARAM_HEIGHT_MAP_WIDTH] = d.width ?? 0;
+            p[C.PARAM_HEIGHT_MAP_HEIGHT] = d.height ?? 0;
+            p[C.PARAM_HEIGHT_MAP_ADDRESS] = code(d.address ?? 'repeat', 'address mode', { repeat: C.ADDRESS_REPEAT, clamp: C.ADDRESS_CLAMP });
+        }
         return p;
     }
 
@@ -173,8 +193,12 @@ export class MeshPipeline {
     // with countsOnly), milliseconds}. indexUsage and vertexUsage add usage flags to the output buffers (e.g.
     // GPUBufferUsage.INDEX to draw the indices). Params that do not describe the arrays given, a binding past the
     // device's maxStorageBufferBindingSize and any validation or out-of-memory error of the run throw.
+    // Displacement (params' displacement): options.texels (a Float32Array of exactly width x height texels) and,
+    // when the params name them, options.directions (3 floats per mesh vertex) go after the mesh's own data.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
+        if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON)
+            [meshVertices, meshIndices] = this.displacementData(params, meshVertices, meshIndices, options);
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
         const maxGroups = options.maxWorkgroups ?? C.MAX_DISPATCH_WORKGROUPS;
         const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT];
@@ -259,6 +283,37 @@ export class MeshPipeline {
         } finally {
             for (const b of temporary) b.destroy();
         }
+    }
+
+    // Bindings 2 and 3 of a displaced run (docs/shaders.md, "Displacement"): the mesh vertices then the
+    // directions, the indices (and the adjacency when the params' flag says so) then the texels' bits.
+    displacementData(params, meshVertices, meshIndices, { texels, directions }) {
+        const C = this.constants;
+        const flags = params[C.PARAM_DISPLACEMENT_FLAGS];
+        const float = (w) => new Float32Array(Uint32Array.of(params[w]).buffer)[0];
+        const [scale, factor, offset, normalStep, bound] = [C.PARAM_DISPLACEMENT_SCALE, C.PARAM_DISPLACEMENT_FACTOR,
+            C.PARAM_DISPLACEMENT_OFFSET, C.PARAM_DISPLACEMENT_NORMAL_STEP, C.PARAM_DISPLACEMENT_FACTOR_BOUND].map(float);
+        if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
+            throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
+        if (params[C.PARAM_QUAD_COUNT] !== 0) throw new Error('displacement: the shaders displace triangle meshes only');
+        const width = params[C.PARAM_HEIGHT_MAP_WIDTH], height = params[C.PARAM_HEIGHT_MAP_HEIGHT];
+        const count = width * height;
+        if (!(texels instanceof Float32Array) || texels.length !== count)
+            throw new Error(`displacement: ${texels?.length ?? 'no'} texels given for a ${width} x ${height} height map`);
+        const triangles = params[C.PARAM_PATCH_COUNT] - params[C.PARAM_QUAD_COUNT], quads = params[C.PARAM_QUAD_COUNT];
+        const indexWords = 3 * triangles + 4 * quads + (flags & C.DISPLACEMENT_ADJACENCY ? 12 * (triangles + 2 * quads) : 0);
+        if (meshIndices.length < indexWords) throw new Error('displacement: the adjacency the params name is not in meshIndices');
+        const indices = new Uint32Array(indexWords + count);
+        indices.set(meshIndices.subarray(0, indexWords));
+        indices.set(new Uint32Array(texels.buffer, texels.byteOffset, count), indexWords);
+        if (!(flags & C.DISPLACEMENT_DIRECTIONS)) return [meshVertices, indices];
+        const vertexWords = params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS, n = 3 * params[C.PARAM_MESH_VERTEX_COUNT];
+        if (!(directions instanceof Float32Array) || directions.length < n)
+            throw new Error(`displacement: ${directions?.length ?? 'no'} direction floats given for ${n / 3} mesh vertices`);
+        const vertices = new Uint32Array(vertexWords + n);
+        vertices.set(new Uint32Array(meshVertices.buffer, meshVertices.byteOffset, vertexWords));
+        vertices.set(new Uint32Array(directions.buffer, directions.byteOffset, n), vertexWords);
+        return [vertices, indices];
     }
 
     // Frees the table blobs (the pipelines need no freeing).

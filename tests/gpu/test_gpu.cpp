@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -527,4 +528,178 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, a mixed grid with qu
         INFO(work << ": " << c.first_difference);
         CHECK(c.equal());
     }
+}
+
+// ---- displacement (docs/algorithm.md §8, docs/shaders.md "Displacement"): triangle meshes ----
+namespace {
+// A 64 x 48 height texture of a few waves and a hash (procedural-looking, no symmetry), and the Displacement
+// that reads it: the scene keeps pointers to both, so they outlive it.
+struct DisplacementData {
+    std::vector<float> texels;
+    std::vector<float> directions; // 3 per mesh vertex: welded_directions
+    rt::Displacement d;
+};
+std::unique_ptr<DisplacementData> height_texture(rt::AddressMode address, float scale, float factor_bound) {
+    auto data = std::make_unique<DisplacementData>();
+    const std::uint32_t width = 64, height = 48;
+    data->texels.resize(std::size_t{width} * height);
+    for (std::uint32_t j = 0; j < height; ++j)
+        for (std::uint32_t i = 0; i < width; ++i)
+            data->texels[std::size_t{j} * width + i] =
+                std::sin(0.31f * static_cast<float>(i)) * std::cos(0.23f * static_cast<float>(j)) +
+                0.25f * detail::unit(j * width + i);
+    data->d.map = {data->texels.data(), width, height, address};
+    data->d.scale = scale;
+    data->d.factor = 1.5f;
+    data->d.offset = -0.2f;
+    data->d.factor_bound = factor_bound;
+    data->d.normal_step = 1.0f / 128.0f;
+    return data;
+}
+// Binds the texture (and, with directions, welded_directions of the scene) to the scene's options.
+void displace(Scene& scene, DisplacementData& data, bool directions) {
+    if (directions) {
+        data.directions.resize(3 * (scene.vertices.size() / rt::mesh_vertex_floats));
+        REQUIRE(rt::welded_directions(scene.view(), data.directions));
+        data.d.directions = data.directions.data();
+    }
+    scene.options.displacement = &data.d;
+}
+
+// A factor-sweep grid whose uvs run from -0.7 to 1.8, so that both address modes matter, displaced by the
+// texture: the CPU's records, counts (grown factors), barycentrics and indices exactly, positions and normals
+// within compare's bound.
+void check_displaced_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern,
+                            rt::AddressMode address, bool directions, const char* work) {
+    const unsigned sweep_max = pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : max_factor;
+    Scene scene = factor_sweep_grid(sweep_max, 12, surface);
+    scene.options.pattern = pattern;
+    for (std::size_t v = 0; v < scene.vertices.size(); v += rt::mesh_vertex_floats) {
+        scene.vertices[v + 6] = 2.5f * scene.vertices[v + 6] - 0.7f;
+        scene.vertices[v + 7] = 2.5f * scene.vertices[v + 7] - 0.7f;
+    }
+    const auto data = height_texture(address, 0.02f, 0.004f);
+    displace(scene, *data, directions);
+    const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
+    const PipelineOutput gpu = run_gpu(max_factor, scene, work);
+    const Comparison c = compare(cpu, gpu);
+    // The growth is real: without it the counts are smaller.
+    Scene plain = scene;
+    plain.options.displacement = nullptr;
+    const PipelineOutput undisplaced = run_cpu(tables_for(max_factor), plain);
+    std::printf("%s, max %u, %s, %s, %s, %s directions: displaced grid of %u patches, %u vertices (%u "
+                "undisplaced); max position error %.2g\n",
+                backend_name, max_factor, pattern_name(pattern), surface_name(surface),
+                address == rt::AddressMode::repeat ? "repeat" : "clamp", directions ? "welded" : "no",
+                scene.patch_count(), cpu.total_vertices(), undisplaced.total_vertices(),
+                c.max_position_error);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+    CHECK(cpu.total_vertices() > undisplaced.total_vertices());
+}
+} // namespace
+
+TEST_CASE(
+    "GPU displacement parity: a displaced grid equals the CPU's, CP and uniform, flat and PN, both address "
+    "modes, with and without directions") {
+    check_displaced_parity(64, rt::Surface::flat, rt::Pattern::cp, rt::AddressMode::repeat, true,
+                           "disp_cp_flat");
+    check_displaced_parity(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::AddressMode::clamp, false,
+                           "disp_cp_pn");
+    check_displaced_parity(256, rt::Surface::pn_triangles, rt::Pattern::cp, rt::AddressMode::repeat, false,
+                           "disp_cp_pn_256");
+    check_displaced_parity(64, rt::Surface::pn_triangles, rt::Pattern::uniform, rt::AddressMode::repeat, true,
+                           "disp_uniform_pn");
+    check_displaced_parity(64, rt::Surface::flat, rt::Pattern::uniform, rt::AddressMode::clamp, false,
+                           "disp_uniform_flat");
+}
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+TEST_CASE(
+    "GPU displacement watertight: an icosphere with uv seams is closed with adjacency and cracks without") {
+    for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+        // PN-AEN orders edge points by position, so the undisplaced surface is closed across the seams either
+        // way.
+        Scene scene = split_normal_icosphere(2, rt::Surface::pn_aen, 6.0f, false);
+        scene.options.pattern = pattern;
+        const auto data = height_texture(rt::AddressMode::repeat, 0.05f, 0.0f);
+        displace(scene, *data, false);
+        INFO(pattern_name(pattern));
+        const PipelineOutput gpu =
+            run_gpu(64, scene, pattern == rt::Pattern::uniform ? "disp_seam_uniform" : "disp_seam");
+        const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+        const CrackReport r = crack_check(scene, gpu);
+        Scene without = scene;
+        without.adjacency.clear();
+        const PipelineOutput open = run_gpu(
+            64, without, pattern == rt::Pattern::uniform ? "disp_seam_open_uniform" : "disp_seam_open");
+        const CrackReport o = crack_check(without, open);
+        std::printf(
+            "%s, max 64, %s, displaced PN-AEN icosphere with uv seams: %u vertices, %zu edge points, %zu "
+            "cracks with adjacency, %zu without; max position error %.2g\n",
+            backend_name, pattern_name(pattern), gpu.total_vertices(), r.edge_points, r.position_mismatches,
+            o.position_mismatches, c.max_position_error);
+        INFO(c.first_difference);
+        CHECK(c.equal());
+        CHECK(closed_by_position(gpu));
+        CHECK(r.position_mismatches == 0);
+        CHECK(r.unmatched_points == 0);
+        CHECK_FALSE(closed_by_position(open));
+        CHECK(o.position_mismatches > 0);
+        const Comparison oc = compare(run_cpu(rt::cp_tables_64, without), open);
+        INFO(oc.first_difference);
+        CHECK(oc.equal());
+    }
+}
+#endif
+
+TEST_CASE(
+    "GPU displacement bad input: a HeightFunction, a NaN scale, quads and, on Vulkan, texels or data that "
+    "the params do not describe are errors") {
+    Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
+    const auto data = height_texture(rt::AddressMode::repeat, 0.02f, 0.0f);
+    displace(scene, *data, false);
+    // A NaN scale: the CPU's bad_option, and the hosts refuse it.
+    data->d.scale = std::nanf("");
+    CHECK_THROWS(run_gpu(64, scene, "disp_nan"));
+    data->d.scale = 0.02f;
+    // Quads: not displaced on the GPU yet (docs/shaders.md), refused rather than left flat.
+    Scene mixed = factor_sweep_grid(64, 4, rt::Surface::flat, 4);
+    mixed.options.displacement = &data->d;
+    CHECK_THROWS(run_gpu(64, mixed, "disp_quads"));
+#if defined(CTESS_GPU_VULKAN)
+    vulkan::Runner& gpu = runner(64);
+    CHECK(rt::gpu::gpu_options_status(mixed.view(), mixed.options) == rt::PipelineStatus::bad_option);
+    // A HeightFunction is CPU code.
+    rt::Displacement function = data->d;
+    function.function = [](const void*, float u, float v) { return u * v; };
+    rt::PipelineOptions options = scene.options;
+    options.displacement = &function;
+    CHECK(rt::gpu::gpu_options_status(scene.view(), options) == rt::PipelineStatus::bad_option);
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), options), vulkan::Error);
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), pipeline_params(scene), {}, &function),
+                      Catch::Contains("HeightFunction"));
+    // Params whose width x height is not the map's texel count.
+    auto params = pipeline_params(scene);
+    params[rt::gpu::param_word::height_map_width] += 1;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), params, {}, &data->d), Catch::Contains("does not match"));
+    // Params that displace without a Displacement, or name directions it does not have.
+    params = pipeline_params(scene);
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), params), vulkan::Error);
+    params[rt::gpu::param_word::displacement_flags] |= rt::gpu::displacement_flag::directions;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), params, {}, &data->d), Catch::Contains("directions"));
+    // A texture larger than binding 3 allows: refused before anything is read or uploaded.
+    rt::Displacement huge = data->d;
+    huge.map.width = huge.map.height = 65536;
+    options.displacement = &huge;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), options), Catch::Contains("maxStorageBufferRange"));
+    // An empty map samples 0 (height = scale * offset), as on the CPU.
+    rt::Displacement empty = data->d;
+    empty.map.texels = nullptr;
+    Scene flat = scene;
+    flat.options.displacement = &empty;
+    const Comparison c = compare(run_cpu(rt::cp_tables_64, flat), run_gpu(64, flat, "disp_empty"));
+    INFO(c.first_difference);
+    CHECK(c.equal());
+#endif
 }

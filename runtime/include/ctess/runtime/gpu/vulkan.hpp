@@ -130,9 +130,12 @@ class Runner {
     // the outputs are allocated.
     Output tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run = {});
     // The same with the params words given (a host that sets them itself, e.g. tests of the params' range).
+    // Params that displace (rt::gpu::displacement_flag::on) need displacement: its height map (whose width x
+    // height must be the params', an empty map 0 x 0) and, when the params' flags name them, its directions
+    // and the mesh's adjacency are uploaded (docs/shaders.md, "Displacement"); a HeightFunction throws.
     Output tessellate(const rt::MeshView& mesh,
                       const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
-                      RunOptions run = {});
+                      RunOptions run = {}, const rt::Displacement* displacement = nullptr);
 
   private:
     struct Device;
