@@ -759,13 +759,14 @@ vec3 scaled(float s, vec3 a) {
     return r;
 }
 // What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction, per
-// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs.
+// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs; 3 or 4 corners.
 struct DisplacementPatch {
-    vec2 corner_uv[3];
-    vec3 direction[3];
-    vec4 edge_uv[3];
-    vec3 position[3];
-    vec2 own_uv[3];
+    uint corners;
+    vec2 corner_uv[4];
+    vec3 direction[4];
+    vec4 edge_uv[4];
+    vec3 position[4];
+    vec2 own_uv[4];
 };
 vec2 mesh_uv(uint v) { return vec2(mesh_vertices[v * MESH_VERTEX_FLOATS + 6u], mesh_vertices[v * MESH_VERTEX_FLOATS + 7u]); }
 // A corner's dominant vertex (§8.2): adjacency slot 9 + corner where the host uploaded the adjacency, else the
@@ -782,12 +783,15 @@ vec3 vertex_direction(uint v) {
         o = params[PARAM_MESH_VERTEX_COUNT] * MESH_VERTEX_FLOATS + 3u * v;
     return normalize_or_zero(vec3(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]));
 }
-// displacement_patch for base triangle t (face t of the adjacency) with vertices w.
-DisplacementPatch triangle_displacement(uint t, uint w[3]) {
+// displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
+// corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
+DisplacementPatch displacement_patch(uint corners, uint w[4], uint corner_face[4], uint corner_slot[4], uint edge_face[4],
+                                     uint edge_slot[4]) {
     DisplacementPatch dp;
+    dp.corners = corners;
     uint n = params[PARAM_MESH_VERTEX_COUNT];
-    for (uint k = 0u; k < 3u; ++k) {
-        uint dom = dominant_vertex(w[k], t, k);
+    for (uint k = 0u; k < corners; ++k) {
+        uint dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]);
         dp.position[k] = mesh_position(w[k]);
         dp.own_uv[k] = mesh_uv(w[k]);
         dp.corner_uv[k] = mesh_uv(dom);
@@ -795,11 +799,11 @@ DisplacementPatch triangle_displacement(uint t, uint w[3]) {
     }
     // The dominant edge: of the own edge and the neighbour's (slots 3-8, paired by position), the one whose
     // vertices, taken in position order, are lexicographically smaller; the neighbour picks the same one.
-    for (uint k = 0u; k < 3u; ++k) {
-        uint a = w[k], b = w[(k + 1u) % 3u];
+    for (uint k = 0u; k < corners; ++k) {
+        uint a = w[k], b = w[(k + 1u) % corners];
         uvec2 pick = uvec2(a, b);
         if (displacement_adjacency()) {
-            uint at = adjacency_base() + 12u * t + 3u + 2u * k;
+            uint at = adjacency_base() + 12u * edge_face[k] + 3u + 2u * edge_slot[k];
             uint c = mesh_indices[at], e = mesh_indices[at + 1u];
             if (c < n && e < n) {
                 if (!same_bits(mesh_position(c), mesh_position(a))) { uint x = c; c = e; e = x; }
@@ -841,7 +845,7 @@ void move_point(inout SurfacePoint p, float height, vec3 direction) {
 // A point on patch edge k with weights wa at corner k and wb at corner k + 1: the dominant edge's uvs and the
 // dominant directions interpolated from the endpoint first in position order (equal positions: the larger weight).
 void displace_edge(DisplacementPatch dp, uint k, uint wa, uint wb, inout SurfacePoint p) {
-    uint a = k, b = (k + 1u) % 3u;
+    uint a = k, b = (k + 1u) % dp.corners;
     vec2 uv_a = dp.edge_uv[k].xy, uv_b = dp.edge_uv[k].zw;
     if (wa == FIXED_ONE || wb == FIXED_ONE) {
         uint c = wa == FIXED_ONE ? a : b;
@@ -879,6 +883,42 @@ void displace_triangle_point(DisplacementPatch dp, uint w[3], inout SurfacePoint
         }
     }
     precise vec3 dir = (scaled(fixed_weight(w[0]), dp.direction[0]) + scaled(a, dp.direction[1])) + scaled(b, dp.direction[2]);
+    move_point(p, displacement_height(p.uv.x, p.uv.y), normalize_or_zero(dir));
+}
+// The height at the own uv of quad parameter (s, t), bilinear.
+float quad_uv_height(DisplacementPatch dp, float s, float t) {
+    precise float w[4] = float[4]((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
+    precise float u = ((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x;
+    precise float v = ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y;
+    return displacement_height(u, v);
+}
+// displace_quad_point: p is the surface point of quad point (s, t) of the unit square (units of FIXED_ONE).
+void displace_quad_point(DisplacementPatch dp, uint s, uint t, inout SurfacePoint p) {
+    float fs = fixed_weight(s), ft = fixed_weight(t);
+    float step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    precise float hu = (quad_uv_height(dp, fs + step_, ft) - quad_uv_height(dp, fs - step_, ft)) / (2.0 * step_);
+    precise float hv = (quad_uv_height(dp, fs, ft + step_) - quad_uv_height(dp, fs, ft - step_)) / (2.0 * step_);
+    precise vec3 ts = scaled(1.0 - ft, dp.position[1] - dp.position[0]) + scaled(ft, dp.position[2] - dp.position[3]);
+    precise vec3 tt = scaled(1.0 - fs, dp.position[3] - dp.position[0]) + scaled(fs, dp.position[2] - dp.position[1]);
+    bend_normal(p, ts, tt, hu, hv);
+    // Corners, then edge k from q_k with parameter r measured from q_k (t = 0, s = 1, t = 1, s = 0), then the
+    // interior.
+    if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
+        uint c = t == 0u ? (s == 0u ? 0u : 1u) : (s == FIXED_ONE ? 2u : 3u);
+        displace_edge(dp, c, FIXED_ONE, 0u, p);
+        return;
+    }
+    bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (uint k = 0u; k < 4u; ++k) {
+        if (on_edge[k]) {
+            displace_edge(dp, k, FIXED_ONE - r[k], r[k], p);
+            return;
+        }
+    }
+    precise float w[4] = float[4]((1.0 - fs) * (1.0 - ft), fs * (1.0 - ft), fs * ft, (1.0 - fs) * ft);
+    precise vec3 dir = ((scaled(w[0], dp.direction[0]) + scaled(w[1], dp.direction[1])) + scaled(w[2], dp.direction[2])) +
+                       scaled(w[3], dp.direction[3]);
     move_point(p, displacement_height(p.uv.x, p.uv.y), normalize_or_zero(dir));
 }
 
@@ -1350,7 +1390,7 @@ void emit_vertices(bool quad_pass) {
     uint surface = params[PARAM_SURFACE];
     bool aen = surface == SURFACE_PN_AEN;
     bool uniform_ = uniform_pattern();
-    bool displace = !quad_pass && displacement_on(); // the hosts refuse displacement with quads
+    bool displace = displacement_on();
     for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
@@ -1379,6 +1419,20 @@ void emit_vertices(bool quad_pass) {
                 if (aen) adjacent_normals(face + (m >= 2u ? 1u : 0u), m >= 2u ? m - 1u : m, q[k], q[(k + 1u) % 4u], adj_from[k], adj_to[k]);
             }
             vertices_a = quad_halves(rec, halves, words).x;
+            if (displace) {
+                // Mesh corners q0, q1, q2 are slots 0-2 of face (q0, q1, q2), q3 slot 2 of (q0, q2, q3); mesh edges
+                // 0 and 1 are edges 0 and 1 of the first, 2 and 3 edges 1 and 2 of the second (mesh_pipeline.cpp).
+                uint wp[4], corner_face[4], corner_slot[4], edge_face[4], edge_slot[4];
+                for (uint k = 0u; k < 4u; ++k) {
+                    uint m = (k + rot) % 4u;
+                    wp[k] = w[m];
+                    corner_face[k] = face + (m == 3u ? 1u : 0u);
+                    corner_slot[k] = m == 3u ? 2u : m;
+                    edge_face[k] = face + (m >= 2u ? 1u : 0u);
+                    edge_slot[k] = m >= 2u ? m - 1u : m;
+                }
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot);
+            }
         } else {
             uvec3 w;
             if (!base_triangle(t, w)) continue;
@@ -1393,7 +1447,9 @@ void emit_vertices(bool quad_pass) {
             }
             halves[0] = uniform_ ? patch_zero() : record_patch(rec);
             words[0] = uniform_words(rec);
-            if (displace) dp = triangle_displacement(t, uint[3](w.x, w.y, w.z));
+            if (displace)
+                dp = displacement_patch(3u, uint[4](w.x, w.y, w.z, 0u), uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u),
+                                        uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u));
         }
         uint first = patches[rec + REC_FIRST_VERTEX];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
@@ -1434,7 +1490,9 @@ void emit_vertices(bool quad_pass) {
             if (inner) sp = quad_interior(q, adj_from, adj_to, aen, out_uv.x, out_uv.y, surface, alpha);
             else if (aen) sp = evaluate_surface_aen(tri, from3, to3, w3, alpha);
             else sp = evaluate_surface(tri, w3, surface, alpha);
-            if (displace) displace_triangle_point(dp, w3, sp); // §8: after the surface, as mesh_pipeline.cpp
+            // §8: after the surface, as mesh_pipeline.cpp (a quad's every point by its square point).
+            if (displace && quad) displace_quad_point(dp, out_uv.x, out_uv.y, sp);
+            else if (displace) displace_triangle_point(dp, w3, sp);
             store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }

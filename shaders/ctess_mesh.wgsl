@@ -749,13 +749,14 @@ fn cross3(a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 // What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction, per
-// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs.
+// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs; 3 or 4 corners.
 struct DisplacementPatch {
-    corner_uv: array<vec2<f32>, 3>,
-    direction: array<vec3<f32>, 3>,
-    edge_uv: array<vec4<f32>, 3>,
-    position: array<vec3<f32>, 3>,
-    own_uv: array<vec2<f32>, 3>,
+    corners: u32,
+    corner_uv: array<vec2<f32>, 4>,
+    direction: array<vec3<f32>, 4>,
+    edge_uv: array<vec4<f32>, 4>,
+    position: array<vec3<f32>, 4>,
+    own_uv: array<vec2<f32>, 4>,
 }
 fn mesh_uv(v: u32) -> vec2<f32> { return vec2<f32>(mesh_vertices[v * MESH_VERTEX_FLOATS + 6u], mesh_vertices[v * MESH_VERTEX_FLOATS + 7u]); }
 // A corner's dominant vertex (§8.2): adjacency slot 9 + corner where the host uploaded the adjacency, else the
@@ -774,13 +775,17 @@ fn vertex_direction(v: u32) -> vec3<f32> {
     }
     return normalize_or_zero(vec3<f32>(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]));
 }
-// displacement_patch for base triangle t (face t of the adjacency) with vertices w.
-fn triangle_displacement(t: u32, wt: vec3<u32>) -> DisplacementPatch {
+// displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
+// corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
+fn displacement_patch(corners: u32, w_in: array<u32, 4>, corner_face_in: array<u32, 4>, corner_slot_in: array<u32, 4>,
+                      edge_face_in: array<u32, 4>, edge_slot_in: array<u32, 4>) -> DisplacementPatch {
     var dp: DisplacementPatch;
-    var w = array<u32, 3>(wt.x, wt.y, wt.z);
+    dp.corners = corners;
+    var w = w_in; var corner_face = corner_face_in; var corner_slot = corner_slot_in;
+    var edge_face = edge_face_in; var edge_slot = edge_slot_in;
     let n = params[PARAM_MESH_VERTEX_COUNT];
-    for (var k = 0u; k < 3u; k++) {
-        let dom = dominant_vertex(w[k], t, k);
+    for (var k = 0u; k < corners; k++) {
+        let dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]);
         dp.position[k] = mesh_position(w[k]);
         dp.own_uv[k] = mesh_uv(w[k]);
         dp.corner_uv[k] = mesh_uv(dom);
@@ -788,11 +793,11 @@ fn triangle_displacement(t: u32, wt: vec3<u32>) -> DisplacementPatch {
     }
     // The dominant edge: of the own edge and the neighbour's (slots 3-8, paired by position), the one whose
     // vertices, taken in position order, are lexicographically smaller; the neighbour picks the same one.
-    for (var k = 0u; k < 3u; k++) {
-        let a = w[k]; let b = w[(k + 1u) % 3u];
+    for (var k = 0u; k < corners; k++) {
+        let a = w[k]; let b = w[(k + 1u) % corners];
         var pick = vec2<u32>(a, b);
         if (displacement_adjacency()) {
-            let at = adjacency_base() + 12u * t + 3u + 2u * k;
+            let at = adjacency_base() + 12u * edge_face[k] + 3u + 2u * edge_slot[k];
             var c = mesh_indices[at]; var e = mesh_indices[at + 1u];
             if (c < n && e < n) {
                 if (!same_bits(mesh_position(c), mesh_position(a))) { let x = c; c = e; e = x; }
@@ -832,7 +837,7 @@ fn tri_uv_height(dp: DisplacementPatch, a: f32, b: f32) -> f32 {
 // Returns the displaced position.
 fn displace_edge(dp_in: DisplacementPatch, k: u32, wa_in: u32, wb_in: u32, position: vec3<f32>) -> vec3<f32> {
     var dp = dp_in;
-    var a = k; var b = (k + 1u) % 3u;
+    var a = k; var b = (k + 1u) % dp.corners;
     var wa = wa_in; var wb = wb_in;
     var uv_a = dp.edge_uv[k].xy; var uv_b = dp.edge_uv[k].zw;
     if (wa == FIXED_ONE || wb == FIXED_ONE) {
@@ -874,6 +879,43 @@ fn displace_triangle_point(dp_in: DisplacementPatch, weights: array<u32, 3>, sp:
         }
     }
     let dir = normalize_or_zero((fixed_weight(w[0]) * dp.direction[0] + a * dp.direction[1]) + b * dp.direction[2]);
+    p.position = p.position + displacement_height(p.uv.x, p.uv.y) * dir;
+    return p;
+}
+// The height at the own uv of quad parameter (s, t), bilinear.
+fn quad_uv_height(dp: DisplacementPatch, s: f32, t: f32) -> f32 {
+    let w = array<f32, 4>((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
+    return displacement_height(((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x,
+                               ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y);
+}
+// displace_quad_point: sp is the surface point of quad point (s, t) of the unit square (units of FIXED_ONE).
+fn displace_quad_point(dp_in: DisplacementPatch, s: u32, t: u32, sp: SurfacePoint) -> SurfacePoint {
+    var dp = dp_in;
+    var p = sp;
+    let fs = fixed_weight(s); let ft = fixed_weight(t);
+    let step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    let hu = (quad_uv_height(dp, fs + step_, ft) - quad_uv_height(dp, fs - step_, ft)) / (2.0 * step_);
+    let hv = (quad_uv_height(dp, fs, ft + step_) - quad_uv_height(dp, fs, ft - step_)) / (2.0 * step_);
+    let ts = (1.0 - ft) * (dp.position[1] - dp.position[0]) + ft * (dp.position[2] - dp.position[3]);
+    let tt = (1.0 - fs) * (dp.position[3] - dp.position[0]) + fs * (dp.position[2] - dp.position[1]);
+    p.normal = bend_normal(p.normal, ts, tt, hu, hv);
+    // Corners, then edge k from q_k with parameter r measured from q_k (t = 0, s = 1, t = 1, s = 0), then the
+    // interior.
+    if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
+        let c = select(select(3u, 2u, s == FIXED_ONE), select(1u, 0u, s == 0u), t == 0u);
+        p.position = displace_edge(dp, c, FIXED_ONE, 0u, p.position);
+        return p;
+    }
+    var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (var k = 0u; k < 4u; k++) {
+        if (on_edge[k]) {
+            p.position = displace_edge(dp, k, FIXED_ONE - r[k], r[k], p.position);
+            return p;
+        }
+    }
+    let w = array<f32, 4>((1.0 - fs) * (1.0 - ft), fs * (1.0 - ft), fs * ft, (1.0 - fs) * ft);
+    let dir = normalize_or_zero(((w[0] * dp.direction[0] + w[1] * dp.direction[1]) + w[2] * dp.direction[2]) + w[3] * dp.direction[3]);
     p.position = p.position + displacement_height(p.uv.x, p.uv.y) * dir;
     return p;
 }
@@ -1358,7 +1400,7 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
     let surface = params[PARAM_SURFACE];
     let aen = surface == SURFACE_PN_AEN;
     let uniform_ = uniform_pattern();
-    let displace = !quad_pass && displacement_on(); // the hosts refuse displacement with quads
+    let displace = displacement_on();
     for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
@@ -1387,6 +1429,21 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
                 if (aen) { en[k] = adjacent_normals(face + select(0u, 1u, m >= 2u), select(m, m - 1u, m >= 2u), q[k], q[(k + 1u) % 4u]); }
             }
             vertices_a = quad_halves(rec, &halves, &words).x;
+            if (displace) {
+                // Mesh corners q0, q1, q2 are slots 0-2 of face (q0, q1, q2), q3 slot 2 of (q0, q2, q3); mesh edges
+                // 0 and 1 are edges 0 and 1 of the first, 2 and 3 edges 1 and 2 of the second (mesh_pipeline.cpp).
+                var wp: array<u32, 4>; var corner_face: array<u32, 4>; var corner_slot: array<u32, 4>;
+                var edge_face: array<u32, 4>; var edge_slot: array<u32, 4>;
+                for (var k = 0u; k < 4u; k++) {
+                    let m = (k + rot) % 4u;
+                    wp[k] = w[m];
+                    corner_face[k] = face + select(0u, 1u, m == 3u);
+                    corner_slot[k] = select(m, 2u, m == 3u);
+                    edge_face[k] = face + select(0u, 1u, m >= 2u);
+                    edge_slot[k] = select(m, m - 1u, m >= 2u);
+                }
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot);
+            }
         } else {
             let w = base_triangle(t);
             if (!base_triangle_valid(w)) { continue; }
@@ -1400,7 +1457,10 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
             }
             if (!uniform_) { halves[0] = record_patch(rec); }
             words[0] = uniform_words(rec);
-            if (displace) { dp = triangle_displacement(t, w); }
+            if (displace) {
+                dp = displacement_patch(3u, array<u32, 4>(w.x, w.y, w.z, 0u), array<u32, 4>(t, t, t, t),
+                                        array<u32, 4>(0u, 1u, 2u, 0u), array<u32, 4>(t, t, t, t), array<u32, 4>(0u, 1u, 2u, 0u));
+            }
         }
         let first = patches[rec + REC_FIRST_VERTEX];
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
@@ -1444,7 +1504,12 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
             } else {
                 sp = evaluate_surface(tri, w3, surface, alpha);
             }
-            if (displace) { sp = displace_triangle_point(dp, w3, sp); } // §8: after the surface, as mesh_pipeline.cpp
+            // §8: after the surface, as mesh_pipeline.cpp (a quad's every point by its square point).
+            if (displace && quad) {
+                sp = displace_quad_point(dp, out_uv.x, out_uv.y, sp);
+            } else if (displace) {
+                sp = displace_triangle_point(dp, w3, sp);
+            }
             store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }

@@ -141,12 +141,12 @@ export class MeshPipeline {
     // first, end, pattern ('cp', 'uniform' or the code), quadCount (the last patches; meshIndices holds the
     // triangles' 3 indices each, then the quads' 4), quadRule ('longer-pair', the default, or 'as-labelled')}.
     // Surface names: 'flat', 'pn', 'phong', 'pn-aen'. An unknown name throws.
-    // displacement (docs/shaders.md, "Displacement"; triangle meshes only): {scale, factor, offset, normalStep,
+    // displacement (docs/shaders.md, "Displacement"): {scale, factor, offset, normalStep,
     // factorBound (rt::Displacement's defaults 1, 1, 0, 1/256, 0), width, height (the height map's texels; 0 x 0
     // an empty map), address ('repeat', the default, or 'clamp'), directions (true: run() gets options.directions),
     // adjacency (true: meshIndices holds the adjacency after the indices)}; run() then needs options.texels.
     // Values rt::displacement_valid refuses (non-finite numbers, factorBound < 0, normalStep outside (0, 0.5])
-    // and quads throw.
+    // throw.
     params(f, extra = 0) {
         const C = this.constants;
         const code = (value, what, names) => {
@@ -174,7 +174,6 @@ export class MeshPipeline {
                                                                 d.normalStep ?? 1 / 256, d.factorBound ?? 0].map(Math.fround);
             if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
                 throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
-            if (p[C.PARAM_QUAD_COUNT] !== 0) throw new Error('displacement: the shaders displace triangle meshes only');
             p[C.PARAM_DISPLACEMENT_FLAGS] = C.DISPLACEMENT_ON | (d.directions ? C.DISPLACEMENT_DIRECTIONS : 0) |
                                             (d.adjacency ? C.DISPLACEMENT_ADJACENCY : 0);
             p.set([scale, factor, offset, normalStep, bound].map(f32Bits), C.PARAM_DISPLACEMENT_SCALE);
@@ -295,7 +294,6 @@ export class MeshPipeline {
             C.PARAM_DISPLACEMENT_OFFSET, C.PARAM_DISPLACEMENT_NORMAL_STEP, C.PARAM_DISPLACEMENT_FACTOR_BOUND].map(float);
         if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
             throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
-        if (params[C.PARAM_QUAD_COUNT] !== 0) throw new Error('displacement: the shaders displace triangle meshes only');
         const width = params[C.PARAM_HEIGHT_MAP_WIDTH], height = params[C.PARAM_HEIGHT_MAP_HEIGHT];
         const count = width * height;
         if (!(texels instanceof Float32Array) || texels.length !== count)

@@ -570,9 +570,10 @@ void displace(Scene& scene, DisplacementData& data, bool directions) {
 // texture: the CPU's records, counts (grown factors), barycentrics and indices exactly, positions and normals
 // within compare's bound.
 void check_displaced_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern,
-                            rt::AddressMode address, bool directions, const char* work) {
+                            rt::AddressMode address, bool directions, const char* work,
+                            unsigned quad_every = 0) {
     const unsigned sweep_max = pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : max_factor;
-    Scene scene = factor_sweep_grid(sweep_max, 12, surface);
+    Scene scene = factor_sweep_grid(sweep_max, 12, surface, quad_every);
     scene.options.pattern = pattern;
     for (std::size_t v = 0; v < scene.vertices.size(); v += rt::mesh_vertex_floats) {
         scene.vertices[v + 6] = 2.5f * scene.vertices[v + 6] - 0.7f;
@@ -587,12 +588,13 @@ void check_displaced_parity(unsigned max_factor, rt::Surface surface, rt::Patter
     Scene plain = scene;
     plain.options.displacement = nullptr;
     const PipelineOutput undisplaced = run_cpu(tables_for(max_factor), plain);
-    std::printf("%s, max %u, %s, %s, %s, %s directions: displaced grid of %u patches, %u vertices (%u "
-                "undisplaced); max position error %.2g\n",
-                backend_name, max_factor, pattern_name(pattern), surface_name(surface),
-                address == rt::AddressMode::repeat ? "repeat" : "clamp", directions ? "welded" : "no",
-                scene.patch_count(), cpu.total_vertices(), undisplaced.total_vertices(),
-                c.max_position_error);
+    std::printf(
+        "%s, max %u, %s, %s, %s, %s directions: displaced grid of %u patches (%zu quads), %u vertices "
+        "(%u undisplaced); max position error %.2g\n",
+        backend_name, max_factor, pattern_name(pattern), surface_name(surface),
+        address == rt::AddressMode::repeat ? "repeat" : "clamp", directions ? "welded" : "no",
+        scene.patch_count(), scene.quads.size() / 4, cpu.total_vertices(), undisplaced.total_vertices(),
+        c.max_position_error);
     INFO(c.first_difference);
     CHECK(c.equal());
     CHECK(cpu.total_vertices() > undisplaced.total_vertices());
@@ -612,6 +614,13 @@ TEST_CASE(
                            "disp_uniform_pn");
     check_displaced_parity(64, rt::Surface::flat, rt::Pattern::uniform, rt::AddressMode::clamp, false,
                            "disp_uniform_flat");
+}
+
+TEST_CASE("GPU displacement parity, quads: a displaced mixed grid equals the CPU's, CP and uniform") {
+    check_displaced_parity(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::AddressMode::repeat, true,
+                           "disp_quads_cp", 3);
+    check_displaced_parity(64, rt::Surface::flat, rt::Pattern::uniform, rt::AddressMode::clamp, false,
+                           "disp_quads_uniform", 3);
 }
 
 #if defined(CTESS_GPU_HAVE_MODELS)
@@ -654,8 +663,8 @@ TEST_CASE(
 #endif
 
 TEST_CASE(
-    "GPU displacement bad input: a HeightFunction, a NaN scale, quads and, on Vulkan, texels or data that "
-    "the params do not describe are errors") {
+    "GPU displacement bad input: a NaN scale and, on Vulkan, a HeightFunction and texels or data that the "
+    "params do not describe are errors") {
     Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
     const auto data = height_texture(rt::AddressMode::repeat, 0.02f, 0.0f);
     displace(scene, *data, false);
@@ -663,13 +672,8 @@ TEST_CASE(
     data->d.scale = std::nanf("");
     CHECK_THROWS(run_gpu(64, scene, "disp_nan"));
     data->d.scale = 0.02f;
-    // Quads: not displaced on the GPU yet (docs/shaders.md), refused rather than left flat.
-    Scene mixed = factor_sweep_grid(64, 4, rt::Surface::flat, 4);
-    mixed.options.displacement = &data->d;
-    CHECK_THROWS(run_gpu(64, mixed, "disp_quads"));
 #if defined(CTESS_GPU_VULKAN)
     vulkan::Runner& gpu = runner(64);
-    CHECK(rt::gpu::gpu_options_status(mixed.view(), mixed.options) == rt::PipelineStatus::bad_option);
     // A HeightFunction is CPU code.
     rt::Displacement function = data->d;
     function.function = [](const void*, float u, float v) { return u * v; };
@@ -703,3 +707,24 @@ TEST_CASE(
     CHECK(c.equal());
 #endif
 }
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+TEST_CASE("GPU displacement watertight, quads: a faceted mixed torus (every edge a uv seam) is closed with "
+          "adjacency and opens without") {
+    Scene scene = faceted_mixed_torus(rt::Surface::pn_aen);
+    const auto data = height_texture(rt::AddressMode::repeat, 0.05f, 0.0f);
+    displace(scene, *data, false);
+    const PipelineOutput gpu = run_gpu(64, scene, "disp_torus");
+    const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+    Scene without = scene;
+    without.adjacency.clear();
+    const PipelineOutput open = run_gpu(64, without, "disp_torus_open");
+    std::printf("%s, max 64, CP, displaced PN-AEN faceted mixed torus (%zu quads): %u vertices; max position "
+                "error %.2g\n",
+                backend_name, scene.quads.size() / 4, gpu.total_vertices(), c.max_position_error);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+    CHECK(closed_by_position(gpu));
+    CHECK_FALSE(closed_by_position(open));
+}
+#endif

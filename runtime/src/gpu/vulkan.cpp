@@ -410,7 +410,7 @@ Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& o
         throw Error(
             st == rt::PipelineStatus::bad_option
                 ? "the shaders run the cp or uniform pattern and camera factors, without position_ids, and "
-                  "displace triangle meshes only, by a valid height map (not a HeightFunction) "
+                  "displace by a valid height map only (not a HeightFunction) "
                   "(docs/shaders.md, \"Hosts\")"
                 : rt::pipeline_status_message(st));
     }
@@ -437,7 +437,6 @@ Output Runner::tessellate(const rt::MeshView& mesh,
             throw Error(
                 "the Displacement is not valid (rt::displacement_valid: finite numbers, factor_bound >= 0, "
                 "normal_step in (0, 0.5])");
-        if (quads != 0) throw Error("the shaders displace triangle meshes only: this mesh has quads");
         const rt::HeightMap& map = displacement->map;
         const bool empty = map.texels == nullptr || map.width == 0 || map.height == 0;
         if ((empty ? 0 : std::uint64_t{map.width} * map.height) != texel_count)
