@@ -1383,14 +1383,17 @@ void ctess_prefix_sum() {
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
 // adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
 // pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
-void emit_vertices(bool quad_pass) {
+void emit_vertices(bool quad_pass, bool displaced) {
     uint first_patch = quad_pass ? max(params[PARAM_FIRST_PATCH], triangle_count()) : params[PARAM_FIRST_PATCH];
     uint end = min(params[PARAM_END_PATCH], quad_pass ? patch_count() : triangle_count());
     float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
     uint surface = params[PARAM_SURFACE];
     bool aen = surface == SURFACE_PN_AEN;
     bool uniform_ = uniform_pattern();
-    bool displace = displacement_on();
+    // Displacement runs in its own entry points (a software adapter runs an untaken branch at full cost); the
+    // others write no vertex when the params displace, rather than undisplaced ones.
+    bool displace = displaced;
+    if (displacement_on() != displaced) return;
     for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
@@ -1498,8 +1501,10 @@ void emit_vertices(bool quad_pass) {
     }
 }
 
-void ctess_emit_vertices() { emit_vertices(false); }
-void ctess_emit_quad_vertices() { emit_vertices(true); }
+void ctess_emit_vertices() { emit_vertices(false, false); }
+void ctess_emit_quad_vertices() { emit_vertices(true, false); }
+void ctess_emit_displaced_vertices() { emit_vertices(false, true); }
+void ctess_emit_displaced_quad_vertices() { emit_vertices(true, true); }
 
 // Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices
 // (a quad's half B after A, its indices after A's vertices).

@@ -1,7 +1,7 @@
 // ctess mesh pipeline (both pattern families: CP and uniform density), WGSL compute. Generated from
 // shaders/ctess_mesh.wgsl by gen/: the generator replaces the constants placeholder below with a block of `const`
 // lines taken from the C++ definitions (gen/shaders/shader_layout.hpp and the table blob's layout; docs/shaders.md,
-// "Generated constants"), so no layout number is written by hand here. Four entry points, the same steps as
+// "Generated constants"), so no layout number is written by hand here. Eight entry points, the same steps as
 // runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_mesh.comp.glsl, operation for
 // operation; the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 
@@ -1393,14 +1393,17 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
 // adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
 // pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
-fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
+fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
     let first_patch = select(params[PARAM_FIRST_PATCH], max(params[PARAM_FIRST_PATCH], triangle_count()), quad_pass);
     let end = min(params[PARAM_END_PATCH], select(triangle_count(), patch_count(), quad_pass));
     let alpha = bitcast<f32>(params[PARAM_ALPHA]);
     let surface = params[PARAM_SURFACE];
     let aen = surface == SURFACE_PN_AEN;
     let uniform_ = uniform_pattern();
-    let displace = displacement_on();
+    // Displacement runs in its own entry points (a software adapter runs an untaken branch at full cost); the
+    // others write no vertex when the params displace, rather than undisplaced ones.
+    let displace = displaced;
+    if (displacement_on() != displaced) { return; }
     for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
@@ -1518,12 +1521,22 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                        @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(false, wid, groups, lid);
+    emit_vertices(false, false, wid, groups, lid);
 }
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                             @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(true, wid, groups, lid);
+    emit_vertices(true, false, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_displaced_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                                 @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(false, true, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_displaced_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                                      @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(true, true, wid, groups, lid);
 }
 
 // Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices

@@ -59,6 +59,8 @@ export class MeshPipeline {
         const made = await Promise.all(own.map((x) => make(x.entry)).concat(extraEntryPoints.map(make)));
         [p.setup, p.scan, p.emitVertices, p.emitTriangles, p.emitQuadVertices, p.emitQuadTriangles] = made;
         extraEntryPoints.forEach((name, k) => { p.extra[name] = made[own.length + k]; });
+        // The displaced vertex passes are made on the first displaced run (displaced()).
+        p.makeDisplaced = () => Promise.all([pass.emit_displaced_vertices, pass.emit_displaced_quad_vertices].map((x) => make(x.entry)));
         const err = await device.popErrorScope();
         if (err) throw new Error(err.message);
         return p;
@@ -215,6 +217,9 @@ export class MeshPipeline {
         for (const [what, words] of [['mesh vertices', meshVertices.length], ['mesh indices', meshIndices.length], ['patch records', patchWords]])
             if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
+        // Displaced vertices come from their own entry points (the others write none for such params).
+        const [emitVertices, emitQuadVertices] = params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON
+            ? await this.displaced() : [this.emitVertices, this.emitQuadVertices];
         // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
@@ -270,8 +275,8 @@ export class MeshPipeline {
                 const triangles = n - quads;
                 const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
                     .map((count) => Math.min(count, maxGroups));
-                const passes = [[this.emitVertices, groups[0]], [this.emitTriangles, groups[0]],
-                                [this.emitQuadVertices, groups[1]], [this.emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
+                const passes = [[emitVertices, groups[0]], [this.emitTriangles, groups[0]],
+                                [emitQuadVertices, groups[1]], [this.emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
                 milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
                 first = end;
             }
@@ -312,6 +317,12 @@ export class MeshPipeline {
         vertices.set(new Uint32Array(meshVertices.buffer, meshVertices.byteOffset, vertexWords));
         vertices.set(new Uint32Array(directions.buffer, directions.byteOffset, n), vertexWords);
         return [vertices, indices];
+    }
+
+    // The pipelines of the displaced vertex passes [triangles, quads], made once on first use.
+    displaced() {
+        this.displacedPipelines ??= this.makeDisplaced();
+        return this.displacedPipelines;
     }
 
     // Frees the table blobs (the pipelines need no freeing).

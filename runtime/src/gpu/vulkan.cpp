@@ -39,9 +39,14 @@ std::vector<std::uint32_t> read_words(const std::string& path) {
     return words;
 }
 
-constexpr const char* pass_suffix[MeshPipeline::passes] = {
-    "_patch_setup.spv",    "_prefix_sum.spv",         "_emit_vertices.spv",
-    "_emit_triangles.spv", "_emit_quad_vertices.spv", "_emit_quad_triangles.spv"};
+constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
+                                                           "_prefix_sum.spv",
+                                                           "_emit_vertices.spv",
+                                                           "_emit_triangles.spv",
+                                                           "_emit_quad_vertices.spv",
+                                                           "_emit_quad_triangles.spv",
+                                                           "_emit_displaced_vertices.spv",
+                                                           "_emit_displaced_quad_vertices.spv"};
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -185,17 +190,20 @@ void MeshPipeline::record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::
 }
 
 void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                               std::uint32_t quad_patches, std::uint32_t max_workgroups) const {
+                               std::uint32_t quad_patches, std::uint32_t max_workgroups,
+                               bool displaced) const {
     if (triangle_patches == 0 && quad_patches == 0) return;
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
-    // Vertices, then triangles, of the triangles (passes 2, 3) and of the quads (4, 5).
+    // Vertices, then triangles, of the triangles (passes 2, 3) and of the quads (4, 5); displaced vertices
+    // from their own passes (6, 7), so that undisplaced meshes run no displacement code (docs/shaders.md).
     const std::uint32_t count[2] = {triangle_patches, quad_patches};
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (count[kind] == 0) continue;
         const std::uint32_t groups = rt::gpu::emit_workgroups(count[kind], max_workgroups);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2 + 2 * kind]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipelines_[displaced ? 6 + kind : 2 + 2 * kind]);
         vkCmdDispatch(cmd, groups, 1, 1);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[3 + 2 * kind]);
         vkCmdDispatch(cmd, groups, 1, 1);
@@ -572,7 +580,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                             triangles = n - quads;
         const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
         d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
-                                end > quad_first ? end - quad_first : 0, run.max_workgroups);
+                                end > quad_first ? end - quad_first : 0, run.max_workgroups, displace);
     });
     out.vertices.resize(out.totals.vertices);
     if (!out.vertices.empty())

@@ -85,12 +85,14 @@ class MeshPipeline {
                        std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
     // Records the emit passes for the params' patch range [first, end), which holds triangle_patches base
     // triangles and quad_patches quads (a pass with none is skipped), with a barrier before (for the counts);
-    // to draw the outputs, add a compute-to-vertex-input (and index-read) barrier after it.
+    // to draw the outputs, add a compute-to-vertex-input (and index-read) barrier after it. displaced: the
+    // params displace (rt::gpu::displacement_flag::on); the vertices then come from the displaced passes (the
+    // others write no vertex for such params; docs/shaders.md, "Displacement").
     void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                     std::uint32_t quad_patches,
-                     std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+                     std::uint32_t quad_patches, std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
+                     bool displaced = false) const;
 
-    static constexpr unsigned passes = 6;
+    static constexpr unsigned passes = 8;
 
   private:
     void destroy() noexcept;
@@ -99,7 +101,8 @@ class MeshPipeline {
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
     VkShaderModule modules_[passes] = {};
-    VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads
+    VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads, displaced
+                                        // vertices of triangles and of quads
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
