@@ -584,17 +584,25 @@ void check_displaced_parity(unsigned max_factor, rt::Surface surface, rt::Patter
     const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
     const PipelineOutput gpu = run_gpu(max_factor, scene, work);
     const Comparison c = compare(cpu, gpu);
+    double normal_error = 0.0; // the largest normal component difference (compare bounds it by 1e-5)
+    for (std::size_t v = 0;
+         v + vertex_words <= cpu.vertices.size() && v + vertex_words <= gpu.vertices.size();
+         v += vertex_words)
+        for (std::size_t k = 5; k < 8; ++k)
+            normal_error =
+                std::fmax(normal_error, std::fabs(static_cast<double>(bits_float(cpu.vertices[v + k])) -
+                                                  bits_float(gpu.vertices[v + k])));
     // The growth is real: without it the counts are smaller.
     Scene plain = scene;
     plain.options.displacement = nullptr;
     const PipelineOutput undisplaced = run_cpu(tables_for(max_factor), plain);
     std::printf(
         "%s, max %u, %s, %s, %s, %s directions: displaced grid of %u patches (%zu quads), %u vertices "
-        "(%u undisplaced); max position error %.2g\n",
+        "(%u undisplaced); max position error %.2g, normal error %.2g\n",
         backend_name, max_factor, pattern_name(pattern), surface_name(surface),
         address == rt::AddressMode::repeat ? "repeat" : "clamp", directions ? "welded" : "no",
         scene.patch_count(), scene.quads.size() / 4, cpu.total_vertices(), undisplaced.total_vertices(),
-        c.max_position_error);
+        c.max_position_error, normal_error);
     INFO(c.first_difference);
     CHECK(c.equal());
     CHECK(cpu.total_vertices() > undisplaced.total_vertices());
