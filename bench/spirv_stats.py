@@ -16,7 +16,8 @@ import subprocess
 import sys
 import tempfile
 
-PASSES = ["patch_setup", "emit_vertices", "emit_triangles", "emit_quad_vertices", "emit_quad_triangles"]
+PASSES = ["patch_setup", "emit_vertices", "emit_triangles", "emit_quad_vertices", "emit_quad_triangles",
+          "emit_displaced_vertices", "emit_displaced_quad_vertices"]
 # The function one invocation runs per output element of a pass, per pattern (shaders/ctess_mesh.comp.glsl).
 ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex"},
            "emit_triangles": {"cp": "patch_triangle", "uniform": "uniform_triangle"}}

@@ -596,6 +596,8 @@ bool same_bits(vec3 a, vec3 b) { return floatBitsToUint(a) == floatBitsToUint(b)
 void adjacent_normals(uint t, uint e, Corner from_, Corner to_, out vec3 at_from, out vec3 at_to) {
     at_from = from_.normal;
     at_to = to_.normal;
+    // With displacement, binding 3 holds the adjacency only when its flag says so (the texels follow).
+    if ((params[PARAM_DISPLACEMENT_FLAGS] & (DISPLACEMENT_ON | DISPLACEMENT_ADJACENCY)) == DISPLACEMENT_ON) return;
     uint at = 3u * triangle_count() + 4u * params[PARAM_QUAD_COUNT] + 12u * t + 3u + 2u * e;
     if (at + 1u >= uint(mesh_indices.length())) return;
     uint i = mesh_indices[at], j = mesh_indices[at + 1u];
@@ -679,6 +681,245 @@ SurfacePoint evaluate_surface_aen(Corner c[3], vec3 adj_from[3], vec3 adj_to[3],
     o.position = without_negative_zero(blend(flat_p, pn, alpha));
     o.normal = normalize_or_zero(blend(flat_n, nn, alpha));
     return o;
+}
+
+// ---- displacement (displace.cpp and height_map.cpp, docs/algorithm.md §8) ----
+// Operation for operation as the CPU's, which is compiled with -ffp-contract=off: every expression is `precise`, so
+// that no multiply-add is fused. Params: PARAM_DISPLACEMENT_* and PARAM_HEIGHT_MAP_*; the directions (3 floats per
+// mesh vertex) follow the mesh vertices in binding 2, the texels (f32 bits, row-major, row 0 at v = 0) follow the
+// indices and the adjacency in binding 3 (docs/shaders.md, "Displacement").
+bool displacement_on() { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ON) != 0u; }
+bool displacement_adjacency() { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ADJACENCY) != 0u; }
+float param_float(uint w) { return uintBitsToFloat(params[w]); }
+bool finite_bits(float f) { return (floatBitsToUint(f) & 0x7FFFFFFFu) < 0x7F800000u; }
+// Binding 3's adjacency starts after the indices; its texels after the adjacency when the host uploaded it.
+uint adjacency_base() { return 3u * triangle_count() + 4u * params[PARAM_QUAD_COUNT]; }
+uint texel_base() {
+    return adjacency_base() + (displacement_adjacency() ? 12u * (triangle_count() + 2u * params[PARAM_QUAD_COUNT]) : 0u);
+}
+// A texel past the end of binding 3 (a host that uploaded fewer) reads 0: never out of bounds.
+float texel(uint i) {
+    uint at = texel_base() + i;
+    return at < uint(mesh_indices.length()) ? uintBitsToFloat(mesh_indices[at]) : 0.0;
+}
+// height_map.cpp's texel_coordinate: the integer part (in [-1, n - 1]) and the fraction.
+int texel_coordinate(float u, uint n, bool repeat_, out float fraction) {
+    precise float x = repeat_ ? u - floor(u) : (u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u);
+    precise float y = x * float(n) - 0.5;
+    float base = floor(y);
+    precise float f = y - base;
+    fraction = f;
+    return int(base);
+}
+uint texel_address(int i, uint n, bool repeat_) {
+    if (repeat_) return i < 0 ? n - 1u : uint(i) >= n ? uint(i) - n : uint(i);
+    return i < 0 ? 0u : uint(i) >= n ? n - 1u : uint(i);
+}
+// sample_bilinear: texel centres at ((i + 0.5) / width, (j + 0.5) / height); an empty map or a NaN or infinite
+// coordinate gives 0, an address mode other than repeat reads as clamp.
+float sample_bilinear(float u, float v) {
+    uint width = params[PARAM_HEIGHT_MAP_WIDTH], height = params[PARAM_HEIGHT_MAP_HEIGHT];
+    if (width == 0u || height == 0u) return 0.0;
+    if (!finite_bits(u) || !finite_bits(v)) return 0.0;
+    bool repeat_ = params[PARAM_HEIGHT_MAP_ADDRESS] == ADDRESS_REPEAT;
+    float fx, fy;
+    int i0 = texel_coordinate(u, width, repeat_, fx);
+    int j0 = texel_coordinate(v, height, repeat_, fy);
+    uint x0 = texel_address(i0, width, repeat_), x1 = texel_address(i0 + 1, width, repeat_);
+    uint row0 = texel_address(j0, height, repeat_) * width, row1 = texel_address(j0 + 1, height, repeat_) * width;
+    precise float top = (1.0 - fx) * texel(row0 + x0) + fx * texel(row0 + x1);
+    precise float bottom = (1.0 - fx) * texel(row1 + x0) + fx * texel(row1 + x1);
+    precise float h = (1.0 - fy) * top + fy * bottom;
+    return h;
+}
+// scale * (texel * factor + offset)
+float displacement_height(float u, float v) {
+    float t = sample_bilinear(u, v);
+    precise float h = param_float(PARAM_DISPLACEMENT_SCALE) * (t * param_float(PARAM_DISPLACEMENT_FACTOR) +
+                                                               param_float(PARAM_DISPLACEMENT_OFFSET));
+    return h;
+}
+// displaced_edge_factor (§8.4): the factor of edge a -> b grown by the bound, as if displacement lengthened it
+// at both ends.
+float displaced_edge_factor(float factor, vec3 a, vec3 b) {
+    float bound = param_float(PARAM_DISPLACEMENT_FACTOR_BOUND);
+    if (!displacement_on() || !(bound > 0.0)) return factor;
+    precise vec3 e = b - a;
+    precise float len = sqrt(dot3(e, e));
+    if (!(len > 0.0)) return factor;
+    precise float grown = factor * (1.0 + 2.0 * bound / len);
+    return grown;
+}
+vec3 cross3(vec3 a, vec3 b) {
+    precise vec3 c = vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+    return c;
+}
+vec3 scaled(float s, vec3 a) {
+    precise vec3 r = s * a;
+    return r;
+}
+// What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction, per
+// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs; 3 or 4 corners.
+struct DisplacementPatch {
+    uint corners;
+    vec2 corner_uv[4];
+    vec3 direction[4];
+    vec4 edge_uv[4];
+    vec3 position[4];
+    vec2 own_uv[4];
+};
+vec2 mesh_uv(uint v) { return vec2(mesh_vertices[v * MESH_VERTEX_FLOATS + 6u], mesh_vertices[v * MESH_VERTEX_FLOATS + 7u]); }
+// A corner's dominant vertex (§8.2): adjacency slot 9 + corner where the host uploaded the adjacency, else the
+// vertex itself; one outside the mesh or at another position: the vertex itself.
+uint dominant_vertex(uint v, uint face, uint slot) {
+    uint d = v;
+    if (displacement_adjacency()) d = mesh_indices[adjacency_base() + 12u * face + 9u + slot];
+    return d < params[PARAM_MESH_VERTEX_COUNT] && same_bits(mesh_position(d), mesh_position(v)) ? d : v;
+}
+// Displacement::directions (after the mesh vertices), or the vertex normal, normalised.
+vec3 vertex_direction(uint v) {
+    uint o = v * MESH_VERTEX_FLOATS + 3u;
+    if ((params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_DIRECTIONS) != 0u)
+        o = params[PARAM_MESH_VERTEX_COUNT] * MESH_VERTEX_FLOATS + 3u * v;
+    return normalize_or_zero(vec3(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]));
+}
+// displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
+// corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
+DisplacementPatch displacement_patch(uint corners, uint w[4], uint corner_face[4], uint corner_slot[4], uint edge_face[4],
+                                     uint edge_slot[4]) {
+    DisplacementPatch dp;
+    dp.corners = corners;
+    uint n = params[PARAM_MESH_VERTEX_COUNT];
+    for (uint k = 0u; k < corners; ++k) {
+        uint dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]);
+        dp.position[k] = mesh_position(w[k]);
+        dp.own_uv[k] = mesh_uv(w[k]);
+        dp.corner_uv[k] = mesh_uv(dom);
+        dp.direction[k] = vertex_direction(dom);
+    }
+    // The dominant edge: of the own edge and the neighbour's (slots 3-8, paired by position), the one whose
+    // vertices, taken in position order, are lexicographically smaller; the neighbour picks the same one.
+    for (uint k = 0u; k < corners; ++k) {
+        uint a = w[k], b = w[(k + 1u) % corners];
+        uvec2 pick = uvec2(a, b);
+        if (displacement_adjacency()) {
+            uint at = adjacency_base() + 12u * edge_face[k] + 3u + 2u * edge_slot[k];
+            uint c = mesh_indices[at], e = mesh_indices[at + 1u];
+            if (c < n && e < n) {
+                if (!same_bits(mesh_position(c), mesh_position(a))) { uint x = c; c = e; e = x; }
+                if (same_bits(mesh_position(c), mesh_position(a)) && same_bits(mesh_position(e), mesh_position(b))) {
+                    bool a_first = !position_before(mesh_position(b), mesh_position(a));
+                    uvec2 own_key = a_first ? uvec2(a, b) : uvec2(b, a);
+                    uvec2 adj_key = a_first ? uvec2(c, e) : uvec2(e, c);
+                    if (adj_key.x < own_key.x || (adj_key.x == own_key.x && adj_key.y < own_key.y)) pick = uvec2(c, e);
+                }
+            }
+        }
+        dp.edge_uv[k] = vec4(mesh_uv(pick.x), mesh_uv(pick.y));
+    }
+    return dp;
+}
+// bend_normal (§8.3): the normal bent by the height's central differences hu, hv along the tangents tu, tv.
+void bend_normal(inout SurfacePoint p, vec3 tu, vec3 tv, float hu, float hv) {
+    vec3 n = normalize_or_zero(p.normal);
+    if (!(dot3(n, n) > 0.0)) return;
+    precise vec3 pu = tu - scaled(dot3(tu, n), n);
+    precise vec3 pv = tv - scaled(dot3(tv, n), n);
+    float j = dot3(cross3(pu, pv), n);
+    if (!(j != 0.0) || !finite_bits(hu) || !finite_bits(hv)) return;
+    precise vec3 m = (scaled(j, n) + scaled(hv, cross3(pu, n))) + scaled(hu, cross3(n, pv));
+    vec3 bent = normalize_or_zero(scaled(j < 0.0 ? -1.0 : 1.0, m));
+    if (dot3(bent, bent) > 0.0) p.normal = bent;
+}
+// The height at the own uv of triangle parameter (a, b) = (w1, w2).
+float tri_uv_height(DisplacementPatch dp, float a, float b) {
+    precise float c = (1.0 - a) - b;
+    precise float u = (c * dp.own_uv[0].x + a * dp.own_uv[1].x) + b * dp.own_uv[2].x;
+    precise float v = (c * dp.own_uv[0].y + a * dp.own_uv[1].y) + b * dp.own_uv[2].y;
+    return displacement_height(u, v);
+}
+void move_point(inout SurfacePoint p, float height, vec3 direction) {
+    precise vec3 moved = p.position + scaled(height, direction);
+    p.position = moved;
+}
+// A point on patch edge k with weights wa at corner k and wb at corner k + 1: the dominant edge's uvs and the
+// dominant directions interpolated from the endpoint first in position order (equal positions: the larger weight).
+void displace_edge(DisplacementPatch dp, uint k, uint wa, uint wb, inout SurfacePoint p) {
+    uint a = k, b = (k + 1u) % dp.corners;
+    vec2 uv_a = dp.edge_uv[k].xy, uv_b = dp.edge_uv[k].zw;
+    if (wa == FIXED_ONE || wb == FIXED_ONE) {
+        uint c = wa == FIXED_ONE ? a : b;
+        move_point(p, displacement_height(dp.corner_uv[c].x, dp.corner_uv[c].y), dp.direction[c]);
+        return;
+    }
+    bool swap_ = position_before(dp.position[b], dp.position[a]) ||
+                 (!position_before(dp.position[a], dp.position[b]) && wb > wa);
+    if (swap_) {
+        uint x = a; a = b; b = x;
+        vec2 y = uv_a; uv_a = uv_b; uv_b = y;
+        uint z = wa; wa = wb; wb = z;
+    }
+    float ta = fixed_weight(wa), tb = fixed_weight(wb);
+    precise float u = ta * uv_a.x + tb * uv_b.x;
+    precise float v = ta * uv_a.y + tb * uv_b.y;
+    precise vec3 dir = scaled(ta, dp.direction[a]) + scaled(tb, dp.direction[b]);
+    move_point(p, displacement_height(u, v), normalize_or_zero(dir));
+}
+// displace_triangle_point: p is the surface point of base weights w (units of FIXED_ONE).
+void displace_triangle_point(DisplacementPatch dp, uint w[3], inout SurfacePoint p) {
+    float a = fixed_weight(w[1]), b = fixed_weight(w[2]);
+    float step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    precise float hu = (tri_uv_height(dp, a + step_, b) - tri_uv_height(dp, a - step_, b)) / (2.0 * step_);
+    precise float hv = (tri_uv_height(dp, a, b + step_) - tri_uv_height(dp, a, b - step_)) / (2.0 * step_);
+    precise vec3 tu = dp.position[1] - dp.position[0];
+    precise vec3 tv = dp.position[2] - dp.position[0];
+    bend_normal(p, tu, tv, hu, hv);
+    // A corner, an edge point (edge k has zero weight at corner k + 2) or an interior point.
+    for (uint k = 0u; k < 3u; ++k) {
+        if (w[(k + 2u) % 3u] == 0u || w[k] == FIXED_ONE) {
+            if (w[k] == FIXED_ONE) displace_edge(dp, k, FIXED_ONE, 0u, p);
+            else displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p);
+            return;
+        }
+    }
+    precise vec3 dir = (scaled(fixed_weight(w[0]), dp.direction[0]) + scaled(a, dp.direction[1])) + scaled(b, dp.direction[2]);
+    move_point(p, displacement_height(p.uv.x, p.uv.y), normalize_or_zero(dir));
+}
+// The height at the own uv of quad parameter (s, t), bilinear.
+float quad_uv_height(DisplacementPatch dp, float s, float t) {
+    precise float w[4] = float[4]((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
+    precise float u = ((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x;
+    precise float v = ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y;
+    return displacement_height(u, v);
+}
+// displace_quad_point: p is the surface point of quad point (s, t) of the unit square (units of FIXED_ONE).
+void displace_quad_point(DisplacementPatch dp, uint s, uint t, inout SurfacePoint p) {
+    float fs = fixed_weight(s), ft = fixed_weight(t);
+    float step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    precise float hu = (quad_uv_height(dp, fs + step_, ft) - quad_uv_height(dp, fs - step_, ft)) / (2.0 * step_);
+    precise float hv = (quad_uv_height(dp, fs, ft + step_) - quad_uv_height(dp, fs, ft - step_)) / (2.0 * step_);
+    precise vec3 ts = scaled(1.0 - ft, dp.position[1] - dp.position[0]) + scaled(ft, dp.position[2] - dp.position[3]);
+    precise vec3 tt = scaled(1.0 - fs, dp.position[3] - dp.position[0]) + scaled(fs, dp.position[2] - dp.position[1]);
+    bend_normal(p, ts, tt, hu, hv);
+    // Corners, then edge k from q_k with parameter r measured from q_k (t = 0, s = 1, t = 1, s = 0), then the
+    // interior.
+    if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
+        uint c = t == 0u ? (s == 0u ? 0u : 1u) : (s == FIXED_ONE ? 2u : 3u);
+        displace_edge(dp, c, FIXED_ONE, 0u, p);
+        return;
+    }
+    bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (uint k = 0u; k < 4u; ++k) {
+        if (on_edge[k]) {
+            displace_edge(dp, k, FIXED_ONE - r[k], r[k], p);
+            return;
+        }
+    }
+    precise float w[4] = float[4]((1.0 - fs) * (1.0 - ft), fs * (1.0 - ft), fs * ft, (1.0 - fs) * ft);
+    precise vec3 dir = ((scaled(w[0], dp.direction[0]) + scaled(w[1], dp.direction[1])) + scaled(w[2], dp.direction[2])) +
+                       scaled(w[3], dp.direction[3]);
+    move_point(p, displacement_height(p.uv.x, p.uv.y), normalize_or_zero(dir));
 }
 
 // ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
@@ -917,7 +1158,8 @@ vec3 mesh_eye() {
 }
 // The factor and squared length of mesh edge (i, j), endpoints in mesh-index order (both faces get the same bits).
 float mesh_edge_factor(uint i, uint j) {
-    return edge_tess_factor(mesh_position(min(i, j)), mesh_position(max(i, j)), mesh_eye(), uintBitsToFloat(params[PARAM_FACTOR_SCALE]));
+    vec3 a = mesh_position(min(i, j)), b = mesh_position(max(i, j));
+    return displaced_edge_factor(edge_tess_factor(a, b, mesh_eye(), uintBitsToFloat(params[PARAM_FACTOR_SCALE])), a, b);
 }
 float mesh_edge_length2(uint i, uint j) {
     precise vec3 d = mesh_position(max(i, j)) - mesh_position(min(i, j));
@@ -1052,7 +1294,7 @@ void setup_one_patch(uint t) {
     for (uint k = 0u; k < 3u; ++k) {
         uint i = wv[k], j = wv[(k + 1u) % 3u];
         vec3 a = mesh_position(min(i, j)), b = mesh_position(max(i, j));
-        factor[k] = edge_tess_factor(a, b, eye, scale);
+        factor[k] = displaced_edge_factor(edge_tess_factor(a, b, eye, scale), a, b); // grown by the bound (§8.4)
         precise vec3 d = b - a;
         length2[k] = dot3(d, d);
     }
@@ -1141,13 +1383,17 @@ void ctess_prefix_sum() {
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
 // adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
 // pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
-void emit_vertices(bool quad_pass) {
+void emit_vertices(bool quad_pass, bool displaced) {
     uint first_patch = quad_pass ? max(params[PARAM_FIRST_PATCH], triangle_count()) : params[PARAM_FIRST_PATCH];
     uint end = min(params[PARAM_END_PATCH], quad_pass ? patch_count() : triangle_count());
     float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
     uint surface = params[PARAM_SURFACE];
     bool aen = surface == SURFACE_PN_AEN;
     bool uniform_ = uniform_pattern();
+    // Displacement runs in its own entry points (a software adapter runs an untaken branch at full cost); the
+    // others write no vertex when the params displace, rather than undisplaced ones.
+    bool displace = displaced;
+    if (displacement_on() != displaced) return;
     for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
@@ -1161,6 +1407,7 @@ void emit_vertices(bool quad_pass) {
         Patch halves[2];
         uvec3 words[2];
         uint vertices_a = count;
+        DisplacementPatch dp;
         if (quad) {
             uint w[4];
             if (!base_quad(t - triangle_count(), w)) continue;
@@ -1175,6 +1422,20 @@ void emit_vertices(bool quad_pass) {
                 if (aen) adjacent_normals(face + (m >= 2u ? 1u : 0u), m >= 2u ? m - 1u : m, q[k], q[(k + 1u) % 4u], adj_from[k], adj_to[k]);
             }
             vertices_a = quad_halves(rec, halves, words).x;
+            if (displace) {
+                // Mesh corners q0, q1, q2 are slots 0-2 of face (q0, q1, q2), q3 slot 2 of (q0, q2, q3); mesh edges
+                // 0 and 1 are edges 0 and 1 of the first, 2 and 3 edges 1 and 2 of the second (mesh_pipeline.cpp).
+                uint wp[4], corner_face[4], corner_slot[4], edge_face[4], edge_slot[4];
+                for (uint k = 0u; k < 4u; ++k) {
+                    uint m = (k + rot) % 4u;
+                    wp[k] = w[m];
+                    corner_face[k] = face + (m == 3u ? 1u : 0u);
+                    corner_slot[k] = m == 3u ? 2u : m;
+                    edge_face[k] = face + (m >= 2u ? 1u : 0u);
+                    edge_slot[k] = m >= 2u ? m - 1u : m;
+                }
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot);
+            }
         } else {
             uvec3 w;
             if (!base_triangle(t, w)) continue;
@@ -1189,6 +1450,9 @@ void emit_vertices(bool quad_pass) {
             }
             halves[0] = uniform_ ? patch_zero() : record_patch(rec);
             words[0] = uniform_words(rec);
+            if (displace)
+                dp = displacement_patch(3u, uint[4](w.x, w.y, w.z, 0u), uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u),
+                                        uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u));
         }
         uint first = patches[rec + REC_FIRST_VERTEX];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
@@ -1229,13 +1493,18 @@ void emit_vertices(bool quad_pass) {
             if (inner) sp = quad_interior(q, adj_from, adj_to, aen, out_uv.x, out_uv.y, surface, alpha);
             else if (aen) sp = evaluate_surface_aen(tri, from3, to3, w3, alpha);
             else sp = evaluate_surface(tri, w3, surface, alpha);
+            // §8: after the surface, as mesh_pipeline.cpp (a quad's every point by its square point).
+            if (displace && quad) displace_quad_point(dp, out_uv.x, out_uv.y, sp);
+            else if (displace) displace_triangle_point(dp, w3, sp);
             store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }
 }
 
-void ctess_emit_vertices() { emit_vertices(false); }
-void ctess_emit_quad_vertices() { emit_vertices(true); }
+void ctess_emit_vertices() { emit_vertices(false, false); }
+void ctess_emit_quad_vertices() { emit_vertices(true, false); }
+void ctess_emit_displaced_vertices() { emit_vertices(false, true); }
+void ctess_emit_displaced_quad_vertices() { emit_vertices(true, true); }
 
 // Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices
 // (a quad's half B after A, its indices after A's vertices).

@@ -1,7 +1,7 @@
 // ctess mesh pipeline (both pattern families: CP and uniform density), WGSL compute. Generated from
 // shaders/ctess_mesh.wgsl by gen/: the generator replaces the constants placeholder below with a block of `const`
 // lines taken from the C++ definitions (gen/shaders/shader_layout.hpp and the table blob's layout; docs/shaders.md,
-// "Generated constants"), so no layout number is written by hand here. Four entry points, the same steps as
+// "Generated constants"), so no layout number is written by hand here. Eight entry points, the same steps as
 // runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_mesh.comp.glsl, operation for
 // operation; the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 
@@ -591,6 +591,8 @@ struct EdgeNormals {
 fn same_bits(a: vec3<f32>, b: vec3<f32>) -> bool { return all(bitcast<vec3<u32>>(a) == bitcast<vec3<u32>>(b)); }
 fn adjacent_normals(t: u32, e: u32, from_: Corner, to_: Corner) -> EdgeNormals {
     let own = EdgeNormals(from_.normal, to_.normal);
+    // With displacement, binding 3 holds the adjacency only when its flag says so (the texels follow).
+    if ((params[PARAM_DISPLACEMENT_FLAGS] & (DISPLACEMENT_ON | DISPLACEMENT_ADJACENCY)) == DISPLACEMENT_ON) { return own; }
     let at = 3u * triangle_count() + 4u * params[PARAM_QUAD_COUNT] + 12u * t + 3u + 2u * e;
     if (at + 1u >= arrayLength(&mesh_indices)) { return own; }
     let i = mesh_indices[at]; let j = mesh_indices[at + 1u];
@@ -670,6 +672,252 @@ fn evaluate_surface_aen(corners: array<Corner, 3>, edges: array<EdgeNormals, 3>,
                       w0, w1, w2);
     return SurfacePoint(without_negative_zero(blend(flat_p, pn.position, alpha)),
                         normalize_or_zero(blend(flat_n, pn.normal, alpha)), uv);
+}
+
+// ---- displacement (displace.cpp and height_map.cpp, docs/algorithm.md §8) ----
+// Operation for operation as the CPU's (compiled with -ffp-contract=off; WGSL has no `precise`, so a driver may
+// fuse: docs/shaders.md, "Displacement", gives the bound). Params: PARAM_DISPLACEMENT_* and PARAM_HEIGHT_MAP_*;
+// the directions (3 floats per mesh vertex) follow the mesh vertices in binding 2, the texels (f32 bits,
+// row-major, row 0 at v = 0) follow the indices and the adjacency in binding 3.
+fn displacement_on() -> bool { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ON) != 0u; }
+fn displacement_adjacency() -> bool { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ADJACENCY) != 0u; }
+fn param_float(w: u32) -> f32 { return bitcast<f32>(params[w]); }
+fn finite_bits(f: f32) -> bool { return (bitcast<u32>(f) & 0x7FFFFFFFu) < 0x7F800000u; }
+// Binding 3's adjacency starts after the indices; its texels after the adjacency when the host uploaded it.
+fn adjacency_base() -> u32 { return 3u * triangle_count() + 4u * params[PARAM_QUAD_COUNT]; }
+fn texel_base() -> u32 {
+    return adjacency_base() + select(0u, 12u * (triangle_count() + 2u * params[PARAM_QUAD_COUNT]), displacement_adjacency());
+}
+// A texel past the end of binding 3 (a host that uploaded fewer) reads 0: never out of bounds.
+fn texel(i: u32) -> f32 {
+    let at = texel_base() + i;
+    if (at >= arrayLength(&mesh_indices)) { return 0.0; }
+    return bitcast<f32>(mesh_indices[at]);
+}
+struct TexelCoordinate {
+    base: i32,
+    fraction: f32,
+}
+// height_map.cpp's texel_coordinate: the integer part (in [-1, n - 1]) and the fraction.
+fn texel_coordinate(u: f32, n: u32, repeat_: bool) -> TexelCoordinate {
+    var x = u - floor(u);
+    if (!repeat_) { x = select(select(u, 1.0, u > 1.0), 0.0, u < 0.0); }
+    let y = x * f32(n) - 0.5;
+    let base = floor(y);
+    return TexelCoordinate(i32(base), y - base);
+}
+fn texel_address(i: i32, n: u32, repeat_: bool) -> u32 {
+    if (repeat_) {
+        if (i < 0) { return n - 1u; }
+        return select(u32(i), u32(i) - n, u32(i) >= n);
+    }
+    if (i < 0) { return 0u; }
+    return select(u32(i), n - 1u, u32(i) >= n);
+}
+// sample_bilinear: texel centres at ((i + 0.5) / width, (j + 0.5) / height); an empty map or a NaN or infinite
+// coordinate gives 0, an address mode other than repeat reads as clamp.
+fn sample_bilinear(u: f32, v: f32) -> f32 {
+    let width = params[PARAM_HEIGHT_MAP_WIDTH]; let height = params[PARAM_HEIGHT_MAP_HEIGHT];
+    if (width == 0u || height == 0u) { return 0.0; }
+    if (!finite_bits(u) || !finite_bits(v)) { return 0.0; }
+    let repeat_ = params[PARAM_HEIGHT_MAP_ADDRESS] == ADDRESS_REPEAT;
+    let cx = texel_coordinate(u, width, repeat_);
+    let cy = texel_coordinate(v, height, repeat_);
+    let fx = cx.fraction; let fy = cy.fraction;
+    let x0 = texel_address(cx.base, width, repeat_); let x1 = texel_address(cx.base + 1, width, repeat_);
+    let row0 = texel_address(cy.base, height, repeat_) * width; let row1 = texel_address(cy.base + 1, height, repeat_) * width;
+    let top = (1.0 - fx) * texel(row0 + x0) + fx * texel(row0 + x1);
+    let bottom = (1.0 - fx) * texel(row1 + x0) + fx * texel(row1 + x1);
+    return (1.0 - fy) * top + fy * bottom;
+}
+// scale * (texel * factor + offset)
+fn displacement_height(u: f32, v: f32) -> f32 {
+    let t = sample_bilinear(u, v);
+    return param_float(PARAM_DISPLACEMENT_SCALE) * (t * param_float(PARAM_DISPLACEMENT_FACTOR) + param_float(PARAM_DISPLACEMENT_OFFSET));
+}
+// displaced_edge_factor (§8.4): the factor of edge a -> b grown by the bound, as if displacement lengthened it
+// at both ends.
+fn displaced_edge_factor(factor: f32, a: vec3<f32>, b: vec3<f32>) -> f32 {
+    let bound = param_float(PARAM_DISPLACEMENT_FACTOR_BOUND);
+    if (!displacement_on() || !(bound > 0.0)) { return factor; }
+    let e = b - a;
+    let len = sqrt(dot3(e, e));
+    if (!(len > 0.0)) { return factor; }
+    return factor * (1.0 + 2.0 * bound / len);
+}
+fn cross3(a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+// What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction, per
+// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs; 3 or 4 corners.
+struct DisplacementPatch {
+    corners: u32,
+    corner_uv: array<vec2<f32>, 4>,
+    direction: array<vec3<f32>, 4>,
+    edge_uv: array<vec4<f32>, 4>,
+    position: array<vec3<f32>, 4>,
+    own_uv: array<vec2<f32>, 4>,
+}
+fn mesh_uv(v: u32) -> vec2<f32> { return vec2<f32>(mesh_vertices[v * MESH_VERTEX_FLOATS + 6u], mesh_vertices[v * MESH_VERTEX_FLOATS + 7u]); }
+// A corner's dominant vertex (§8.2): adjacency slot 9 + corner where the host uploaded the adjacency, else the
+// vertex itself; one outside the mesh or at another position: the vertex itself.
+fn dominant_vertex(v: u32, face: u32, slot: u32) -> u32 {
+    var d = v;
+    if (displacement_adjacency()) { d = mesh_indices[adjacency_base() + 12u * face + 9u + slot]; }
+    if (d < params[PARAM_MESH_VERTEX_COUNT] && same_bits(mesh_position(d), mesh_position(v))) { return d; }
+    return v;
+}
+// Displacement::directions (after the mesh vertices), or the vertex normal, normalised.
+fn vertex_direction(v: u32) -> vec3<f32> {
+    var o = v * MESH_VERTEX_FLOATS + 3u;
+    if ((params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_DIRECTIONS) != 0u) {
+        o = params[PARAM_MESH_VERTEX_COUNT] * MESH_VERTEX_FLOATS + 3u * v;
+    }
+    return normalize_or_zero(vec3<f32>(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]));
+}
+// displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
+// corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
+fn displacement_patch(corners: u32, w_in: array<u32, 4>, corner_face_in: array<u32, 4>, corner_slot_in: array<u32, 4>,
+                      edge_face_in: array<u32, 4>, edge_slot_in: array<u32, 4>) -> DisplacementPatch {
+    var dp: DisplacementPatch;
+    dp.corners = corners;
+    var w = w_in; var corner_face = corner_face_in; var corner_slot = corner_slot_in;
+    var edge_face = edge_face_in; var edge_slot = edge_slot_in;
+    let n = params[PARAM_MESH_VERTEX_COUNT];
+    for (var k = 0u; k < corners; k++) {
+        let dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]);
+        dp.position[k] = mesh_position(w[k]);
+        dp.own_uv[k] = mesh_uv(w[k]);
+        dp.corner_uv[k] = mesh_uv(dom);
+        dp.direction[k] = vertex_direction(dom);
+    }
+    // The dominant edge: of the own edge and the neighbour's (slots 3-8, paired by position), the one whose
+    // vertices, taken in position order, are lexicographically smaller; the neighbour picks the same one.
+    for (var k = 0u; k < corners; k++) {
+        let a = w[k]; let b = w[(k + 1u) % corners];
+        var pick = vec2<u32>(a, b);
+        if (displacement_adjacency()) {
+            let at = adjacency_base() + 12u * edge_face[k] + 3u + 2u * edge_slot[k];
+            var c = mesh_indices[at]; var e = mesh_indices[at + 1u];
+            if (c < n && e < n) {
+                if (!same_bits(mesh_position(c), mesh_position(a))) { let x = c; c = e; e = x; }
+                if (same_bits(mesh_position(c), mesh_position(a)) && same_bits(mesh_position(e), mesh_position(b))) {
+                    let a_first = !position_before(mesh_position(b), mesh_position(a));
+                    let own_key = select(vec2<u32>(b, a), vec2<u32>(a, b), a_first);
+                    let adj_key = select(vec2<u32>(e, c), vec2<u32>(c, e), a_first);
+                    if (adj_key.x < own_key.x || (adj_key.x == own_key.x && adj_key.y < own_key.y)) { pick = vec2<u32>(c, e); }
+                }
+            }
+        }
+        dp.edge_uv[k] = vec4<f32>(mesh_uv(pick.x), mesh_uv(pick.y));
+    }
+    return dp;
+}
+// bend_normal (§8.3): the normal bent by the height's central differences hu, hv along the tangents tu, tv.
+fn bend_normal(normal: vec3<f32>, tu: vec3<f32>, tv: vec3<f32>, hu: f32, hv: f32) -> vec3<f32> {
+    let n = normalize_or_zero(normal);
+    if (!(dot3(n, n) > 0.0)) { return normal; }
+    let pu = tu - dot3(tu, n) * n;
+    let pv = tv - dot3(tv, n) * n;
+    let j = dot3(cross3(pu, pv), n);
+    if (!(j != 0.0) || !finite_bits(hu) || !finite_bits(hv)) { return normal; }
+    let m = (j * n + hv * cross3(pu, n)) + hu * cross3(n, pv);
+    let bent = normalize_or_zero(select(1.0, -1.0, j < 0.0) * m);
+    if (dot3(bent, bent) > 0.0) { return bent; }
+    return normal;
+}
+// The height at the own uv of triangle parameter (a, b) = (w1, w2).
+fn tri_uv_height(dp: DisplacementPatch, a: f32, b: f32) -> f32 {
+    let c = (1.0 - a) - b;
+    return displacement_height((c * dp.own_uv[0].x + a * dp.own_uv[1].x) + b * dp.own_uv[2].x,
+                               (c * dp.own_uv[0].y + a * dp.own_uv[1].y) + b * dp.own_uv[2].y);
+}
+// A point on patch edge k with weights wa at corner k and wb at corner k + 1: the dominant edge's uvs and the
+// dominant directions interpolated from the endpoint first in position order (equal positions: the larger weight).
+// Returns the displaced position.
+fn displace_edge(dp_in: DisplacementPatch, k: u32, wa_in: u32, wb_in: u32, position: vec3<f32>) -> vec3<f32> {
+    var dp = dp_in;
+    var a = k; var b = (k + 1u) % dp.corners;
+    var wa = wa_in; var wb = wb_in;
+    var uv_a = dp.edge_uv[k].xy; var uv_b = dp.edge_uv[k].zw;
+    if (wa == FIXED_ONE || wb == FIXED_ONE) {
+        let c = select(b, a, wa == FIXED_ONE);
+        return position + displacement_height(dp.corner_uv[c].x, dp.corner_uv[c].y) * dp.direction[c];
+    }
+    let swap_ = position_before(dp.position[b], dp.position[a]) ||
+                (!position_before(dp.position[a], dp.position[b]) && wb > wa);
+    if (swap_) {
+        let x = a; a = b; b = x;
+        let y = uv_a; uv_a = uv_b; uv_b = y;
+        let z = wa; wa = wb; wb = z;
+    }
+    let ta = fixed_weight(wa); let tb = fixed_weight(wb);
+    let u = ta * uv_a.x + tb * uv_b.x;
+    let v = ta * uv_a.y + tb * uv_b.y;
+    let dir = normalize_or_zero(ta * dp.direction[a] + tb * dp.direction[b]);
+    return position + displacement_height(u, v) * dir;
+}
+// displace_triangle_point: sp is the surface point of base weights w (units of FIXED_ONE).
+fn displace_triangle_point(dp_in: DisplacementPatch, weights: array<u32, 3>, sp: SurfacePoint) -> SurfacePoint {
+    var dp = dp_in;
+    var w = weights;
+    var p = sp;
+    let a = fixed_weight(w[1]); let b = fixed_weight(w[2]);
+    let step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    let hu = (tri_uv_height(dp, a + step_, b) - tri_uv_height(dp, a - step_, b)) / (2.0 * step_);
+    let hv = (tri_uv_height(dp, a, b + step_) - tri_uv_height(dp, a, b - step_)) / (2.0 * step_);
+    p.normal = bend_normal(p.normal, dp.position[1] - dp.position[0], dp.position[2] - dp.position[0], hu, hv);
+    // A corner, an edge point (edge k has zero weight at corner k + 2) or an interior point.
+    for (var k = 0u; k < 3u; k++) {
+        if (w[(k + 2u) % 3u] == 0u || w[k] == FIXED_ONE) {
+            if (w[k] == FIXED_ONE) {
+                p.position = displace_edge(dp, k, FIXED_ONE, 0u, p.position);
+            } else {
+                p.position = displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p.position);
+            }
+            return p;
+        }
+    }
+    let dir = normalize_or_zero((fixed_weight(w[0]) * dp.direction[0] + a * dp.direction[1]) + b * dp.direction[2]);
+    p.position = p.position + displacement_height(p.uv.x, p.uv.y) * dir;
+    return p;
+}
+// The height at the own uv of quad parameter (s, t), bilinear.
+fn quad_uv_height(dp: DisplacementPatch, s: f32, t: f32) -> f32 {
+    let w = array<f32, 4>((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
+    return displacement_height(((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x,
+                               ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y);
+}
+// displace_quad_point: sp is the surface point of quad point (s, t) of the unit square (units of FIXED_ONE).
+fn displace_quad_point(dp_in: DisplacementPatch, s: u32, t: u32, sp: SurfacePoint) -> SurfacePoint {
+    var dp = dp_in;
+    var p = sp;
+    let fs = fixed_weight(s); let ft = fixed_weight(t);
+    let step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    let hu = (quad_uv_height(dp, fs + step_, ft) - quad_uv_height(dp, fs - step_, ft)) / (2.0 * step_);
+    let hv = (quad_uv_height(dp, fs, ft + step_) - quad_uv_height(dp, fs, ft - step_)) / (2.0 * step_);
+    let ts = (1.0 - ft) * (dp.position[1] - dp.position[0]) + ft * (dp.position[2] - dp.position[3]);
+    let tt = (1.0 - fs) * (dp.position[3] - dp.position[0]) + fs * (dp.position[2] - dp.position[1]);
+    p.normal = bend_normal(p.normal, ts, tt, hu, hv);
+    // Corners, then edge k from q_k with parameter r measured from q_k (t = 0, s = 1, t = 1, s = 0), then the
+    // interior.
+    if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
+        let c = select(select(3u, 2u, s == FIXED_ONE), select(1u, 0u, s == 0u), t == 0u);
+        p.position = displace_edge(dp, c, FIXED_ONE, 0u, p.position);
+        return p;
+    }
+    var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (var k = 0u; k < 4u; k++) {
+        if (on_edge[k]) {
+            p.position = displace_edge(dp, k, FIXED_ONE - r[k], r[k], p.position);
+            return p;
+        }
+    }
+    let w = array<f32, 4>((1.0 - fs) * (1.0 - ft), fs * (1.0 - ft), fs * ft, (1.0 - fs) * ft);
+    let dir = normalize_or_zero(((w[0] * dp.direction[0] + w[1] * dp.direction[1]) + w[2] * dp.direction[2]) + w[3] * dp.direction[3]);
+    p.position = p.position + displacement_height(p.uv.x, p.uv.y) * dir;
+    return p;
 }
 
 // ---- quad surfaces (evaluate_quad_surface, docs/algorithm.md §6.2, §7.3) ----
@@ -938,7 +1186,7 @@ fn setup_one_patch(t: u32) {
     for (var k = 0u; k < 3u; k++) {
         let i = wv[k]; let j = wv[(k + 1u) % 3u];
         let a = mesh_position(min(i, j)); let b = mesh_position(max(i, j));
-        factor[k] = edge_tess_factor(a, b, eye, scale);
+        factor[k] = displaced_edge_factor(edge_tess_factor(a, b, eye, scale), a, b); // grown by the bound (§8.4)
         let d = b - a;
         length2[k] = dot3(d, d);
     }
@@ -966,7 +1214,8 @@ fn mesh_eye() -> vec3<f32> {
 }
 // The factor and squared length of mesh edge (i, j), endpoints in mesh-index order (both faces get the same bits).
 fn mesh_edge_factor(i: u32, j: u32) -> f32 {
-    return edge_tess_factor(mesh_position(min(i, j)), mesh_position(max(i, j)), mesh_eye(), bitcast<f32>(params[PARAM_FACTOR_SCALE]));
+    let a = mesh_position(min(i, j)); let b = mesh_position(max(i, j));
+    return displaced_edge_factor(edge_tess_factor(a, b, mesh_eye(), bitcast<f32>(params[PARAM_FACTOR_SCALE])), a, b);
 }
 fn mesh_edge_length2(i: u32, j: u32) -> f32 {
     let d = mesh_position(max(i, j)) - mesh_position(min(i, j));
@@ -1144,13 +1393,17 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
 // adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
 // pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
-fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
+fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
     let first_patch = select(params[PARAM_FIRST_PATCH], max(params[PARAM_FIRST_PATCH], triangle_count()), quad_pass);
     let end = min(params[PARAM_END_PATCH], select(triangle_count(), patch_count(), quad_pass));
     let alpha = bitcast<f32>(params[PARAM_ALPHA]);
     let surface = params[PARAM_SURFACE];
     let aen = surface == SURFACE_PN_AEN;
     let uniform_ = uniform_pattern();
+    // Displacement runs in its own entry points (a software adapter runs an untaken branch at full cost); the
+    // others write no vertex when the params displace, rather than undisplaced ones.
+    let displace = displaced;
+    if (displacement_on() != displaced) { return; }
     for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
@@ -1164,6 +1417,7 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
         var halves: array<Patch, 2>;
         var words: array<vec3<u32>, 2>;
         var vertices_a = count;
+        var dp: DisplacementPatch;
         if (quad) {
             let wq = base_quad(t - triangle_count());
             if (!base_quad_valid(wq)) { continue; }
@@ -1178,6 +1432,21 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
                 if (aen) { en[k] = adjacent_normals(face + select(0u, 1u, m >= 2u), select(m, m - 1u, m >= 2u), q[k], q[(k + 1u) % 4u]); }
             }
             vertices_a = quad_halves(rec, &halves, &words).x;
+            if (displace) {
+                // Mesh corners q0, q1, q2 are slots 0-2 of face (q0, q1, q2), q3 slot 2 of (q0, q2, q3); mesh edges
+                // 0 and 1 are edges 0 and 1 of the first, 2 and 3 edges 1 and 2 of the second (mesh_pipeline.cpp).
+                var wp: array<u32, 4>; var corner_face: array<u32, 4>; var corner_slot: array<u32, 4>;
+                var edge_face: array<u32, 4>; var edge_slot: array<u32, 4>;
+                for (var k = 0u; k < 4u; k++) {
+                    let m = (k + rot) % 4u;
+                    wp[k] = w[m];
+                    corner_face[k] = face + select(0u, 1u, m == 3u);
+                    corner_slot[k] = select(m, 2u, m == 3u);
+                    edge_face[k] = face + select(0u, 1u, m >= 2u);
+                    edge_slot[k] = select(m, m - 1u, m >= 2u);
+                }
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot);
+            }
         } else {
             let w = base_triangle(t);
             if (!base_triangle_valid(w)) { continue; }
@@ -1191,6 +1460,10 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
             }
             if (!uniform_) { halves[0] = record_patch(rec); }
             words[0] = uniform_words(rec);
+            if (displace) {
+                dp = displacement_patch(3u, array<u32, 4>(w.x, w.y, w.z, 0u), array<u32, 4>(t, t, t, t),
+                                        array<u32, 4>(0u, 1u, 2u, 0u), array<u32, 4>(t, t, t, t), array<u32, 4>(0u, 1u, 2u, 0u));
+            }
         }
         let first = patches[rec + REC_FIRST_VERTEX];
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
@@ -1234,6 +1507,12 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
             } else {
                 sp = evaluate_surface(tri, w3, surface, alpha);
             }
+            // §8: after the surface, as mesh_pipeline.cpp (a quad's every point by its square point).
+            if (displace && quad) {
+                sp = displace_quad_point(dp, out_uv.x, out_uv.y, sp);
+            } else if (displace) {
+                sp = displace_triangle_point(dp, w3, sp);
+            }
             store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }
@@ -1242,12 +1521,22 @@ fn emit_vertices(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                        @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(false, wid, groups, lid);
+    emit_vertices(false, false, wid, groups, lid);
 }
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                             @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(true, wid, groups, lid);
+    emit_vertices(true, false, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_displaced_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                                 @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(false, true, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_displaced_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                                      @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(true, true, wid, groups, lid);
 }
 
 // Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices

@@ -60,6 +60,8 @@ export class MeshPipeline {
         const made = await Promise.all(own.map((x) => p.make(x.entry)).concat(extraEntryPoints.map(p.make)));
         [p.setup, p.scan, p.emitVertices, p.emitTriangles] = made;
         extraEntryPoints.forEach((name, k) => { p.extra[name] = made[own.length + k]; });
+        // The displaced vertex passes are made on the first displaced run (displaced()).
+        p.makeDisplaced = () => Promise.all([pass.emit_displaced_vertices, pass.emit_displaced_quad_vertices].map((x) => p.make(x.entry)));
         const err = await device.popErrorScope();
         if (err) throw new Error(err.message);
         return p;
@@ -142,6 +144,12 @@ export class MeshPipeline {
     // first, end, pattern ('cp', 'uniform' or the code), quadCount (the last patches; meshIndices holds the
     // triangles' 3 indices each, then the quads' 4), quadRule ('longer-pair', the default, or 'as-labelled')}.
     // Surface names: 'flat', 'pn', 'phong', 'pn-aen'. An unknown name throws.
+    // displacement (docs/shaders.md, "Displacement"): {scale, factor, offset, normalStep,
+    // factorBound (rt::Displacement's defaults 1, 1, 0, 1/256, 0), width, height (the height map's texels; 0 x 0
+    // an empty map), address ('repeat', the default, or 'clamp'), directions (true: run() gets options.directions),
+    // adjacency (true: meshIndices holds the adjacency after the indices)}; run() then needs options.texels.
+    // Values rt::displacement_valid refuses (non-finite numbers, factorBound < 0, normalStep outside (0, 0.5])
+    // throw.
     params(f, extra = 0) {
         const C = this.constants;
         const code = (value, what, names) => {
@@ -163,6 +171,19 @@ export class MeshPipeline {
         p[C.PARAM_QUAD_COUNT] = f.quadCount ?? 0;
         p[C.PARAM_QUAD_RULE] = code(f.quadRule ?? 'longer-pair', 'quad rule',
                                     { 'longer-pair': C.QUAD_RULE_LONGER_PAIR, 'as-labelled': C.QUAD_RULE_AS_LABELLED });
+        const d = f.displacement;
+        if (d) {
+            const [scale, factor, offset, normalStep, bound] = [d.scale ?? 1, d.factor ?? 1, d.offset ?? 0,
+                                                                d.normalStep ?? 1 / 256, d.factorBound ?? 0].map(Math.fround);
+            if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
+                throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
+            p[C.PARAM_DISPLACEMENT_FLAGS] = C.DISPLACEMENT_ON | (d.directions ? C.DISPLACEMENT_DIRECTIONS : 0) |
+                                            (d.adjacency ? C.DISPLACEMENT_ADJACENCY : 0);
+            p.set([scale, factor, offset, normalStep, bound].map(f32Bits), C.PARAM_DISPLACEMENT_SCALE);
+            p[C.PARAM_HEIGHT_MAP_WIDTH] = d.width ?? 0;
+            p[C.PARAM_HEIGHT_MAP_HEIGHT] = d.height ?? 0;
+            p[C.PARAM_HEIGHT_MAP_ADDRESS] = code(d.address ?? 'repeat', 'address mode', { repeat: C.ADDRESS_REPEAT, clamp: C.ADDRESS_CLAMP });
+        }
         return p;
     }
 
@@ -174,8 +195,12 @@ export class MeshPipeline {
     // with countsOnly), milliseconds}. indexUsage and vertexUsage add usage flags to the output buffers (e.g.
     // GPUBufferUsage.INDEX to draw the indices). Params that do not describe the arrays given, a binding past the
     // device's maxStorageBufferBindingSize and any validation or out-of-memory error of the run throw.
+    // Displacement (params' displacement): options.texels (a Float32Array of exactly width x height texels) and,
+    // when the params name them, options.directions (3 floats per mesh vertex) go after the mesh's own data.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
+        if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON)
+            [meshVertices, meshIndices] = this.displacementData(params, meshVertices, meshIndices, options);
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
         const maxGroups = options.maxWorkgroups ?? C.MAX_DISPATCH_WORKGROUPS;
         const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT];
@@ -194,6 +219,9 @@ export class MeshPipeline {
             if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
         if (quads > 0) await this.quadPipelines();
+        // Displaced vertices come from their own entry points (the others write none for such params).
+        const [emitVertices, emitQuadVertices] = params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON
+            ? await this.displaced() : [this.emitVertices, this.emitQuadVertices];
         // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
@@ -249,8 +277,8 @@ export class MeshPipeline {
                 const triangles = n - quads;
                 const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
                     .map((count) => Math.min(count, maxGroups));
-                const passes = [[this.emitVertices, groups[0]], [this.emitTriangles, groups[0]],
-                                [this.emitQuadVertices, groups[1]], [this.emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
+                const passes = [[emitVertices, groups[0]], [this.emitTriangles, groups[0]],
+                                [emitQuadVertices, groups[1]], [this.emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
                 milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
                 first = end;
             }
@@ -273,6 +301,42 @@ export class MeshPipeline {
             this.quadsMade.catch(() => { this.quadsMade = null; });
         }
         return this.quadsMade;
+    }
+
+    // Bindings 2 and 3 of a displaced run (docs/shaders.md, "Displacement"): the mesh vertices then the
+    // directions, the indices (and the adjacency when the params' flag says so) then the texels' bits.
+    displacementData(params, meshVertices, meshIndices, { texels, directions }) {
+        const C = this.constants;
+        const flags = params[C.PARAM_DISPLACEMENT_FLAGS];
+        const float = (w) => new Float32Array(Uint32Array.of(params[w]).buffer)[0];
+        const [scale, factor, offset, normalStep, bound] = [C.PARAM_DISPLACEMENT_SCALE, C.PARAM_DISPLACEMENT_FACTOR,
+            C.PARAM_DISPLACEMENT_OFFSET, C.PARAM_DISPLACEMENT_NORMAL_STEP, C.PARAM_DISPLACEMENT_FACTOR_BOUND].map(float);
+        if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
+            throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
+        const width = params[C.PARAM_HEIGHT_MAP_WIDTH], height = params[C.PARAM_HEIGHT_MAP_HEIGHT];
+        const count = width * height;
+        if (!(texels instanceof Float32Array) || texels.length !== count)
+            throw new Error(`displacement: ${texels?.length ?? 'no'} texels given for a ${width} x ${height} height map`);
+        const triangles = params[C.PARAM_PATCH_COUNT] - params[C.PARAM_QUAD_COUNT], quads = params[C.PARAM_QUAD_COUNT];
+        const indexWords = 3 * triangles + 4 * quads + (flags & C.DISPLACEMENT_ADJACENCY ? 12 * (triangles + 2 * quads) : 0);
+        if (meshIndices.length < indexWords) throw new Error('displacement: the adjacency the params name is not in meshIndices');
+        const indices = new Uint32Array(indexWords + count);
+        indices.set(meshIndices.subarray(0, indexWords));
+        indices.set(new Uint32Array(texels.buffer, texels.byteOffset, count), indexWords);
+        if (!(flags & C.DISPLACEMENT_DIRECTIONS)) return [meshVertices, indices];
+        const vertexWords = params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS, n = 3 * params[C.PARAM_MESH_VERTEX_COUNT];
+        if (!(directions instanceof Float32Array) || directions.length < n)
+            throw new Error(`displacement: ${directions?.length ?? 'no'} direction floats given for ${n / 3} mesh vertices`);
+        const vertices = new Uint32Array(vertexWords + n);
+        vertices.set(new Uint32Array(meshVertices.buffer, meshVertices.byteOffset, vertexWords));
+        vertices.set(new Uint32Array(directions.buffer, directions.byteOffset, n), vertexWords);
+        return [vertices, indices];
+    }
+
+    // The pipelines of the displaced vertex passes [triangles, quads], made once on first use.
+    displaced() {
+        this.displacedPipelines ??= this.makeDisplaced();
+        return this.displacedPipelines;
     }
 
     // Frees the table blobs (the pipelines need no freeing).

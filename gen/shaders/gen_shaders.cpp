@@ -42,12 +42,15 @@ struct Pass {
     const char* entry;  // entry point
     std::uint32_t size; // workgroup size (gen/shaders/shader_layout.hpp)
 };
-constexpr Pass passes[] = {{"patch_setup", "ctess_patch_setup", ctess::gen::setup_workgroup},
-                           {"prefix_sum", "ctess_prefix_sum", ctess::gen::scan_workgroup},
-                           {"emit_vertices", "ctess_emit_vertices", ctess::gen::emit_workgroup},
-                           {"emit_triangles", "ctess_emit_triangles", ctess::gen::emit_workgroup},
-                           {"emit_quad_vertices", "ctess_emit_quad_vertices", ctess::gen::emit_workgroup},
-                           {"emit_quad_triangles", "ctess_emit_quad_triangles", ctess::gen::emit_workgroup}};
+constexpr Pass passes[] = {
+    {"patch_setup", "ctess_patch_setup", ctess::gen::setup_workgroup},
+    {"prefix_sum", "ctess_prefix_sum", ctess::gen::scan_workgroup},
+    {"emit_vertices", "ctess_emit_vertices", ctess::gen::emit_workgroup},
+    {"emit_triangles", "ctess_emit_triangles", ctess::gen::emit_workgroup},
+    {"emit_quad_vertices", "ctess_emit_quad_vertices", ctess::gen::emit_workgroup},
+    {"emit_quad_triangles", "ctess_emit_quad_triangles", ctess::gen::emit_workgroup},
+    {"emit_displaced_vertices", "ctess_emit_displaced_vertices", ctess::gen::emit_workgroup},
+    {"emit_displaced_quad_vertices", "ctess_emit_displaced_quad_vertices", ctess::gen::emit_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

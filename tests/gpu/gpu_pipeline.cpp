@@ -36,7 +36,8 @@ std::vector<std::uint32_t> read_result_words(const std::string& path) {
 
 PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits limits) {
     const vulkan::Output gpu =
-        runner.tessellate(scene.view(), pipeline_params(scene), {limits.max_workgroups, limits.counts_only});
+        runner.tessellate(scene.view(), pipeline_params(scene), {limits.max_workgroups, limits.counts_only},
+                          scene.options.displacement);
     PipelineOutput out;
     out.milliseconds = gpu.milliseconds;
     out.patches.resize(gpu.patches.size() * patch_words + gen::totals_words);
@@ -58,15 +59,16 @@ namespace {
 void write_scene_file(const Scene& scene, const std::string& path) {
     const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
     const std::vector<std::uint32_t> index_words = mesh_index_words(scene);
+    const std::vector<float> vertex_floats = mesh_vertex_data(scene); // with displacement's directions
     std::ofstream f(path, std::ios::binary);
     const std::uint32_t head[] = {0x43535443u, 3u};
     f.write(reinterpret_cast<const char*>(head), sizeof head);
     f.write(reinterpret_cast<const char*>(params.data()), sizeof params);
-    const std::uint32_t sizes[] = {static_cast<std::uint32_t>(scene.vertices.size()),
+    const std::uint32_t sizes[] = {static_cast<std::uint32_t>(vertex_floats.size()),
                                    static_cast<std::uint32_t>(index_words.size())};
     f.write(reinterpret_cast<const char*>(sizes), sizeof sizes);
-    f.write(reinterpret_cast<const char*>(scene.vertices.data()),
-            static_cast<std::streamsize>(scene.vertices.size() * 4));
+    f.write(reinterpret_cast<const char*>(vertex_floats.data()),
+            static_cast<std::streamsize>(vertex_floats.size() * 4));
     f.write(reinterpret_cast<const char*>(index_words.data()),
             static_cast<std::streamsize>(index_words.size() * 4));
     if (!f) throw std::runtime_error("cannot write the scene file " + path);

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <utility>
 #include <vector>
 
+#include <ctess/runtime/displace/displace.hpp>
 #include <ctess/runtime/models/adjacency.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
@@ -35,12 +37,27 @@ struct Scene {
 };
 
 // The words a host uploads as binding 3 (docs/shaders.md, "Passes and bindings"): the triangles' indices, the
-// quads', then the adjacency when the scene has it.
+// quads', then the adjacency when the scene has it, then with displacement the height map's texels.
 inline std::vector<std::uint32_t> mesh_index_words(const Scene& scene) {
     std::vector<std::uint32_t> words = scene.indices;
     words.insert(words.end(), scene.quads.begin(), scene.quads.end());
     words.insert(words.end(), scene.adjacency.begin(), scene.adjacency.end());
+    if (const rt::Displacement* d = scene.options.displacement; d != nullptr && d->map.texels != nullptr) {
+        const std::size_t count = std::size_t{d->map.width} * d->map.height;
+        const std::size_t at = words.size();
+        words.resize(at + count);
+        if (count != 0) std::memcpy(&words[at], d->map.texels, count * 4);
+    }
     return words;
+}
+// The floats a host uploads as binding 2: the mesh vertices, then with displacement its directions
+// (docs/shaders.md, "Displacement").
+inline std::vector<float> mesh_vertex_data(const Scene& scene) {
+    std::vector<float> floats = scene.vertices;
+    if (const rt::Displacement* d = scene.options.displacement; d != nullptr && d->directions != nullptr)
+        floats.insert(floats.end(), d->directions,
+                      d->directions + 3 * (scene.vertices.size() / rt::mesh_vertex_floats));
+    return floats;
 }
 
 namespace detail {
@@ -167,7 +184,9 @@ inline void add_adjacency(Scene& s) {
 // and, where either region is odd, with different normals (a hard edge: odd regions tilt their normals their
 // own way). Closed by position; adjacency from models::build_adjacency (meshoptimizer), as `ctess mesh`
 // computes it.
-inline Scene split_normal_icosphere(unsigned subdivisions, rt::Surface surface, float dice_rate) {
+// hard_edges false: the normals stay shared (uv seams only).
+inline Scene split_normal_icosphere(unsigned subdivisions, rt::Surface surface, float dice_rate,
+                                    bool hard_edges = true) {
     const Scene smooth = icosphere(subdivisions, surface, dice_rate);
     Scene s;
     s.options = smooth.options;
@@ -181,7 +200,7 @@ inline Scene split_normal_icosphere(unsigned subdivisions, rt::Surface surface, 
         if (!fresh) continue;
         const float* a = &smooth.vertices[std::size_t{v} * rt::mesh_vertex_floats];
         rt::Vec3 n = {a[3], a[4], a[5]};
-        if (region % 2 == 1) {
+        if (hard_edges && region % 2 == 1) {
             const std::uint32_t seed = 1000 + 3 * (v * 20 + region);
             n = rt::normalize_or_zero(n + 0.5f * rt::Vec3{detail::unit(seed) - 0.5f,
                                                           detail::unit(seed + 1) - 0.5f,

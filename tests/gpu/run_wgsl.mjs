@@ -46,15 +46,29 @@ for (let job = 0; job < files.length; job += 2) {
     const sizes = 2 + C.PARAMS_WORDS;
     const params = scene.slice(2, sizes);
     const vertexFloats = scene[sizes], indexCount = scene[sizes + 1];
-    const meshVertices = scene.slice(sizes + 2, sizes + 2 + vertexFloats);
-    const meshIndices = scene.slice(sizes + 2 + vertexFloats, sizes + 2 + vertexFloats + indexCount);
+    let meshVertices = scene.slice(sizes + 2, sizes + 2 + vertexFloats);
+    let meshIndices = scene.slice(sizes + 2 + vertexFloats, sizes + 2 + vertexFloats + indexCount);
+    // Displacement: the scene's vertex floats end with the directions, its index words with the texels
+    // (gpu_scenes.hpp); the host takes them as run()'s texels and directions.
+    const displacement = {};
+    if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON) {
+        const texelCount = params[C.PARAM_HEIGHT_MAP_WIDTH] * params[C.PARAM_HEIGHT_MAP_HEIGHT];
+        displacement.texels = new Float32Array(meshIndices.slice(meshIndices.length - texelCount).buffer);
+        meshIndices = meshIndices.slice(0, meshIndices.length - texelCount);
+        if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_DIRECTIONS) {
+            const own = params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS;
+            displacement.directions = new Float32Array(meshVertices.slice(own).buffer);
+            meshVertices = meshVertices.slice(0, own);
+        }
+    }
     const n = params[C.PARAM_PATCH_COUNT];
     // Emit in batches of about 128k vertices, one submit each (the emit passes' patch range), as a host that streams
     // a large mesh would.
     let out;
     try {
         out = await pipeline.run(params, meshVertices, meshIndices, {
-            maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly, batchVertices: 1 << 17 });
+            maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly, batchVertices: 1 << 17,
+            ...displacement });
     } catch (e) {
         console.error(`run_wgsl: ${e.message}`);
         process.exit(e.pastLimits ? 3 : 1);

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -538,10 +539,256 @@ TEST_CASE("GPU PN-AEN, quads: a faceted mixed torus (every edge hard) is the CPU
 }
 #endif
 
+// ---- displacement (docs/algorithm.md §8, docs/shaders.md "Displacement"): triangle meshes ----
+namespace {
+// A 64 x 48 height texture of a few waves and a hash (procedural-looking, no symmetry), and the Displacement
+// that reads it: the scene keeps pointers to both, so they outlive it.
+struct DisplacementData {
+    std::vector<float> texels;
+    std::vector<float> directions; // 3 per mesh vertex: welded_directions
+    rt::Displacement d;
+};
+std::unique_ptr<DisplacementData> height_texture(rt::AddressMode address, float scale, float factor_bound) {
+    auto data = std::make_unique<DisplacementData>();
+    const std::uint32_t width = 64, height = 48;
+    data->texels.resize(std::size_t{width} * height);
+    for (std::uint32_t j = 0; j < height; ++j)
+        for (std::uint32_t i = 0; i < width; ++i)
+            data->texels[std::size_t{j} * width + i] =
+                std::sin(0.31f * static_cast<float>(i)) * std::cos(0.23f * static_cast<float>(j)) +
+                0.25f * detail::unit(j * width + i);
+    data->d.map = {data->texels.data(), width, height, address};
+    data->d.scale = scale;
+    data->d.factor = 1.5f;
+    data->d.offset = -0.2f;
+    data->d.factor_bound = factor_bound;
+    data->d.normal_step = 1.0f / 128.0f;
+    return data;
+}
+// Binds the texture (and, with directions, welded_directions of the scene) to the scene's options.
+void displace(Scene& scene, DisplacementData& data, bool directions) {
+    if (directions) {
+        data.directions.resize(3 * (scene.vertices.size() / rt::mesh_vertex_floats));
+        REQUIRE(rt::welded_directions(scene.view(), data.directions));
+        data.d.directions = data.directions.data();
+    }
+    scene.options.displacement = &data.d;
+}
+
+// One displaced parity case: a factor-sweep grid whose uvs run from -0.7 to 1.8, so that both address modes
+// matter, displaced by the texture.
+struct DisplacedCase {
+    Scene scene;
+    std::unique_ptr<DisplacementData> data;
+    rt::AddressMode address;
+    bool directions;
+};
+DisplacedCase displaced_case(unsigned max_factor, rt::Surface surface, rt::Pattern pattern,
+                             rt::AddressMode address, bool directions, unsigned quad_every = 0) {
+    const unsigned sweep_max = pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : max_factor;
+    DisplacedCase c{factor_sweep_grid(sweep_max, 12, surface, quad_every),
+                    height_texture(address, 0.02f, 0.004f), address, directions};
+    c.scene.options.pattern = pattern;
+    for (std::size_t v = 0; v < c.scene.vertices.size(); v += rt::mesh_vertex_floats) {
+        c.scene.vertices[v + 6] = 2.5f * c.scene.vertices[v + 6] - 0.7f;
+        c.scene.vertices[v + 7] = 2.5f * c.scene.vertices[v + 7] - 0.7f;
+    }
+    displace(c.scene, *c.data, directions);
+    return c;
+}
+
+// Runs the cases (one Dawn run per maximum factor) and checks each against the CPU: records, counts (grown
+// factors), barycentrics and indices exactly, positions and normals within compare's bound.
+void check_displaced_parity(unsigned max_factor,
+                            const std::vector<std::pair<const char*, DisplacedCase>>& cases) {
+    std::vector<std::pair<const char*, Scene>> scenes;
+    for (const auto& [work, c] : cases) scenes.emplace_back(work, c.scene);
+    const std::vector<PipelineOutput> outputs = run_gpu_batch(max_factor, scenes);
+    REQUIRE(outputs.size() == cases.size());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const Scene& scene = cases[i].second.scene;
+        const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
+        const PipelineOutput& gpu = outputs[i];
+        const Comparison c = compare(cpu, gpu);
+        double normal_error = 0.0; // the largest normal component difference (compare bounds it by 1e-5)
+        for (std::size_t v = 0;
+             v + vertex_words <= cpu.vertices.size() && v + vertex_words <= gpu.vertices.size();
+             v += vertex_words)
+            for (std::size_t k = 5; k < 8; ++k)
+                normal_error =
+                    std::fmax(normal_error, std::fabs(static_cast<double>(bits_float(cpu.vertices[v + k])) -
+                                                      bits_float(gpu.vertices[v + k])));
+        // The growth is real: without it the counts are smaller.
+        Scene plain = scene;
+        plain.options.displacement = nullptr;
+        const PipelineOutput undisplaced = run_cpu(tables_for(max_factor), plain);
+        std::printf("%s, max %u, %s, %s, %s, %s directions: displaced grid of %u patches (%zu quads), %u "
+                    "vertices (%u undisplaced); max position error %.2g, normal error %.2g\n",
+                    backend_name(), max_factor, pattern_name(scene.options.pattern),
+                    surface_name(scene.options.surface.surface),
+                    cases[i].second.address == rt::AddressMode::repeat ? "repeat" : "clamp",
+                    cases[i].second.directions ? "welded" : "no", scene.patch_count(), scene.quads.size() / 4,
+                    cpu.total_vertices(), undisplaced.total_vertices(), c.max_position_error, normal_error);
+        INFO(cases[i].first << ": " << c.first_difference);
+        CHECK(c.equal());
+        CHECK(cpu.total_vertices() > undisplaced.total_vertices());
+    }
+}
+} // namespace
+
+TEST_CASE(
+    "GPU displacement parity: a displaced grid equals the CPU's, CP and uniform, flat and PN, both address "
+    "modes, with and without directions") {
+    using rt::AddressMode, rt::Pattern, rt::Surface;
+    std::vector<std::pair<const char*, DisplacedCase>> cases;
+    cases.emplace_back("disp_cp_flat",
+                       displaced_case(64, Surface::flat, Pattern::cp, AddressMode::repeat, true));
+    cases.emplace_back("disp_cp_pn",
+                       displaced_case(64, Surface::pn_triangles, Pattern::cp, AddressMode::clamp, false));
+    cases.emplace_back("disp_uniform_pn", displaced_case(64, Surface::pn_triangles, Pattern::uniform,
+                                                         AddressMode::repeat, true));
+    cases.emplace_back("disp_uniform_flat",
+                       displaced_case(64, Surface::flat, Pattern::uniform, AddressMode::clamp, false));
+    check_displaced_parity(64, cases);
+    cases.clear();
+    cases.emplace_back("disp_cp_pn_256",
+                       displaced_case(256, Surface::pn_triangles, Pattern::cp, AddressMode::repeat, false));
+    check_displaced_parity(256, cases);
+}
+
+TEST_CASE("GPU displacement parity, quads: a displaced mixed grid equals the CPU's, CP and uniform") {
+    using rt::AddressMode, rt::Pattern, rt::Surface;
+    std::vector<std::pair<const char*, DisplacedCase>> cases;
+    cases.emplace_back("disp_quads_cp",
+                       displaced_case(64, Surface::pn_triangles, Pattern::cp, AddressMode::repeat, true, 3));
+    cases.emplace_back("disp_quads_uniform",
+                       displaced_case(64, Surface::flat, Pattern::uniform, AddressMode::clamp, false, 3));
+    check_displaced_parity(64, cases);
+}
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+TEST_CASE(
+    "GPU displacement watertight: an icosphere with uv seams is closed with adjacency and cracks without") {
+    // PN-AEN orders edge points by position, so the undisplaced surface is closed across the seams either
+    // way.
+    const auto data = height_texture(rt::AddressMode::repeat, 0.05f, 0.0f);
+    std::vector<std::pair<const char*, Scene>> scenes; // per pattern: with adjacency, then without
+    for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+        Scene scene = split_normal_icosphere(2, rt::Surface::pn_aen, 6.0f, false);
+        scene.options.pattern = pattern;
+        displace(scene, *data, false);
+        Scene without = scene;
+        without.adjacency.clear();
+        const bool uniform = pattern == rt::Pattern::uniform;
+        scenes.emplace_back(uniform ? "disp_seam_uniform" : "disp_seam", scene);
+        scenes.emplace_back(uniform ? "disp_seam_open_uniform" : "disp_seam_open", without);
+    }
+    const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
+    REQUIRE(outputs.size() == scenes.size());
+    for (std::size_t i = 0; i < scenes.size(); i += 2) {
+        const Scene &scene = scenes[i].second, &without = scenes[i + 1].second;
+        const PipelineOutput &gpu = outputs[i], &open = outputs[i + 1];
+        INFO(pattern_name(scene.options.pattern));
+        const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+        const CrackReport r = crack_check(scene, gpu);
+        const CrackReport o = crack_check(without, open);
+        std::printf(
+            "%s, max 64, %s, displaced PN-AEN icosphere with uv seams: %u vertices, %zu edge points, %zu "
+            "cracks with adjacency, %zu without; max position error %.2g\n",
+            backend_name(), pattern_name(scene.options.pattern), gpu.total_vertices(), r.edge_points,
+            r.position_mismatches, o.position_mismatches, c.max_position_error);
+        INFO(c.first_difference);
+        CHECK(c.equal());
+        CHECK(closed_by_position(gpu));
+        CHECK(r.position_mismatches == 0);
+        CHECK(r.unmatched_points == 0);
+        CHECK_FALSE(closed_by_position(open));
+        CHECK(o.position_mismatches > 0);
+        const Comparison oc = compare(run_cpu(rt::cp_tables_64, without), open);
+        INFO(oc.first_difference);
+        CHECK(oc.equal());
+    }
+}
+#endif
+
+TEST_CASE("GPU displacement bad input: a NaN scale is an error") {
+    Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
+    const auto data = height_texture(rt::AddressMode::repeat, 0.02f, 0.0f);
+    displace(scene, *data, false);
+    // A NaN scale: the CPU's bad_option, and the hosts refuse it.
+    data->d.scale = std::nanf("");
+    CHECK_THROWS(run_gpu(64, scene, "disp_nan"));
+}
+
+TEST_CASE(
+    "Vulkan host, displacement: a HeightFunction and texels or data that the params do not describe are "
+    "errors; an empty map is the CPU's output",
+    "[vulkan]") {
+    Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
+    const auto data = height_texture(rt::AddressMode::repeat, 0.02f, 0.0f);
+    displace(scene, *data, false);
+    vulkan::Runner& gpu = runner(64);
+    // A HeightFunction is CPU code.
+    rt::Displacement function = data->d;
+    function.function = [](const void*, float u, float v) { return u * v; };
+    rt::PipelineOptions options = scene.options;
+    options.displacement = &function;
+    CHECK(rt::gpu::gpu_options_status(scene.view(), options) == rt::PipelineStatus::bad_option);
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), options), vulkan::Error);
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), pipeline_params(scene), {}, &function),
+                      Catch::Contains("HeightFunction"));
+    // Params whose width x height is not the map's texel count.
+    auto params = pipeline_params(scene);
+    params[rt::gpu::param_word::height_map_width] += 1;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), params, {}, &data->d), Catch::Contains("does not match"));
+    // Params that displace without a Displacement, or name directions it does not have.
+    params = pipeline_params(scene);
+    CHECK_THROWS_AS(gpu.tessellate(scene.view(), params), vulkan::Error);
+    params[rt::gpu::param_word::displacement_flags] |= rt::gpu::displacement_flag::directions;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), params, {}, &data->d), Catch::Contains("directions"));
+    // A texture larger than binding 3 allows: refused before anything is read or uploaded.
+    rt::Displacement huge = data->d;
+    huge.map.width = huge.map.height = 65536;
+    options.displacement = &huge;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), options), Catch::Contains("maxStorageBufferRange"));
+    // An empty map samples 0 (height = scale * offset), as on the CPU.
+    rt::Displacement empty = data->d;
+    empty.map.texels = nullptr;
+    Scene flat = scene;
+    flat.options.displacement = &empty;
+    const Comparison c = compare(run_cpu(rt::cp_tables_64, flat), run_gpu(64, flat, "disp_empty"));
+    INFO(c.first_difference);
+    CHECK(c.equal());
+}
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+TEST_CASE("GPU displacement watertight, quads: a faceted mixed torus (every edge a uv seam) is closed with "
+          "adjacency and opens without") {
+    Scene scene = faceted_mixed_torus(rt::Surface::pn_aen);
+    const auto data = height_texture(rt::AddressMode::repeat, 0.05f, 0.0f);
+    displace(scene, *data, false);
+    Scene without = scene;
+    without.adjacency.clear();
+    const std::vector<PipelineOutput> outputs =
+        run_gpu_batch(64, {{"disp_torus", scene}, {"disp_torus_open", without}});
+    REQUIRE(outputs.size() == 2);
+    const PipelineOutput &gpu = outputs[0], &open = outputs[1];
+    const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
+    std::printf("%s, max 64, CP, displaced PN-AEN faceted mixed torus (%zu quads): %u vertices; max position "
+                "error %.2g\n",
+                backend_name(), scene.quads.size() / 4, gpu.total_vertices(), c.max_position_error);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+    CHECK(closed_by_position(gpu));
+    CHECK_FALSE(closed_by_position(open));
+}
+#endif
+
 // The second WebGPU implementation (Dawn's Vulkan backend on SwiftShader) runs only this case: one scene per
 // feature, each against the CPU, in one node run (tests/gpu/CMakeLists.txt). The other backends run it too.
-TEST_CASE("GPU second implementation: CP PN, uniform Phong, a mixed grid with quads and PN-AEN, one run each",
-          "[second-implementation]") {
+TEST_CASE(
+    "GPU second implementation: CP PN, uniform Phong, quads, PN-AEN and displacement, each against the CPU",
+    "[second-implementation]") {
     std::vector<std::pair<const char*, Scene>> scenes;
     scenes.emplace_back("one_cp", factor_sweep_grid(64, 24, rt::Surface::pn_triangles));
     Scene uniform = factor_sweep_grid(rt::uniform_tables.max_factor, 24, rt::Surface::phong);
@@ -551,6 +798,10 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, a mixed grid with qu
 #if defined(CTESS_GPU_HAVE_MODELS)
     scenes.emplace_back("one_aen_quads", faceted_mixed_torus(rt::Surface::pn_aen));
 #endif
+    // Displacement, triangles and quads (both displaced passes), welded directions.
+    const DisplacedCase displaced =
+        displaced_case(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::AddressMode::repeat, true, 3);
+    scenes.emplace_back("one_displaced", displaced.scene);
     const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
     REQUIRE(outputs.size() == scenes.size());
     for (std::size_t i = 0; i < scenes.size(); ++i) {

@@ -39,9 +39,14 @@ std::vector<std::uint32_t> read_words(const std::string& path) {
     return words;
 }
 
-constexpr const char* pass_suffix[MeshPipeline::passes] = {
-    "_patch_setup.spv",    "_prefix_sum.spv",         "_emit_vertices.spv",
-    "_emit_triangles.spv", "_emit_quad_vertices.spv", "_emit_quad_triangles.spv"};
+constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
+                                                           "_prefix_sum.spv",
+                                                           "_emit_vertices.spv",
+                                                           "_emit_triangles.spv",
+                                                           "_emit_quad_vertices.spv",
+                                                           "_emit_quad_triangles.spv",
+                                                           "_emit_displaced_vertices.spv",
+                                                           "_emit_displaced_quad_vertices.spv"};
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -185,17 +190,20 @@ void MeshPipeline::record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::
 }
 
 void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                               std::uint32_t quad_patches, std::uint32_t max_workgroups) const {
+                               std::uint32_t quad_patches, std::uint32_t max_workgroups,
+                               bool displaced) const {
     if (triangle_patches == 0 && quad_patches == 0) return;
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
-    // Vertices, then triangles, of the triangles (passes 2, 3) and of the quads (4, 5).
+    // Vertices, then triangles, of the triangles (passes 2, 3) and of the quads (4, 5); displaced vertices
+    // from their own passes (6, 7), so that undisplaced meshes run no displacement code (docs/shaders.md).
     const std::uint32_t count[2] = {triangle_patches, quad_patches};
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (count[kind] == 0) continue;
         const std::uint32_t groups = rt::gpu::emit_workgroups(count[kind], max_workgroups);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2 + 2 * kind]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipelines_[displaced ? 6 + kind : 2 + 2 * kind]);
         vkCmdDispatch(cmd, groups, 1, 1);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[3 + 2 * kind]);
         vkCmdDispatch(cmd, groups, 1, 1);
@@ -409,19 +417,46 @@ Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& o
         st != rt::PipelineStatus::ok) {
         throw Error(
             st == rt::PipelineStatus::bad_option
-                ? "the shaders run the cp or uniform pattern and camera factors, without displacement "
-                  "or position_ids (docs/shaders.md, \"Hosts\")"
+                ? "the shaders run the cp or uniform pattern and camera factors, without position_ids, and "
+                  "displace by a valid height map only (not a HeightFunction) "
+                  "(docs/shaders.md, \"Hosts\")"
                 : rt::pipeline_status_message(st));
     }
-    return tessellate(mesh, rt::gpu::pipeline_params(mesh, options), run);
+    return tessellate(mesh, rt::gpu::pipeline_params(mesh, options), run, options.displacement);
 }
 
 Output Runner::tessellate(const rt::MeshView& mesh,
-                          const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
-                          RunOptions run) {
+                          const std::array<std::uint32_t, rt::gpu::param_word::words>& params, RunOptions run,
+                          const rt::Displacement* displacement) {
     namespace pw = rt::gpu::param_word;
+    namespace flag = rt::gpu::displacement_flag;
     const std::uint32_t n = params[pw::patch_count];
     const std::uint32_t quads = params[pw::quad_count];
+    // Displacement (docs/shaders.md, "Displacement"): the params must describe the data given.
+    const std::uint32_t disp = params[pw::displacement_flags];
+    const bool displace = (disp & flag::on) != 0;
+    const std::uint64_t texel_count =
+        std::uint64_t{params[pw::height_map_width]} * params[pw::height_map_height];
+    if (displace) {
+        if (displacement == nullptr) throw Error("the params displace but no rt::Displacement is given");
+        if (displacement->function != nullptr)
+            throw Error("a HeightFunction is CPU code: the shaders displace by a height map only");
+        if (!rt::displacement_valid(*displacement))
+            throw Error(
+                "the Displacement is not valid (rt::displacement_valid: finite numbers, factor_bound >= 0, "
+                "normal_step in (0, 0.5])");
+        const rt::HeightMap& map = displacement->map;
+        const bool empty = map.texels == nullptr || map.width == 0 || map.height == 0;
+        if ((empty ? 0 : std::uint64_t{map.width} * map.height) != texel_count)
+            throw Error("the height map's texel count (" + std::to_string(map.width) + " x " +
+                        std::to_string(map.height) + ") does not match the params' width x height (" +
+                        std::to_string(params[pw::height_map_width]) + " x " +
+                        std::to_string(params[pw::height_map_height]) + ")");
+        if ((disp & flag::directions) != 0 && displacement->directions == nullptr)
+            throw Error("the params name displacement directions but Displacement::directions is null");
+        if ((disp & flag::adjacency) != 0 && mesh.adjacency == nullptr)
+            throw Error("the params name an adjacency but MeshView::adjacency is null");
+    }
     if (quads > n || quads > mesh.quad_count || n - quads > mesh.triangle_count ||
         params[pw::mesh_vertex_count] > mesh.vertex_count)
         throw Error("the params name more triangles, quads or mesh vertices than the mesh has");
@@ -455,16 +490,35 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     const Device::Buffer b_params = make(sizeof params, params.data(), sizeof params);
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
     const std::size_t vertex_bytes = std::size_t{mesh.vertex_count} * rt::mesh_vertex_floats * 4;
-    const Device::Buffer b_mesh = make(vertex_bytes, mesh.vertices, vertex_bytes);
-    // Binding 3: the triangles' 3 indices each, the quads' 4, then for PN-AEN the adjacency's 12 per face
-    // triangle (docs/shaders.md, "PN-AEN"; without it every edge is a boundary, as on the CPU).
-    const bool aen = params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
+    // Binding 2: the mesh vertices, then with displacement directions 3 floats per vertex from vertex word
+    // params' vertex count x 8 on (vertices past that count are never read).
+    const std::size_t direction_vertices = params[pw::mesh_vertex_count];
+    const bool directions = displace && (disp & flag::directions) != 0;
+    const Device::Buffer b_mesh =
+        make(vertex_bytes + (directions ? direction_vertices * 12 : 0), mesh.vertices, vertex_bytes);
+    if (directions)
+        std::memcpy(static_cast<char*>(b_mesh.mapped) + direction_vertices * rt::mesh_vertex_floats * 4,
+                    displacement->directions, direction_vertices * 12);
+    // Binding 3: the triangles' 3 indices each, the quads' 4, then for PN-AEN (and for displacement, when its
+    // flag says so) the adjacency's 12 per face triangle (docs/shaders.md, "PN-AEN"; without it every edge is
+    // a boundary, as on the CPU), then with displacement the texels.
+    const bool aen =
+        displace ? (disp & flag::adjacency) != 0
+                 : params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
     const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
     const std::size_t adjacency_bytes = aen ? (std::size_t{n - quads} + 2 * std::size_t{quads}) * 48 : 0;
-    const Device::Buffer b_indices =
-        make(triangle_bytes + quad_bytes + adjacency_bytes, mesh.indices, triangle_bytes);
+    const std::uint64_t texel_bytes = displace ? 4 * texel_count : 0;
+    const std::uint64_t index_binding = triangle_bytes + quad_bytes + adjacency_bytes + texel_bytes;
+    if (index_binding > d.limits.maxStorageBufferRange)
+        throw Error("the height map (" + std::to_string(texel_count) + " texels) makes binding 3 " +
+                    std::to_string(index_binding) + " bytes, past this device's maxStorageBufferRange (" +
+                    std::to_string(d.limits.maxStorageBufferRange) + ")");
+    const Device::Buffer b_indices = make(index_binding, mesh.indices, triangle_bytes);
     auto* index_bytes = static_cast<char*>(b_indices.mapped);
     if (quad_bytes != 0) std::memcpy(index_bytes + triangle_bytes, mesh.quad_indices, quad_bytes);
+    if (texel_bytes != 0)
+        std::memcpy(index_bytes + triangle_bytes + quad_bytes + adjacency_bytes, displacement->map.texels,
+                    static_cast<std::size_t>(texel_bytes));
     if (aen) {
         // The first n - quads triangles' blocks, then the quads' (after all mesh.triangle_count triangles').
         std::memcpy(index_bytes + triangle_bytes + quad_bytes, mesh.adjacency, std::size_t{n - quads} * 48);
@@ -526,7 +580,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                             triangles = n - quads;
         const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
         d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
-                                end > quad_first ? end - quad_first : 0, run.max_workgroups);
+                                end > quad_first ? end - quad_first : 0, run.max_workgroups, displace);
     });
     out.vertices.resize(out.totals.vertices);
     if (!out.vertices.empty())

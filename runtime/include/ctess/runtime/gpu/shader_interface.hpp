@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include <ctess/runtime/displace/displace.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
 namespace ctess::rt::gpu {
@@ -41,10 +42,30 @@ inline constexpr std::uint32_t end_patch = 9;
 inline constexpr std::uint32_t pattern = 10;    // rt::Pattern
 inline constexpr std::uint32_t quad_count = 11; // the last quad_count patches are quads
 inline constexpr std::uint32_t quad_rule = 12;  // rt::QuadRule
-inline constexpr std::uint32_t words = 13;
+// Displacement (docs/shaders.md, "Displacement"; docs/algorithm.md §8): the displacement_flag bits, then
+// rt::Displacement's numbers (floats as bits) and the height map's size and rt::AddressMode. The directions
+// (3 floats per mesh vertex) follow the mesh vertices in binding 2, the texels (f32 bits, row-major) the
+// indices and the adjacency in binding 3.
+inline constexpr std::uint32_t displacement_flags = 13;
+inline constexpr std::uint32_t displacement_scale = 14;
+inline constexpr std::uint32_t displacement_factor = 15;
+inline constexpr std::uint32_t displacement_offset = 16;
+inline constexpr std::uint32_t displacement_normal_step = 17;
+inline constexpr std::uint32_t displacement_factor_bound = 18;
+inline constexpr std::uint32_t height_map_width = 19; // 0 with height 0: an empty map (height 0)
+inline constexpr std::uint32_t height_map_height = 20;
+inline constexpr std::uint32_t height_map_address = 21; // rt::AddressMode; other values read as clamp
+inline constexpr std::uint32_t words = 22;
 } // namespace param_word
 static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
-              param_word::quad_rule + 1 == param_word::words);
+              param_word::height_map_address + 1 == param_word::words);
+
+// The bits of param_word::displacement_flags.
+namespace displacement_flag {
+inline constexpr std::uint32_t on = 1;         // displace (the other displacement words are read only then)
+inline constexpr std::uint32_t directions = 2; // binding 2 holds the directions after the mesh vertices
+inline constexpr std::uint32_t adjacency = 4;  // binding 3 holds the adjacency (12 per face triangle)
+} // namespace displacement_flag
 
 // Workgroup sizes. The setup pass's is the C++ limit's (rt::max_pipeline_patches counts in it); the prefix
 // sum is one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations); the emit passes run
@@ -81,8 +102,10 @@ constexpr std::uint32_t emit_workgroups(std::uint32_t patch_count,
 // The params of a run over mesh's patches (base triangles, then quads) with options (the split and D3D11
 // patterns are CPU only: a host refuses them, see gpu_options_status), the emit range covering every patch.
 // Binding 3 then holds mesh.indices (3 per triangle) followed by mesh.quad_indices (4 per quad) and, for
-// PN-AEN, mesh.adjacency (12 per face triangle: the triangles, then each quad's two; docs/shaders.md,
-// "PN-AEN").
+// PN-AEN or displacement, mesh.adjacency (12 per face triangle: the triangles, then each quad's two;
+// docs/shaders.md, "PN-AEN"), then with displacement the height map's texels; binding 2 holds the mesh
+// vertices, then with displacement and Displacement::directions the directions (docs/shaders.md,
+// "Displacement").
 inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshView& mesh,
                                                                     const PipelineOptions& options) {
     const auto bits = [](float f) {
@@ -105,16 +128,33 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
     p[param_word::pattern] = static_cast<std::uint32_t>(options.pattern);
     p[param_word::quad_count] = mesh.quad_count;
     p[param_word::quad_rule] = static_cast<std::uint32_t>(options.quad_rule);
+    if (const Displacement* d = options.displacement; d != nullptr) {
+        const bool empty = d->map.texels == nullptr || d->map.width == 0 || d->map.height == 0;
+        p[param_word::displacement_flags] = displacement_flag::on |
+                                            (d->directions != nullptr ? displacement_flag::directions : 0u) |
+                                            (mesh.adjacency != nullptr ? displacement_flag::adjacency : 0u);
+        p[param_word::displacement_scale] = bits(d->scale);
+        p[param_word::displacement_factor] = bits(d->factor);
+        p[param_word::displacement_offset] = bits(d->offset);
+        p[param_word::displacement_normal_step] = bits(d->normal_step);
+        p[param_word::displacement_factor_bound] = bits(d->factor_bound);
+        p[param_word::height_map_width] = empty ? 0u : d->map.width; // an empty map samples 0 (§8.1)
+        p[param_word::height_map_height] = empty ? 0u : d->map.height;
+        p[param_word::height_map_address] = static_cast<std::uint32_t>(d->map.address);
+    }
     return p;
 }
 
 // Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (the
-// uniform_split and D3D11 patterns, displacement, factors other than FactorMode::camera, and
-// MeshView::position_ids: the shaders order shared edges by vertex index, so a seam between different indices
-// would not get the CPU's bits)
-// and for a QuadRule outside its enum, or too_many_patches.
-constexpr PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
-    if (options.displacement != nullptr || mesh.position_ids != nullptr) return PipelineStatus::bad_option;
+// uniform_split and D3D11 patterns, factors other than FactorMode::camera, MeshView::position_ids: the
+// shaders order shared edges by vertex index, so a seam between different indices would not get the CPU's
+// bits; displacement by a HeightFunction, which is CPU code)
+// and for a QuadRule outside its enum, a Displacement that displacement_valid refuses (as the CPU
+// pipeline does), or too_many_patches.
+inline PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
+    if (mesh.position_ids != nullptr) return PipelineStatus::bad_option;
+    if (const Displacement* d = options.displacement; d != nullptr)
+        if (d->function != nullptr || !displacement_valid(*d)) return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
     if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;

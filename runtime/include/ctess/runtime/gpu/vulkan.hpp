@@ -85,12 +85,14 @@ class MeshPipeline {
                        std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
     // Records the emit passes for the params' patch range [first, end), which holds triangle_patches base
     // triangles and quad_patches quads (a pass with none is skipped), with a barrier before (for the counts);
-    // to draw the outputs, add a compute-to-vertex-input (and index-read) barrier after it.
+    // to draw the outputs, add a compute-to-vertex-input (and index-read) barrier after it. displaced: the
+    // params displace (rt::gpu::displacement_flag::on); the vertices then come from the displaced passes (the
+    // others write no vertex for such params; docs/shaders.md, "Displacement").
     void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                     std::uint32_t quad_patches,
-                     std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+                     std::uint32_t quad_patches, std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
+                     bool displaced = false) const;
 
-    static constexpr unsigned passes = 6;
+    static constexpr unsigned passes = 8;
 
   private:
     void destroy() noexcept;
@@ -99,7 +101,8 @@ class MeshPipeline {
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
     VkShaderModule modules_[passes] = {};
-    VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads
+    VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads, displaced
+                                        // vertices of triangles and of quads
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
@@ -130,9 +133,12 @@ class Runner {
     // the outputs are allocated.
     Output tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run = {});
     // The same with the params words given (a host that sets them itself, e.g. tests of the params' range).
+    // Params that displace (rt::gpu::displacement_flag::on) need displacement: its height map (whose width x
+    // height must be the params', an empty map 0 x 0) and, when the params' flags name them, its directions
+    // and the mesh's adjacency are uploaded (docs/shaders.md, "Displacement"); a HeightFunction throws.
     Output tessellate(const rt::MeshView& mesh,
                       const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
-                      RunOptions run = {});
+                      RunOptions run = {}, const rt::Displacement* displacement = nullptr);
 
   private:
     struct Device;
