@@ -273,6 +273,38 @@ TEST_CASE("welded output: degenerate triangles are dropped unless kept; spans an
     CHECK(rt::emit_welded_mesh(rt::cp_tables_64, mesh, o, edges, patches, v, idx) == rt::PipelineStatus::ok);
 }
 
+TEST_CASE("welded output: patches that share a pattern (§7.4, patch shapes) in every family and surface") {
+    // One constant factor: every patch of a rotation (and quad rule) has the same pattern words, so the weld
+    // reads most patches from its shape cache; the result must still be the independent weld of the
+    // unwelded output, closed and 2-manifold, in every family, with the PN and Phong surfaces.
+    const rt::Pattern patterns[] = {rt::Pattern::cp,
+                                    rt::Pattern::uniform,
+                                    rt::Pattern::uniform_split,
+                                    rt::Pattern::d3d11_integer,
+                                    rt::Pattern::d3d11_pow2,
+                                    rt::Pattern::d3d11_fractional_odd,
+                                    rt::Pattern::d3d11_fractional_even};
+    for (const Faces faces : {Faces::triangles, Faces::quads, Faces::mixed}) {
+        const Model m = torus(9, 5, faces);
+        const rt::MeshView mesh = m.view();
+        for (const rt::Pattern pattern : patterns) {
+            for (const float factor : {2.0f, 5.5f, 21.0f}) {
+                rt::PipelineOptions o;
+                o.pattern = pattern;
+                o.dice.mode = rt::FactorMode::constant;
+                o.dice.constant_factor = factor;
+                o.surface.surface = factor == 5.5f ? rt::Surface::pn_triangles : rt::Surface::phong;
+                o.weld.keep_degenerate = factor == 2.0f;
+                INFO("faces " << static_cast<int>(faces) << " pattern " << static_cast<int>(pattern)
+                              << " factor " << factor);
+                const Output u = unwelded(mesh, o), w = welded(mesh, o);
+                check_weld_matches(mesh, o, u, w);
+                CHECK(closed_manifold(directed_edges(w.indices, identity(w.vertices.size()))));
+            }
+        }
+    }
+}
+
 // Figures for docs/algorithm.md §7 (run by hand: test_mesh_pipeline_weld "[figures]").
 TEST_CASE("figures: longest output edge, zero-area fraction, weld ratio", "[.][figures]") {
     const rt::Vec3 eye{0.5f, -9.0f, 3.0f};

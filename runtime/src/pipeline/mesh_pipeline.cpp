@@ -236,12 +236,16 @@ struct CpFamily {
             rec.t16[k] = s.t16;
         }
     }
-    void setup(PatchRecord& rec, const float (&length2)[3]) const {
+    // The rotation and line states only: all the weld reads of a record (no counts, no block).
+    void lines(PatchRecord& rec, const float (&length2)[3]) const {
         const cp::Rotation rot = cp::smallest_edge_rotation(length2[0], length2[1], length2[2]);
         rec.rotation = rot.shift;
         const float f[3] = {rec.factor[rot.shift % 3], rec.factor[(rot.shift + 1) % 3],
                             rec.factor[(rot.shift + 2) % 3]};
         set_lines(rec, f);
+    }
+    void setup(PatchRecord& rec, const float (&length2)[3]) const {
+        lines(rec, length2);
         // One CpPatchSetup gives both the counts and the block.
         const PatchSetupBlock block = patch_setup_block(tables, cp::LineState{rec.token[0], rec.t16[0]},
                                                         cp::LineState{rec.token[1], rec.t16[1]},
@@ -292,6 +296,7 @@ struct UniformFamily {
     void set_lines(PatchRecord& rec, const float (&f)[3]) const {
         for (unsigned k = 0; k < 3; ++k) rec.set_uniform_factor(k, uniform_factor(f[k], tables.max_factor));
     }
+    void lines(PatchRecord& rec, const float (&)[3]) const { set_lines(rec, rec.factor); }
     void setup(PatchRecord& rec, const float (&)[3]) const {
         set_lines(rec, rec.factor);
         const UniformPatch patch = uniform_patch_of(tables, rec);
@@ -388,6 +393,7 @@ struct UniformSplitFamily {
     void set_lines(PatchRecord& rec, const float (&f)[3]) const {
         for (unsigned k = 0; k < 3; ++k) rec.set_uniform_factor(k, factor(f[k]));
     }
+    void lines(PatchRecord& rec, const float (&)[3]) const { set_lines(rec, rec.factor); }
     void setup(PatchRecord& rec, const float (&)[3]) const {
         set_lines(rec, rec.factor);
         const Counts c = counts_of(rec);
@@ -472,6 +478,7 @@ struct D3d11Family {
     void set_lines(PatchRecord& rec, const float (&f)[3]) const {
         for (unsigned k = 0; k < 3; ++k) rec.token[k] = std::bit_cast<std::uint32_t>(sanitized(f[k]));
     }
+    void lines(PatchRecord& rec, const float (&)[3]) const { set_lines(rec, rec.factor); }
     void setup(PatchRecord& rec, const float (&)[3]) const {
         set_lines(rec, rec.factor);
         const Counts c = counts_of(rec);
@@ -521,6 +528,7 @@ concept PipelineFamily = IndexedTessPatch<typename F::patch_type> &&
     requires(const F& f, PatchRecord& rec, const PatchRecord& crec, const float (&l)[3], Counts& counts,
              const typename F::patch_type& p, EdgeParams& params) {
     f.setup(rec, l);
+    f.lines(rec, l);
     f.set_lines(rec, l);
     { f.clamped(0.0f) } -> std::same_as<bool>;
     { f.record_counts(crec, true, counts) } -> std::same_as<bool>;
@@ -562,7 +570,7 @@ unsigned uniform_quad_rotation(const MeshView& mesh, const std::uint32_t (&w)[4]
 
 template <PipelineFamily F>
 PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32_t q,
-                              const PipelineOptions& options, std::uint32_t& clamped) {
+                              const PipelineOptions& options, std::uint32_t& clamped, bool counted) {
     PatchRecord rec;
     rec.kind = patch_kind_quad;
     std::uint32_t w[4];
@@ -599,6 +607,7 @@ PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32
         rec.setup[quad_setup_word::b_token + k] = b.token[k];
         rec.setup[quad_setup_word::b_t16 + k] = b.t16[k];
     }
+    if (!counted) return rec;
     // Counted, not emitted; a sum past 32 bits saturates, so the totals check refuses it.
     const Counts ca = family.counts_of(a), cb = family.counts_of(b);
     const auto saturated = [](std::uint64_t x) {
@@ -609,12 +618,14 @@ PatchRecord setup_quad_record(const F& family, const MeshView& mesh, std::uint32
     return rec;
 }
 
-// Patch p's record: a base triangle (p < triangle_count) or a quad.
+// Patch p's record: a base triangle (p < triangle_count) or a quad. counted = false: the rotation and line
+// states only (what the weld reads), without the counts and the setup block, which can cost a whole pattern
+// walk (split, D3D11).
 template <PipelineFamily F>
 PatchRecord setup_record(const F& family, const MeshView& mesh, std::uint32_t p,
-                         const PipelineOptions& options, std::uint32_t& clamped) {
+                         const PipelineOptions& options, std::uint32_t& clamped, bool counted = true) {
     if (p >= mesh.triangle_count)
-        return setup_quad_record(family, mesh, p - mesh.triangle_count, options, clamped);
+        return setup_quad_record(family, mesh, p - mesh.triangle_count, options, clamped, counted);
     PatchRecord rec;
     std::uint32_t w[3];
     if (!base_triangle(mesh, p, w)) return rec;
@@ -624,7 +635,10 @@ PatchRecord setup_record(const F& family, const MeshView& mesh, std::uint32_t p,
         length2[k] = mesh_edge_length2(mesh, w[k], w[(k + 1) % 3]);
         clamped += family.clamped(rec.factor[k]) ? 1u : 0u;
     }
-    family.setup(rec, length2);
+    if (counted)
+        family.setup(rec, length2);
+    else
+        family.lines(rec, length2);
     return rec;
 }
 
@@ -832,20 +846,81 @@ WeldedEdge edge_key(std::uint32_t i, std::uint32_t j) {
 struct WeldTriangle {
     PatchRecord rec;
     std::uint32_t corner[3] = {};
+    unsigned local[3] = {}; // which patch corner each is: 0-2 of the base triangle, 0-3 of the mesh quad
     bool inner_e1 = false;
     unsigned half = 0; // quad half (A = 0, B = 1)
 };
+
+// Patch edge e of a patch with 3 or 4 corners, by its local corners: a triangle's edge e is opposite corner e
+// (the weld's numbering), a quad's runs from mesh corner e to e + 1.
+constexpr unsigned patch_edge_from(unsigned corners, unsigned e) {
+    return corners == 3 ? (e + 1) % 3 : e;
+}
+constexpr unsigned patch_edge_to(unsigned corners, unsigned e) {
+    return corners == 3 ? (e + 2) % 3 : (e + 1) % 4;
+}
+
+// A patch's weld in local ids (docs/algorithm.md §7.4, "Patch shapes"): the patch corners first, then each
+// patch edge's distinct interior points by the rank of their parameter measured from the edge's first local
+// corner, then the patch's distinct interior points by rank. It is a function of the record's pattern words
+// alone (the key: kind, rotation, line states of both halves), because each edge's line is its record line
+// (set_lines and edge_params read the same factor), and the equalities among its ids are the mesh's whenever
+// the patch's corners are distinct: corners are distinct mesh indices, distinct edges own disjoint id ranges
+// after them, interior ids follow the edges. A patch is then its shape plus a table of its ids.
+struct WeldShape {
+    static constexpr unsigned key_words = 14;
+    std::array<std::uint32_t, key_words> key{};
+    bool filled = false;
+    bool usable = false; // false: the patches of this key take the general path (PatchWeld::run_general)
+    unsigned corners = 3;
+    std::uint32_t edge_count[4] = {}; // distinct interior parameters of each patch edge's line
+    std::uint32_t edge_base[4] = {};  // local id of rank 0
+    std::uint32_t interior_base = 0;
+    std::uint32_t interior_count = 0;
+    std::uint32_t local_count = 0;
+    std::vector<std::uint32_t> eval_id;   // every local id a slot reaches, once
+    std::vector<DomainPoint> eval_point;  // its domain point (base weights, or a quad's unit square)
+    std::vector<std::uint32_t> triangles; // the kept triangles in local ids, A's then B's, pattern order
+};
+
+std::array<std::uint32_t, WeldShape::key_words> weld_shape_key(const PatchRecord& rec) {
+    std::array<std::uint32_t, WeldShape::key_words> key{};
+    key[0] = rec.kind;
+    key[1] = rec.rotation;
+    for (unsigned k = 0; k < 3; ++k) {
+        key[2 + k] = rec.token[k];
+        key[5 + k] = rec.t16[k];
+    }
+    if (rec.kind == patch_kind_quad)
+        for (unsigned k = 0; k < 6; ++k) key[8 + k] = rec.setup[quad_setup_word::b_token + k];
+    return key;
+}
 
 // The welded ids of one patch: the triangle of a base triangle or the two halves of a quad, every slot of
 // their shared-layout patterns mapped to a corner (its mesh index), an edge point (by the rank of its
 // parameter on the edge's line) or an interior point of the patch (by the rank of its exact domain point
 // among the patch's distinct interior points: a quad's diagonal and coincident slots become one vertex).
+// A patch with distinct corners reads its shape from a small cache (the pattern is generated and classified
+// once per key); one with a repeated corner takes the general path, slot by slot.
 template <PipelineFamily F>
 class PatchWeld {
   public:
     PatchWeld(const F& family, const MeshView& mesh, const PipelineOptions& options,
               std::span<const WeldedEdge> edges)
-        : family_(family), mesh_(mesh), options_(options), edges_(edges) {}
+        : family_(family), mesh_(mesh), options_(options), edges_(edges), shapes_(shape_slots + 1),
+          edge_start_(std::size_t{mesh.vertex_count} + 1) {
+        // The edge list is sorted by (lo, hi): the edges of each lo are one run, found in O(1).
+        std::size_t e = 0;
+        for (std::uint32_t v = 0; v <= mesh.vertex_count; ++v) {
+            while (e < edges.size() && edges[e].lo < v) ++e;
+            edge_start_[v] = static_cast<std::uint32_t>(e);
+        }
+    }
+
+    // Skips corners and edge points already marked in written (bit per id below the patches' interiors)
+    // and marks the ones it writes: patches run last to first then write each shared point once, with the
+    // value the last patch to reach it gives (the order of the forward loop, where later patches overwrite).
+    void set_written(std::uint64_t* written) { written_ = written; }
 
     // Runs patch p with its interior ids from first_vertex. Counts its interior vertices and kept triangles;
     // writes them when vertices is not empty (triangles at indices). False when a point is not on its edge's
@@ -855,35 +930,233 @@ class PatchWeld {
         counts = {};
         if (patch_culled(mesh_, p)) return true;
         std::uint32_t clamped = 0;
-        const PatchRecord rec = setup_record(family_, mesh_, p, options_, clamped);
+        const PatchRecord rec = setup_record(family_, mesh_, p, options_, clamped, false);
         WeldTriangle tri[2];
         unsigned n = 1;
-        SurfaceCorner q[4];
-        SurfaceCorner corner[3];
-        PatchSurface surface;
+        std::uint32_t w[4] = {};
         if (p < mesh_.triangle_count) {
-            std::uint32_t w[3];
-            base_triangle(mesh_, p, w);
+            std::uint32_t t[3];
+            base_triangle(mesh_, p, t);
             tri[0].rec = rec;
             for (unsigned k = 0; k < 3; ++k) {
-                tri[0].corner[k] = w[k];
-                corner[k] = mesh_corner(mesh_, w[k]);
+                w[k] = t[k];
+                tri[0].corner[k] = t[k];
+                tri[0].local[k] = k;
             }
-            surface = triangle_surface(mesh_, p, corner, options_);
         } else {
-            std::uint32_t w[4];
             base_quad(mesh_, p - mesh_.triangle_count, w);
-            quad_corners(mesh_, w, rec.rotation, q);
-            surface = quad_surface(mesh_, p - mesh_.triangle_count, rec.rotation, q, options_);
             const unsigned order[2][3] = {{0, 1, 3}, {2, 3, 1}};
             n = 2;
             for (unsigned h = 0; h < 2; ++h) {
                 tri[h].rec = half_record(rec, h);
                 tri[h].inner_e1 = true;
                 tri[h].half = h;
-                for (unsigned k = 0; k < 3; ++k) tri[h].corner[k] = w[(order[h][k] + rec.rotation) % 4];
+                for (unsigned k = 0; k < 3; ++k) {
+                    tri[h].local[k] = (order[h][k] + rec.rotation) % 4;
+                    tri[h].corner[k] = w[tri[h].local[k]];
+                }
             }
         }
+        const unsigned corners = n == 1 ? 3 : 4;
+        bool distinct = true;
+        for (unsigned i = 0; i < corners; ++i)
+            for (unsigned j = i + 1; j < corners; ++j) distinct = distinct && w[i] != w[j];
+        if (!vertices.empty()) {
+            if (n == 1) {
+                for (unsigned k = 0; k < 3; ++k) corner_[k] = mesh_corner(mesh_, w[k]);
+                surface_ = triangle_surface(mesh_, p, corner_, options_);
+            } else {
+                quad_corners(mesh_, w, rec.rotation, q_);
+                surface_ = quad_surface(mesh_, p - mesh_.triangle_count, rec.rotation, q_, options_);
+            }
+        }
+        if (distinct) {
+            const WeldShape& shape = shape_of(rec, tri, n, w);
+            if (shape.usable) return run_shape(shape, n, w, first_vertex, counts, vertices, indices);
+        }
+        return run_general(tri, n, first_vertex, counts, vertices, indices);
+    }
+
+  private:
+    // The shape cache: shape_slots direct-mapped by a hash of the key, plus one slot for a shape with more
+    // than large_shape local ids (or twice as many triangles). At most about 5 MB with CP at 64.
+    static constexpr std::size_t shape_slots = 32;
+    static constexpr std::uint32_t large_shape = 4096;
+
+    TessVertex evaluate(unsigned n, DomainPoint d) const {
+        return n == 1 ? surface_vertex(corner_, d, surface_) : quad_vertex(q_, d, surface_);
+    }
+    bool take(std::uint32_t id) const { return (written_[id / 64] >> (id % 64) & 1u) == 0; }
+    void mark(std::uint32_t id) { written_[id / 64] |= std::uint64_t{1} << (id % 64); }
+
+    // Edge (a, b) of the sorted list, or null: a binary search in the run of its lower index.
+    const WeldedEdge* find_edge(std::uint32_t a, std::uint32_t b) const {
+        const WeldedEdge key = edge_key(a, b);
+        if (key.lo >= mesh_.vertex_count) return nullptr;
+        const auto first = edges_.begin() + edge_start_[key.lo],
+                   last = edges_.begin() + edge_start_[key.lo + 1];
+        const auto it = std::lower_bound(first, last, key, edge_less);
+        return it == last || it->hi != key.hi ? nullptr : &*it;
+    }
+
+    WeldShape& shape_of(const PatchRecord& rec, const WeldTriangle (&tri)[2], unsigned n,
+                        const std::uint32_t (&w)[4]) {
+        const std::array<std::uint32_t, WeldShape::key_words> key = weld_shape_key(rec);
+        std::uint64_t hash = 0xcbf29ce484222325u; // FNV-1a over the key words
+        for (const std::uint32_t word : key) hash = (hash ^ word) * 0x100000001b3u;
+        WeldShape& shape = shapes_[(hash ^ hash >> 29) % shape_slots];
+        WeldShape& large = shapes_[shape_slots];
+        if (shape.filled && shape.key == key) return shape;
+        if (large.filled && large.key == key) return large;
+        shape.key = key;
+        build_shape(shape, tri, n, w);
+        if (shape.local_count <= large_shape && shape.triangles.size() <= 6 * std::size_t{large_shape})
+            return shape;
+        // A large pattern (a split or D3D11 patch far above the tables' factors) is kept alone, so that the
+        // cache holds at most one shape larger than large_shape.
+        std::swap(shape, large);
+        shape = WeldShape{};
+        return large;
+    }
+
+    // Classifies every slot of the patch's pattern as run_general does, in local ids. Leaves the shape
+    // unusable (the general path, whose result it would have to reproduce) where a parameter is not on its
+    // line, where the line's parameter set is not mirror-symmetric at a point (its rank from the other end
+    // is not count - 1 - rank), or where one id's slots disagree on their domain point.
+    void build_shape(WeldShape& s, const WeldTriangle (&tri)[2], unsigned n, const std::uint32_t (&w)[4]) {
+        s.filled = true;
+        s.usable = false;
+        s.local_count = 0;
+        s.corners = n == 1 ? 3 : 4;
+        s.eval_id.clear();
+        s.eval_point.clear();
+        s.triangles.clear();
+        std::uint32_t next = s.corners;
+        for (unsigned e = 0; e < s.corners; ++e) {
+            const std::uint32_t a = w[patch_edge_from(s.corners, e)], b = w[patch_edge_to(s.corners, e)];
+            family_.edge_params(mesh_edge_factor(mesh_, a, b, options_), params_[e]);
+            s.edge_count[e] = params_[e].count;
+            s.edge_base[e] = next;
+            next += params_[e].count;
+        }
+        s.interior_base = next;
+        std::uint32_t offset[2] = {0, 0}, total = 0;
+        inner_.clear();
+        std::optional<typename F::patch_type> patches[2];
+        for (unsigned h = 0; h < n; ++h) {
+            const WeldTriangle& t = tri[h];
+            const typename F::patch_type& patch = patches[h].emplace(family_.welded_patch(t.rec));
+            const Counts c = patch.counts();
+            offset[h] = total;
+            total += c.vertices;
+            if (map_.size() < total) map_.resize(total);
+            if (slot_point_.size() < total) slot_point_.resize(total);
+            for (std::uint32_t i = 0; i < c.vertices; ++i) {
+                const DomainPoint base = family_.base_point(patch, t.rec, i);
+                const std::uint32_t bw[3] = {one - base.u - base.v, base.u, base.v};
+                const DomainPoint d = n == 1 ? base : cp::quad_point(t.half, base);
+                slot_point_[offset[h] + i] = d;
+                unsigned k = 3;
+                for (unsigned j = 0; j < 3 && k == 3; ++j)
+                    if (bw[j] == 0 && !(t.inner_e1 && j == 0)) k = j;
+                if (bw[0] == one || bw[1] == one || bw[2] == one) {
+                    map_[offset[h] + i] = t.local[bw[0] == one ? 0 : bw[1] == one ? 1 : 2];
+                } else if (k < 3) {
+                    const unsigned i1 = (k + 1) % 3, i2 = (k + 2) % 3;
+                    const unsigned ci = t.local[i1], cj = t.local[i2];
+                    const unsigned e = n == 1 ? k : (ci + 1) % 4 == cj ? ci : cj;
+                    // The parameter from the edge's first local corner, and from its second.
+                    const std::uint32_t x = ci == patch_edge_from(s.corners, e) ? bw[i2] : bw[i1];
+                    const unsigned count = params_[e].count;
+                    const unsigned r = params_[e].rank(x), back = params_[e].rank(one - x);
+                    if (r == count || back != count - 1 - r) return;
+                    map_[offset[h] + i] = s.edge_base[e] + r;
+                } else {
+                    inner_.push_back({std::uint64_t{d.u} << 32 | d.v, offset[h] + i});
+                }
+            }
+        }
+        std::sort(inner_.begin(), inner_.end());
+        std::uint32_t interior = 0;
+        for (std::size_t j = 0; j < inner_.size(); ++j) {
+            if (j > 0 && inner_[j].point != inner_[j - 1].point) ++interior;
+            map_[inner_[j].slot] = s.interior_base + interior;
+        }
+        if (!inner_.empty()) ++interior;
+        s.interior_count = interior;
+        s.local_count = s.interior_base + interior;
+        // One evaluation per local id, at its first slot's domain point.
+        if (seen_.size() < s.local_count) seen_.resize(s.local_count);
+        std::fill(seen_.begin(), seen_.begin() + s.local_count, none);
+        for (std::uint32_t j = 0; j < total; ++j) {
+            const std::uint32_t id = map_[j];
+            if (seen_[id] == none) {
+                seen_[id] = static_cast<std::uint32_t>(s.eval_id.size());
+                s.eval_id.push_back(id);
+                s.eval_point.push_back(slot_point_[j]);
+            } else if (s.eval_point[seen_[id]].u != slot_point_[j].u ||
+                       s.eval_point[seen_[id]].v != slot_point_[j].v) {
+                return;
+            }
+        }
+        for (unsigned h = 0; h < n; ++h) {
+            const typename F::patch_type& patch = *patches[h];
+            const std::uint32_t* map = map_.data() + offset[h];
+            for (std::uint32_t k = 0; k < patch.counts().triangles; ++k) {
+                const std::array<std::uint32_t, 3> local = patch.triangle(k);
+                const std::uint32_t a = map[local[0]], b = map[local[1]], d = map[local[2]];
+                if (!options_.weld.keep_degenerate && (a == b || b == d || a == d)) continue;
+                s.triangles.insert(s.triangles.end(), {a, b, d});
+            }
+        }
+        s.usable = true;
+    }
+
+    // A patch with distinct corners: its ids from its corners, its edges' ranges and first_vertex.
+    bool run_shape(const WeldShape& s, unsigned n, const std::uint32_t (&w)[4], std::uint32_t first_vertex,
+                   Counts& counts, std::span<TessVertex> vertices, std::uint32_t* indices) {
+        if (ids_.size() < s.local_count) ids_.resize(s.local_count);
+        std::uint32_t* ids = ids_.data();
+        for (unsigned c = 0; c < s.corners; ++c) ids[c] = w[c];
+        for (unsigned e = 0; e < s.corners; ++e) {
+            const std::uint32_t a = w[patch_edge_from(s.corners, e)], b = w[patch_edge_to(s.corners, e)];
+            const WeldedEdge* edge = find_edge(a, b);
+            if (edge == nullptr || edge->vertex_count != s.edge_count[e]) return false;
+            const std::uint32_t count = s.edge_count[e];
+            std::uint32_t* out = ids + s.edge_base[e];
+            // Ranks count from the lower mesh index (the set is symmetric, build_shape checked it).
+            if (a < b)
+                for (std::uint32_t r = 0; r < count; ++r) out[r] = edge->first_vertex + r;
+            else
+                for (std::uint32_t r = 0; r < count; ++r) out[r] = edge->first_vertex + (count - 1 - r);
+        }
+        for (std::uint32_t j = 0; j < s.interior_count; ++j) ids[s.interior_base + j] = first_vertex + j;
+        counts = {s.interior_count, static_cast<std::uint32_t>(s.triangles.size() / 3)};
+        if (indices != nullptr) {
+            const std::uint32_t* local = s.triangles.data();
+            for (std::size_t k = 0; k < s.triangles.size(); ++k) indices[k] = ids[local[k]];
+        }
+        if (!vertices.empty()) {
+            for (std::size_t j = 0; j < s.eval_id.size(); ++j) {
+                const std::uint32_t local = s.eval_id[j], id = ids[local];
+                const bool shared = local < s.interior_base; // a corner or an edge point
+                if (shared && written_ != nullptr) {
+                    if (!take(id)) continue;
+                    mark(id);
+                }
+                TessVertex v = evaluate(n, s.eval_point[j]);
+                if (shared) v.u = v.v = 0;
+                vertices[id] = v;
+            }
+        }
+        return true;
+    }
+
+    // Any patch, slot by slot: corners by mesh index, edge points by a binary search of their edge and the
+    // rank of their parameter, interior points collected and sorted. Within the patch every slot writes
+    // (the last one wins, as in the forward loop); the marks of its shared points are set afterwards.
+    bool run_general(const WeldTriangle (&tri)[2], unsigned n, std::uint32_t first_vertex, Counts& counts,
+                     std::span<TessVertex> vertices, std::uint32_t* indices) {
         // Pass 1: corners and edge points directly, interior points collected and ranked.
         std::uint32_t offset[2] = {0, 0}, total = 0;
         inner_.clear();
@@ -900,12 +1173,11 @@ class PatchWeld {
                 const std::uint32_t a = t.corner[(k + 1) % 3], b = t.corner[(k + 2) % 3];
                 edge_first_[k] = 0;
                 if (t.inner_e1 && k == 0) continue;
-                const WeldedEdge key = edge_key(a, b);
-                const auto it = std::lower_bound(edges_.begin(), edges_.end(), key, edge_less);
-                if (it == edges_.end() || it->lo != key.lo || it->hi != key.hi) return false;
+                const WeldedEdge* edge = find_edge(a, b);
+                if (edge == nullptr) return false;
                 family_.edge_params(mesh_edge_factor(mesh_, a, b, options_), params_[k]);
-                if (params_[k].count != it->vertex_count) return false;
-                edge_first_[k] = it->first_vertex;
+                if (params_[k].count != edge->vertex_count) return false;
+                edge_first_[k] = edge->first_vertex;
             }
             for (std::uint32_t i = 0; i < c.vertices; ++i) {
                 const DomainPoint base = family_.base_point(patch, t.rec, i);
@@ -942,9 +1214,9 @@ class PatchWeld {
             const std::uint32_t* map = map_.data() + offset[h];
             if (!vertices.empty()) {
                 for (std::uint32_t i = 0; i < c.vertices; ++i) {
+                    if (map[i] < first_vertex && written_ != nullptr && !take(map[i])) continue;
                     const DomainPoint base = family_.base_point(patch, t.rec, i);
-                    TessVertex v = n == 1 ? surface_vertex(corner, base, surface)
-                                          : quad_vertex(q, cp::quad_point(t.half, base), surface);
+                    TessVertex v = evaluate(n, n == 1 ? base : cp::quad_point(t.half, base));
                     if (map[i] < first_vertex) v.u = v.v = 0; // a corner or an edge point
                     vertices[map[i]] = v;
                 }
@@ -961,10 +1233,12 @@ class PatchWeld {
                 ++counts.triangles;
             }
         }
+        if (!vertices.empty() && written_ != nullptr)
+            for (std::uint32_t j = 0; j < total; ++j)
+                if (map_[j] < first_vertex) mark(map_[j]);
         return true;
     }
 
-  private:
     struct Inner {
         std::uint64_t point; // u << 32 | v: the patch's domain (a quad's unit square)
         std::uint32_t slot;  // offset of the half + its vertex
@@ -972,14 +1246,25 @@ class PatchWeld {
             return a.point != b.point ? a.point < b.point : a.slot < b.slot;
         }
     };
+    static constexpr std::uint32_t none = 0xFFFFFFFFu;
     const F& family_;
     const MeshView& mesh_;
     const PipelineOptions& options_;
     std::span<const WeldedEdge> edges_;
-    std::vector<std::uint32_t> map_;
+    std::vector<WeldShape> shapes_;
+    std::vector<std::uint32_t> edge_start_; // vertex v: its first edge with lo = v (vertex_count + 1 entries)
+    std::vector<std::uint32_t> map_;        // slot -> id (general) or local id (build_shape)
     std::vector<Inner> inner_;
-    EdgeParams params_[3];
+    std::vector<DomainPoint> slot_point_; // build_shape: each slot's domain point
+    std::vector<std::uint32_t> seen_;     // build_shape: local id -> its eval entry
+    std::vector<std::uint32_t> ids_;      // run_shape: local id -> output id
+    EdgeParams params_[4];
     std::uint32_t edge_first_[3] = {};
+    std::uint64_t* written_ = nullptr;
+    // The patch being written: its corners and surface (run sets them when vertices is not empty).
+    SurfaceCorner corner_[3];
+    SurfaceCorner q_[4];
+    PatchSurface surface_;
 };
 
 // The mesh edges of patch p (3 or 4; none when culled).
@@ -1075,6 +1360,7 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
         if (check_pipeline_size(0, vertices_sum, 0) != PipelineStatus::ok)
             return PipelineStatus::bad_patch_record;
     }
+    const std::uint64_t edge_vertices = vertices_sum - mesh.vertex_count;
     // The patch records: each patch's counts as run here, at the prefix sums.
     PatchWeld<F> weld(family, mesh, options, edges);
     const auto count = static_cast<std::uint32_t>(mesh.patch_count());
@@ -1092,22 +1378,28 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
     }
     if (vertices_sum > vertices.size() || 3 * triangle_sum > indices.size())
         return PipelineStatus::span_too_small;
-    // Every mesh vertex is output vertex v (also when no face uses it): its corner value.
+    // The patches last to first: each corner and edge point is written once, by the last patch that reaches
+    // it (the value the forward order leaves), marked in one bit per id below the patches' interiors.
+    const std::uint64_t shared_ids = mesh.vertex_count + std::uint64_t{edge_vertices};
+    std::vector<std::uint64_t> written((shared_ids + 63) / 64);
+    weld.set_written(written.data());
+    for (std::uint32_t p = count; p-- > 0;) {
+        Counts c;
+        weld.run(p, patches[p].first_vertex, c, vertices,
+                 indices.data() + 3 * std::size_t{patches[p].first_triangle});
+    }
+    // Every mesh vertex no face reaches is output vertex v: its corner value.
     for (std::uint32_t v = 0; v < mesh.vertex_count; ++v) {
+        if ((written[v / 64] >> (v % 64) & 1u) != 0) continue;
         const SurfaceCorner c[3] = {mesh_corner(mesh, v), mesh_corner(mesh, v), mesh_corner(mesh, v)};
         PatchSurface corner_surface{options.surface};
         if (options.displacement != nullptr) {
-            // No face: the dominant vertex by position id (a corner a face reaches is rewritten by it).
+            // No face: the dominant vertex by position id.
             const std::uint32_t w[3] = {v, v, v};
             const MeshView own{mesh.vertices, mesh.vertex_count, nullptr, 0, nullptr, 0, mesh.position_ids};
             corner_surface.displace = displacement_patch(*options.displacement, own, 3, w, PatchFaces{});
         }
         vertices[v] = surface_vertex(c, DomainPoint{0, 0}, corner_surface);
-    }
-    for (std::uint32_t p = 0; p < count; ++p) {
-        Counts c;
-        weld.run(p, patches[p].first_vertex, c, vertices,
-                 indices.data() + 3 * std::size_t{patches[p].first_triangle});
     }
     return PipelineStatus::ok;
 }

@@ -301,10 +301,14 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& unifor
 // the triangles whose welded corners repeat an index dropped unless options.weld.keep_degenerate. Culled
 // faces (an index >= vertex_count) add nothing. setup_welded counts the unwelded output first and refuses a
 // mesh whose unwelded counts pass the pipeline's limits, before any pattern is generated. setup_welded and
-// emit_welded_mesh keep one patch at a time in scratch: its slot map and interior points (about 20 bytes per
-// vertex), and for the split and D3D11 patterns its whole output (8 bytes per point, 12 per triangle).
-// emit_welded_mesh checks the edge list and the patch records against the mesh first (bad_patch_record) and
-// writes nothing on any failure.
+// emit_welded_mesh keep in scratch one patch's slot map and interior points (about 36 bytes per slot), for
+// the split and D3D11 patterns its whole output (8 bytes per point, 12 per triangle), one index per mesh
+// vertex into the edge list, and a cache of patch shapes: a pattern's weld in local ids, made once and
+// reused by every patch with the same pattern words and distinct corners (32 of up to 4,096 ids, about
+// 5 MB at most, plus one larger; docs/algorithm.md §7.4). emit_welded_mesh checks the edge list and the
+// patch records against the mesh first (bad_patch_record) and writes nothing on any failure; it then writes
+// the patches last to first, each corner and edge point once (one bit per point), with the value of the
+// last patch that reaches it.
 
 // One mesh edge of the welded output: its endpoints (lo < hi, or lo == hi for a degenerate face) and its
 // interior points' vertex range.
