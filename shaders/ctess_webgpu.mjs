@@ -51,17 +51,16 @@ export class MeshPipeline {
             entries.push({ binding: i, visibility: GPUShaderStage.COMPUTE, buffer: { type: i < C.READ_ONLY_BINDINGS ? 'read-only-storage' : 'storage' } });
         p.layout = device.createBindGroupLayout({ entries });
         const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [p.layout] });
-        // Compiled concurrently (seconds each on a software adapter). The two quad passes hold about half of the
-        // module's code: they compile on the first run with quads, so a triangle mesh never waits for them.
+        // Compiled concurrently (seconds each on a software adapter). The quad and displaced vertex passes (more
+        // than half of the module's code) compile on the first run that needs each (pipelineOf), so a triangle
+        // mesh never waits for them.
         p.make = (entryPoint) => device.createComputePipelineAsync({ layout: pipelineLayout, compute: { module, entryPoint } });
-        const pass = Object.fromEntries(layout.passes.map((x) => [x.name, x]));
-        p.quadEntries = [pass.emit_quad_vertices.entry, pass.emit_quad_triangles.entry];
-        const own = [pass.patch_setup, pass.prefix_sum, pass.emit_vertices, pass.emit_triangles];
-        const made = await Promise.all(own.map((x) => p.make(x.entry)).concat(extraEntryPoints.map(p.make)));
-        [p.setup, p.scan, p.emitVertices, p.emitTriangles] = made;
+        p.entries = Object.fromEntries(layout.passes.map((x) => [x.name, x.entry]));
+        const own = ['patch_setup', 'prefix_sum', 'emit_vertices', 'emit_triangles'];
+        const made = await Promise.all(own.map((x) => p.make(p.entries[x])).concat(extraEntryPoints.map(p.make)));
+        own.forEach((name, k) => p.pipelines.set(name, Promise.resolve(made[k])));
+        [p.setup, p.scan] = made;
         extraEntryPoints.forEach((name, k) => { p.extra[name] = made[own.length + k]; });
-        // The displaced vertex passes are made on the first displaced run (displaced()).
-        p.makeDisplaced = () => Promise.all([pass.emit_displaced_vertices, pass.emit_displaced_quad_vertices].map((x) => p.make(x.entry)));
         const err = await device.popErrorScope();
         if (err) throw new Error(err.message);
         return p;
@@ -76,6 +75,7 @@ export class MeshPipeline {
         this.patchWords = layout.constants.PATCH_WORDS;
         this.setupGroup = layout.passes.find((x) => x.name === 'patch_setup').workgroup_size;
         this.extra = {};
+        this.pipelines = new Map(); // pass name (layout.json) -> Promise<GPUComputePipeline>
         this.blobs = new Map(); // pattern -> Promise<{tables, maxFactor}>
     }
 
@@ -199,8 +199,6 @@ export class MeshPipeline {
     // when the params name them, options.directions (3 floats per mesh vertex) go after the mesh's own data.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
-        if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON)
-            [meshVertices, meshIndices] = this.displacementData(params, meshVertices, meshIndices, options);
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
         const maxGroups = options.maxWorkgroups ?? C.MAX_DISPATCH_WORKGROUPS;
         const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT];
@@ -214,14 +212,21 @@ export class MeshPipeline {
         if (3 * (n - quads) + 4 * quads > meshIndices.length || params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS > meshVertices.length)
             throw new Error('params: more patches or mesh vertices than the index and vertex arrays hold');
         const maxBinding = this.device.limits.maxStorageBufferBindingSize;
+        const displaced = (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON) !== 0;
+        if (displaced) // after the checks above, on the caller's arrays
+            [meshVertices, meshIndices] = this.displacementData(params, meshVertices, meshIndices, options, maxBinding);
         const patchWords = n * this.patchWords + C.TOTALS_WORDS;
         for (const [what, words] of [['mesh vertices', meshVertices.length], ['mesh indices', meshIndices.length], ['patch records', patchWords]])
             if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
-        if (quads > 0) await this.quadPipelines();
         // Displaced vertices come from their own entry points (the others write none for such params).
-        const [emitVertices, emitQuadVertices] = params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON
-            ? await this.displaced() : [this.emitVertices, this.emitQuadVertices];
+        const triangles = n - quads;
+        const wanted = [first0 < Math.min(end0, triangles) ? (displaced ? 'emit_displaced_vertices' : 'emit_vertices') : null,
+                        first0 < Math.min(end0, triangles) ? 'emit_triangles' : null,
+                        end0 > Math.max(first0, triangles) ? (displaced ? 'emit_displaced_quad_vertices' : 'emit_quad_vertices') : null,
+                        end0 > Math.max(first0, triangles) ? 'emit_quad_triangles' : null];
+        const [emitVertices, emitTriangles, emitQuadVertices, emitQuadTriangles] =
+            options.countsOnly ? [] : await Promise.all(wanted.map((name) => name && this.pipelineOf(name)));
         // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
@@ -274,11 +279,10 @@ export class MeshPipeline {
                 batchParams[C.PARAM_END_PATCH] = end;
                 this.device.queue.writeBuffer(bParams, 0, batchParams);
                 // The batch's triangles and quads go to their own entry points (the quads are the last patches).
-                const triangles = n - quads;
                 const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
                     .map((count) => Math.min(count, maxGroups));
-                const passes = [[emitVertices, groups[0]], [this.emitTriangles, groups[0]],
-                                [emitQuadVertices, groups[1]], [this.emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
+                const passes = [[emitVertices, groups[0]], [emitTriangles, groups[0]],
+                                [emitQuadVertices, groups[1]], [emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
                 milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
                 first = end;
             }
@@ -291,21 +295,22 @@ export class MeshPipeline {
         }
     }
 
-    // The quad passes' pipelines, compiled once, on the first run with quads.
-    quadPipelines() {
-        if (!this.quadsMade) {
-            this.quadsMade = Promise.all(this.quadEntries.map(this.make)).then(([vertices, triangles]) => {
-                this.emitQuadVertices = vertices;
-                this.emitQuadTriangles = triangles;
-            });
-            this.quadsMade.catch(() => { this.quadsMade = null; });
+    // The pipeline of a pass of layout.json, compiled once, on first use (a failure is not kept: the next run
+    // tries again).
+    pipelineOf(name) {
+        if (!this.pipelines.has(name)) {
+            const made = this.make(this.entries[name]);
+            made.catch(() => this.pipelines.delete(name));
+            this.pipelines.set(name, made);
         }
-        return this.quadsMade;
+        return this.pipelines.get(name);
     }
 
     // Bindings 2 and 3 of a displaced run (docs/shaders.md, "Displacement"): the mesh vertices then the
-    // directions, the indices (and the adjacency when the params' flag says so) then the texels' bits.
-    displacementData(params, meshVertices, meshIndices, { texels, directions }) {
+    // directions, the indices (and the adjacency when the params' flag says so) then the texels' bits. run()
+    // has checked the arrays against the params; each binding is checked against maxBinding bytes before it is
+    // allocated.
+    displacementData(params, meshVertices, meshIndices, { texels, directions }, maxBinding) {
         const C = this.constants;
         const flags = params[C.PARAM_DISPLACEMENT_FLAGS];
         const float = (w) => new Float32Array(Uint32Array.of(params[w]).buffer)[0];
@@ -320,6 +325,8 @@ export class MeshPipeline {
         const triangles = params[C.PARAM_PATCH_COUNT] - params[C.PARAM_QUAD_COUNT], quads = params[C.PARAM_QUAD_COUNT];
         const indexWords = 3 * triangles + 4 * quads + (flags & C.DISPLACEMENT_ADJACENCY ? 12 * (triangles + 2 * quads) : 0);
         if (meshIndices.length < indexWords) throw new Error('displacement: the adjacency the params name is not in meshIndices');
+        if ((indexWords + count) * 4 > maxBinding)
+            throw new Error(`displacement: ${(indexWords + count) * 4} bytes of indices and texels in one storage binding, past the device's ${maxBinding}`);
         const indices = new Uint32Array(indexWords + count);
         indices.set(meshIndices.subarray(0, indexWords));
         indices.set(new Uint32Array(texels.buffer, texels.byteOffset, count), indexWords);
@@ -327,16 +334,12 @@ export class MeshPipeline {
         const vertexWords = params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS, n = 3 * params[C.PARAM_MESH_VERTEX_COUNT];
         if (!(directions instanceof Float32Array) || directions.length < n)
             throw new Error(`displacement: ${directions?.length ?? 'no'} direction floats given for ${n / 3} mesh vertices`);
+        if ((vertexWords + n) * 4 > maxBinding)
+            throw new Error(`displacement: ${(vertexWords + n) * 4} bytes of mesh vertices and directions in one storage binding, past the device's ${maxBinding}`);
         const vertices = new Uint32Array(vertexWords + n);
         vertices.set(new Uint32Array(meshVertices.buffer, meshVertices.byteOffset, vertexWords));
         vertices.set(new Uint32Array(directions.buffer, directions.byteOffset, n), vertexWords);
         return [vertices, indices];
-    }
-
-    // The pipelines of the displaced vertex passes [triangles, quads], made once on first use.
-    displaced() {
-        this.displacedPipelines ??= this.makeDisplaced();
-        return this.displacedPipelines;
     }
 
     // Frees the table blobs (the pipelines need no freeing).

@@ -103,11 +103,20 @@ std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string&
         std::remove((job.work_file + ".result").c_str());
         cmd += " " + job.work_file + ".scene " + job.work_file + ".result";
     }
+    // node's messages go to a file, so that a failure's reason reaches the exception (and ctest's log).
+    const std::string messages_path = jobs.empty() ? std::string() : jobs.front().work_file + ".messages";
+    if (!messages_path.empty()) cmd += " 2> " + messages_path;
     const int status = std::system(cmd.c_str());
+    std::string messages;
+    if (!messages_path.empty()) {
+        std::ifstream in(messages_path);
+        messages.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        std::fputs(messages.c_str(), stderr);
+    }
     if (WIFEXITED(status) && WEXITSTATUS(status) == run_wgsl_past_limits)
         throw std::runtime_error(
             "the mesh is past the pipeline's limits (run_wgsl.mjs recounted the totals)");
-    if (status != 0) throw std::runtime_error("the Dawn run failed: " + cmd);
+    if (status != 0) throw std::runtime_error("the Dawn run failed: " + cmd + "\n" + messages);
     std::vector<PipelineOutput> out;
     for (const DawnJob& job : jobs) out.push_back(read_result_file(job.work_file + ".result"));
     return out;

@@ -486,6 +486,22 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         if (data_bytes != 0) std::memcpy(owned.back().mapped, data, data_bytes);
         return owned.back();
     };
+    // Binding 3 (sized and checked before any buffer is made): the triangles' 3 indices each, the quads' 4,
+    // then for PN-AEN (and for displacement, when its flag says so) the adjacency's 12 per face triangle
+    // (docs/shaders.md, "PN-AEN"; without it every edge is a boundary, as on the CPU), then with displacement
+    // the texels.
+    const bool aen =
+        displace ? (disp & flag::adjacency) != 0
+                 : params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
+    const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
+    const std::size_t adjacency_bytes = aen ? (std::size_t{n - quads} + 2 * std::size_t{quads}) * 48 : 0;
+    const std::uint64_t texel_bytes = displace ? 4 * texel_count : 0;
+    const std::uint64_t index_binding = triangle_bytes + quad_bytes + adjacency_bytes + texel_bytes;
+    if (index_binding > d.limits.maxStorageBufferRange)
+        throw Error("binding 3 (indices, adjacency and " + std::to_string(displace ? texel_count : 0) +
+                    " height-map texels) would be " + std::to_string(index_binding) +
+                    " bytes, past this device's maxStorageBufferRange (" +
+                    std::to_string(d.limits.maxStorageBufferRange) + ")");
     const std::uint64_t patch_words = rt::gpu::patch_buffer_words(n);
     const Device::Buffer b_params = make(sizeof params, params.data(), sizeof params);
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
@@ -499,20 +515,6 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     if (directions)
         std::memcpy(static_cast<char*>(b_mesh.mapped) + direction_vertices * rt::mesh_vertex_floats * 4,
                     displacement->directions, direction_vertices * 12);
-    // Binding 3: the triangles' 3 indices each, the quads' 4, then for PN-AEN (and for displacement, when its
-    // flag says so) the adjacency's 12 per face triangle (docs/shaders.md, "PN-AEN"; without it every edge is
-    // a boundary, as on the CPU), then with displacement the texels.
-    const bool aen =
-        displace ? (disp & flag::adjacency) != 0
-                 : params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
-    const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
-    const std::size_t adjacency_bytes = aen ? (std::size_t{n - quads} + 2 * std::size_t{quads}) * 48 : 0;
-    const std::uint64_t texel_bytes = displace ? 4 * texel_count : 0;
-    const std::uint64_t index_binding = triangle_bytes + quad_bytes + adjacency_bytes + texel_bytes;
-    if (index_binding > d.limits.maxStorageBufferRange)
-        throw Error("the height map (" + std::to_string(texel_count) + " texels) makes binding 3 " +
-                    std::to_string(index_binding) + " bytes, past this device's maxStorageBufferRange (" +
-                    std::to_string(d.limits.maxStorageBufferRange) + ")");
     const Device::Buffer b_indices = make(index_binding, mesh.indices, triangle_bytes);
     auto* index_bytes = static_cast<char*>(b_indices.mapped);
     if (quad_bytes != 0) std::memcpy(index_bytes + triangle_bytes, mesh.quad_indices, quad_bytes);
