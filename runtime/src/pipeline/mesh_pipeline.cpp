@@ -843,6 +843,20 @@ WeldedEdge edge_key(std::uint32_t i, std::uint32_t j) {
 // One triangle of a patch as the weld sees it: the record of its pattern (a base triangle's, or a quad half
 // with rotation 0), the mesh indices of the corners its base weights refer to, and whether its e1 (opposite
 // pattern corner 0) is a quad's diagonal, inside the patch.
+// Where a pattern slot of weights w lies (docs/algorithm.md §7.4): corner c when its weight is one, else on
+// the edge opposite the first corner k of zero weight (a quad half's inner edge E1, k = 0, is interior), else
+// inside; 3 means none.
+struct SlotPlace {
+    unsigned corner = 3, edge = 3;
+};
+SlotPlace slot_place(const std::uint32_t (&w)[3], bool inner_e1) {
+    SlotPlace place;
+    for (unsigned j = 0; j < 3 && place.edge == 3; ++j)
+        if (w[j] == 0 && !(inner_e1 && j == 0)) place.edge = j;
+    if (w[0] == one || w[1] == one || w[2] == one) place.corner = w[0] == one ? 0 : w[1] == one ? 1 : 2;
+    return place;
+}
+
 struct WeldTriangle {
     PatchRecord rec;
     std::uint32_t corner[3] = {};
@@ -1056,11 +1070,10 @@ class PatchWeld {
                 const std::uint32_t bw[3] = {one - base.u - base.v, base.u, base.v};
                 const DomainPoint d = n == 1 ? base : cp::quad_point(t.half, base);
                 slot_point_[offset[h] + i] = d;
-                unsigned k = 3;
-                for (unsigned j = 0; j < 3 && k == 3; ++j)
-                    if (bw[j] == 0 && !(t.inner_e1 && j == 0)) k = j;
-                if (bw[0] == one || bw[1] == one || bw[2] == one) {
-                    map_[offset[h] + i] = t.local[bw[0] == one ? 0 : bw[1] == one ? 1 : 2];
+                const SlotPlace place = slot_place(bw, t.inner_e1);
+                const unsigned k = place.edge;
+                if (place.corner < 3) {
+                    map_[offset[h] + i] = t.local[place.corner];
                 } else if (k < 3) {
                     const unsigned i1 = (k + 1) % 3, i2 = (k + 2) % 3;
                     const unsigned ci = t.local[i1], cj = t.local[i2];
@@ -1076,13 +1089,7 @@ class PatchWeld {
                 }
             }
         }
-        std::sort(inner_.begin(), inner_.end());
-        std::uint32_t interior = 0;
-        for (std::size_t j = 0; j < inner_.size(); ++j) {
-            if (j > 0 && inner_[j].point != inner_[j - 1].point) ++interior;
-            map_[inner_[j].slot] = s.interior_base + interior;
-        }
-        if (!inner_.empty()) ++interior;
+        const std::uint32_t interior = rank_interior(s.interior_base);
         s.interior_count = interior;
         s.local_count = s.interior_base + interior;
         // One evaluation per local id, at its first slot's domain point.
@@ -1182,11 +1189,10 @@ class PatchWeld {
             for (std::uint32_t i = 0; i < c.vertices; ++i) {
                 const DomainPoint base = family_.base_point(patch, t.rec, i);
                 const std::uint32_t w[3] = {one - base.u - base.v, base.u, base.v};
-                unsigned k = 3; // the edge (opposite corner k) the point is on, if any
-                for (unsigned j = 0; j < 3 && k == 3; ++j)
-                    if (w[j] == 0 && !(t.inner_e1 && j == 0)) k = j;
-                if (w[0] == one || w[1] == one || w[2] == one) {
-                    map_[offset[h] + i] = t.corner[w[0] == one ? 0 : w[1] == one ? 1 : 2];
+                const SlotPlace place = slot_place(w, t.inner_e1);
+                const unsigned k = place.edge;
+                if (place.corner < 3) {
+                    map_[offset[h] + i] = t.corner[place.corner];
                 } else if (k < 3) {
                     const unsigned i1 = (k + 1) % 3, i2 = (k + 2) % 3;
                     // The parameter from the lower mesh index (the set is symmetric, so either end will do).
@@ -1200,12 +1206,7 @@ class PatchWeld {
                 }
             }
         }
-        std::sort(inner_.begin(), inner_.end());
-        for (std::size_t j = 0; j < inner_.size(); ++j) {
-            if (j > 0 && inner_[j].point != inner_[j - 1].point) ++counts.vertices;
-            map_[inner_[j].slot] = first_vertex + counts.vertices;
-        }
-        if (!inner_.empty()) ++counts.vertices;
+        counts.vertices = rank_interior(first_vertex);
         // Pass 2: the vertices (when asked) and the kept triangles.
         for (unsigned h = 0; h < n; ++h) {
             const WeldTriangle& t = tri[h];
@@ -1237,6 +1238,18 @@ class PatchWeld {
             for (std::uint32_t j = 0; j < total; ++j)
                 if (map_[j] < first_vertex) mark(map_[j]);
         return true;
+    }
+
+    // Numbers the collected interior points by rank of their domain point, from first (equal points, such as
+    // a quad's diagonal seen from both halves, get one id); returns how many distinct points there are.
+    std::uint32_t rank_interior(std::uint32_t first) {
+        std::sort(inner_.begin(), inner_.end());
+        std::uint32_t distinct = 0;
+        for (std::size_t j = 0; j < inner_.size(); ++j) {
+            if (j > 0 && inner_[j].point != inner_[j - 1].point) ++distinct;
+            map_[inner_[j].slot] = first + distinct;
+        }
+        return inner_.empty() ? 0 : distinct + 1;
     }
 
     struct Inner {
