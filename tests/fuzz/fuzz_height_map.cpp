@@ -1,8 +1,9 @@
-// libFuzzer: ctess::models::load_height_map_from_memory on arbitrary bytes (PNG and what stb_image reads).
+// libFuzzer: ctess::models::load_height_map_from_memory on arbitrary bytes (PNG and what stb_image reads,
+// OpenEXR).
 // Any input gives an image or an error (never a crash, a hang or a sanitizer report); an image keeps the
 // loader's promises (docs/models.md, "Height maps"): sides in [1, 16384], at most 2^26 texels, width * height
-// texels, finite, in [0, 1] unless the file is a Radiance .hdr; and the pipeline's sampler reads it finitely
-// (docs/algorithm.md §8.1).
+// texels, finite, in [0, 1] unless the file is a Radiance .hdr or an OpenEXR image (linear floats); and the
+// pipeline's sampler reads it finitely (docs/algorithm.md §8.1).
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -24,9 +25,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     CTESS_FUZZ_CHECK(std::uint64_t{image.width} * image.height <= models::max_height_map_texels);
     CTESS_FUZZ_CHECK(image.texels.size() == std::size_t{image.width} * image.height);
     const bool hdr = size >= 2 && data[0] == '#' && data[1] == '?';
+    const bool exr = size >= 4 && data[0] == 0x76 && data[1] == 0x2f && data[2] == 0x31 && data[3] == 0x01;
     for (const float t : image.texels) {
         CTESS_FUZZ_CHECK(std::isfinite(t));
-        if (!hdr) CTESS_FUZZ_CHECK(t >= 0.0f && t <= 1.0f);
+        if (!hdr && !exr) CTESS_FUZZ_CHECK(t >= 0.0f && t <= 1.0f);
     }
     for (const rt::AddressMode mode : {rt::AddressMode::repeat, rt::AddressMode::clamp}) {
         const rt::HeightMap map = image.view(mode);

@@ -1,10 +1,11 @@
 // Height maps for displacement (docs/models.md, "Height maps"): PNG (8 or 16 bits per channel, any channel
 // count: the first channel, red or grey, is the height) and the other formats stb_image reads, decoded by
 // Debian's stb_image (libstb-dev) into floats in [0, 1] (c / 255, c / 65535, as glTF's normalized texels);
-// Radiance .hdr keeps its linear floats. Loading never throws: a missing, truncated or unreadable file, a
-// 0 x 0 image or one past the size limit gives a LoadError naming the file and no image. The size is checked
-// from the header (stbi_info) BEFORE anything is decoded, so a header claiming 65536 x 65536 allocates
-// nothing.
+// Radiance .hdr keeps its linear floats. OpenEXR images (by magic number) go through Debian's OpenEXR when
+// the build has it: the R channel, else Y, else the first, as floats, every texel finite. Loading never
+// throws: a missing, truncated or unreadable file, a 0 x 0 image or one past the size limit gives a LoadError
+// naming the file and no image. The size is checked from the header (stbi_info) BEFORE anything is decoded,
+// so a header claiming 65536 x 65536 allocates nothing.
 #pragma once
 #include <cstdint>
 #include <optional>
