@@ -70,8 +70,9 @@ std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsign
 
 // ---- MeshPipeline ----
 
-MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor)
-    : device_(device), max_factor_(max_factor) {
+MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor,
+                           Creation creation)
+    : device_(device), max_factor_(max_factor), shader_dir_(shader_dir) {
     if (max_factor != 64 && max_factor != 256)
         throw Error("the shaders exist for max factor 64 and 256 only");
     try {
@@ -92,27 +93,38 @@ MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsig
         pl.setLayoutCount = 1;
         pl.pSetLayouts = &set_layout_;
         check(vkCreatePipelineLayout(device_, &pl, nullptr, &pipeline_layout_), "vkCreatePipelineLayout");
+        // Every SPIR-V file is read now, so a missing one is an error of the constructor either way.
         for (unsigned k = 0; k < passes; ++k) {
-            const std::vector<std::uint32_t> code =
-                read_words(shader_file(shader_dir, max_factor, pass_suffix[k]));
-            auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-            smci.codeSize = code.size() * 4;
-            smci.pCode = code.data();
-            check(vkCreateShaderModule(device_, &smci, nullptr, &modules_[k]), "vkCreateShaderModule");
-            auto cpci =
-                vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-            cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-            cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-            cpci.stage.module = modules_[k];
-            cpci.stage.pName = "main"; // one entry point per GLSL file (docs/shaders.md)
-            cpci.layout = pipeline_layout_;
-            check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipelines_[k]),
-                  "vkCreateComputePipelines");
+            const std::string path = shader_file(shader_dir, max_factor, pass_suffix[k]);
+            if (!std::ifstream(path, std::ios::binary))
+                throw Error("cannot read " + path + " (are the shaders generated and installed?)");
         }
+        if (creation == Creation::all_now)
+            for (unsigned k = 0; k < passes; ++k) pipeline(k);
+        else
+            for (unsigned k = 0; k < 2; ++k) pipeline(k); // the counting passes, which every use needs
     } catch (...) {
         destroy();
         throw;
     }
+}
+
+VkPipeline MeshPipeline::pipeline(unsigned k) const {
+    if (pipelines_[k] != VK_NULL_HANDLE) return pipelines_[k];
+    const std::vector<std::uint32_t> code = read_words(shader_file(shader_dir_, max_factor_, pass_suffix[k]));
+    auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    smci.codeSize = code.size() * 4;
+    smci.pCode = code.data();
+    check(vkCreateShaderModule(device_, &smci, nullptr, &modules_[k]), "vkCreateShaderModule");
+    auto cpci = vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    cpci.stage.module = modules_[k];
+    cpci.stage.pName = "main"; // one entry point per GLSL file (docs/shaders.md)
+    cpci.layout = pipeline_layout_;
+    check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipelines_[k]),
+          "vkCreateComputePipelines");
+    return pipelines_[k];
 }
 
 void MeshPipeline::destroy() noexcept {
@@ -144,6 +156,7 @@ MeshPipeline& MeshPipeline::operator=(MeshPipeline&& other) noexcept {
     destroy();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     max_factor_ = other.max_factor_;
+    shader_dir_ = std::move(other.shader_dir_);
     set_layout_ = std::exchange(other.set_layout_, VK_NULL_HANDLE);
     pipeline_layout_ = std::exchange(other.pipeline_layout_, VK_NULL_HANDLE);
     for (unsigned k = 0; k < passes; ++k) {
@@ -178,13 +191,13 @@ void MeshPipeline::record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::
                                  std::uint32_t max_workgroups) const {
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[0]);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(0));
     // An empty mesh still runs one setup workgroup (it writes nothing) so the prefix sum's totals are
     // written.
     const std::uint32_t groups = rt::gpu::setup_workgroups(patch_count, max_workgroups);
     vkCmdDispatch(cmd, groups > 0 ? groups : 1, 1, 1);
     compute_barrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[1]);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(1));
     vkCmdDispatch(cmd, 1, 1, 1);
     compute_barrier(cmd);
 }
@@ -202,10 +215,9 @@ void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::ui
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (count[kind] == 0) continue;
         const std::uint32_t groups = rt::gpu::emit_workgroups(count[kind], max_workgroups);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                          pipelines_[displaced ? 6 + kind : 2 + 2 * kind]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(displaced ? 6 + kind : 2 + 2 * kind));
         vkCmdDispatch(cmd, groups, 1, 1);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[3 + 2 * kind]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(3 + 2 * kind));
         vkCmdDispatch(cmd, groups, 1, 1);
     }
 }
@@ -403,7 +415,9 @@ struct Runner::Device {
 
 Runner::Runner(const std::string& shader_dir, unsigned max_factor)
     : device_(std::make_unique<Device>()), shader_dir_(shader_dir), max_factor_(max_factor) {
-    device_->pipeline = std::make_unique<MeshPipeline>(device_->device, shader_dir, max_factor);
+    // On demand: a run creates only the passes its mesh and params use (docs/shaders.md, "Hosts").
+    device_->pipeline = std::make_unique<MeshPipeline>(device_->device, shader_dir, max_factor,
+                                                       MeshPipeline::Creation::on_first_use);
 }
 
 Runner::~Runner() = default;

@@ -1,5 +1,5 @@
 // The mesh pipeline on Vulkan (ctess::vulkan; docs/shaders.md, "Hosts"): the generated SPIR-V of
-// share/ctess/shaders (ctess_SHADER_DIR) as four compute pipelines, in two layers.
+// share/ctess/shaders (ctess_SHADER_DIR) as eight compute pipelines, in two layers.
 //
 // MeshPipeline is for a renderer: it creates the pipelines on your VkDevice and records the passes into your
 // command buffer; you own the buffers (device-local or not), the descriptor set and the synchronisation
@@ -15,7 +15,8 @@
 //
 // Runner is the whole round trip on host-visible buffers, for tools and tests (tests/gpu, the consumer
 // example in docs/shaders.md): its own instance and device (the loader's first device with a compute queue;
-// lavapipe where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back.
+// lavapipe where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back; it creates
+// each emit pass on its first use (MeshPipeline::Creation::on_first_use).
 //
 //   ctess::vulkan::Runner gpu(ctess_shader_dir, 64);
 //   const ctess::vulkan::Output out = gpu.tessellate(mesh, options);   // out.vertices, out.indices
@@ -53,12 +54,19 @@ std::string shader_file(const std::string& shader_dir, unsigned max_factor, cons
 std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsigned max_factor,
                                            rt::Pattern pattern);
 
-// The six compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles, and
-// of the quads) on a device, with the descriptor set layout of rt::gpu::binding (seven storage buffers,
-// compute stage). Move-only; destroys what it created, so destroy it before the device.
+// The eight compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles and
+// of the quads, displaced vertices of both) on a device, with the descriptor set layout of rt::gpu::binding
+// (seven storage buffers, compute stage). Move-only; destroys what it created, so destroy it before the
+// device. Creation::all_now (the default) creates every pipeline in the constructor; on_first_use creates the
+// two counting passes there and each emit pass when a record_emit first needs it, so a host that never
+// displaces or never sees a quad never compiles those passes (the driver's compile of a displaced pass is the
+// slow one), at the price of a compile inside that record_emit; either way every SPIR-V file must exist when
+// the constructor runs. Not for use from two threads at once.
 class MeshPipeline {
   public:
-    MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor);
+    enum class Creation { all_now, on_first_use };
+    MeshPipeline(VkDevice device, const std::string& shader_dir, unsigned max_factor,
+                 Creation creation = Creation::all_now);
     ~MeshPipeline();
     MeshPipeline(MeshPipeline&& other) noexcept;
     MeshPipeline& operator=(MeshPipeline&& other) noexcept;
@@ -96,13 +104,15 @@ class MeshPipeline {
 
   private:
     void destroy() noexcept;
+    VkPipeline pipeline(unsigned pass) const; // created on its first call
     VkDevice device_ = VK_NULL_HANDLE;
     unsigned max_factor_ = 0;
+    std::string shader_dir_;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
-    VkShaderModule modules_[passes] = {};
-    VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads, displaced
-                                        // vertices of triangles and of quads
+    mutable VkShaderModule modules_[passes] = {};
+    mutable VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads,
+                                                // displaced vertices of triangles and of quads
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
