@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -664,6 +665,33 @@ TEST_CASE("GPU displacement parity, quads: a displaced mixed grid equals the CPU
     cases.emplace_back("disp_quads_uniform",
                        displaced_case(64, Surface::flat, Pattern::uniform, AddressMode::clamp, false, 3));
     check_displaced_parity(64, cases);
+}
+
+TEST_CASE("Vulkan host: pipelines created up front or on first use give the same output, and a missing pass "
+          "file is the constructor's error either way",
+          "[vulkan]") {
+    using rt::AddressMode, rt::Pattern, rt::Surface;
+    // A displaced mixed grid runs six of the eight passes (setup, prefix sum, the displaced vertices and the
+    // triangles of both kinds); the shared runner creates them on first use.
+    const DisplacedCase c =
+        displaced_case(64, Surface::pn_triangles, Pattern::cp, AddressMode::repeat, true, 3);
+    const PipelineOutput on_first_use = run_vulkan(runner(64), c.scene);
+    vulkan::Runner all_now(CTESS_SHADER_DIR, 64, vulkan::MeshPipeline::Creation::all_now);
+    const PipelineOutput up_front = run_vulkan(all_now, c.scene);
+    CHECK(on_first_use.patches == up_front.patches);
+    CHECK(on_first_use.vertices == up_front.vertices);
+    CHECK(on_first_use.indices == up_front.indices);
+    CHECK(compare(run_cpu(rt::cp_tables_64, c.scene), on_first_use).equal());
+    // A shader folder without the displaced quad pass: refused when the runner is made, not in a later run.
+    const auto dir = std::filesystem::temp_directory_path() / "ctess_test_missing_pass";
+    std::filesystem::remove_all(dir);
+    std::filesystem::copy(CTESS_SHADER_DIR, dir);
+    std::filesystem::remove(dir / "ctess_mesh_64_emit_displaced_quad_vertices.spv");
+    for (const auto creation :
+         {vulkan::MeshPipeline::Creation::all_now, vulkan::MeshPipeline::Creation::on_first_use})
+        CHECK_THROWS_WITH(vulkan::Runner(dir.string(), 64, creation),
+                          Catch::Contains("ctess_mesh_64_emit_displaced_quad_vertices.spv"));
+    std::filesystem::remove_all(dir);
 }
 
 #if defined(CTESS_GPU_HAVE_MODELS)

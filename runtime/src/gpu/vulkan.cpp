@@ -413,11 +413,9 @@ struct Runner::Device {
     }
 };
 
-Runner::Runner(const std::string& shader_dir, unsigned max_factor)
+Runner::Runner(const std::string& shader_dir, unsigned max_factor, MeshPipeline::Creation creation)
     : device_(std::make_unique<Device>()), shader_dir_(shader_dir), max_factor_(max_factor) {
-    // On demand: a run creates only the passes its mesh and params use (docs/shaders.md, "Hosts").
-    device_->pipeline = std::make_unique<MeshPipeline>(device_->device, shader_dir, max_factor,
-                                                       MeshPipeline::Creation::on_first_use);
+    device_->pipeline = std::make_unique<MeshPipeline>(device_->device, shader_dir, max_factor, creation);
 }
 
 Runner::~Runner() = default;

@@ -15,8 +15,8 @@
 //
 // Runner is the whole round trip on host-visible buffers, for tools and tests (tests/gpu, the consumer
 // example in docs/shaders.md): its own instance and device (the loader's first device with a compute queue;
-// lavapipe where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back; it creates
-// each emit pass on its first use (MeshPipeline::Creation::on_first_use).
+// lavapipe where VK_DRIVER_FILES names it), counts, then outputs sized from the totals, read back; by default
+// it creates each emit pass on its first use (MeshPipeline::Creation::on_first_use).
 //
 //   ctess::vulkan::Runner gpu(ctess_shader_dir, 64);
 //   const ctess::vulkan::Output out = gpu.tessellate(mesh, options);   // out.vertices, out.indices
@@ -131,7 +131,9 @@ struct RunOptions {
 
 class Runner {
   public:
-    Runner(const std::string& shader_dir, unsigned max_factor);
+    // creation: on first use by default, so a run creates only the passes its mesh and params use.
+    Runner(const std::string& shader_dir, unsigned max_factor,
+           MeshPipeline::Creation creation = MeshPipeline::Creation::on_first_use);
     ~Runner();
     Runner(const Runner&) = delete;
     Runner& operator=(const Runner&) = delete;
