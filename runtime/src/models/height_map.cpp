@@ -31,7 +31,8 @@ struct StbFree {
     void operator()(T* p) const { stbi_image_free(p); }
 };
 
-HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& name) {
+// wanted: 1 (a height map: the first channel) or 3 (a vector map: red, green, blue; docs/models.md).
+HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& name, unsigned wanted) {
     HeightMapResult result;
     auto fail = [&](const std::string& problem) {
         result.error.message = name + ": " + problem;
@@ -66,21 +67,29 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
                                            h < 0 ? 0 : static_cast<std::uint64_t>(h));
         !problem.empty())
         return fail(problem);
+    // A vector map needs three colour channels: grey (1) or grey + alpha (2) would give no x and y.
+    if (wanted == 3 && channels < 3)
+        return fail("the image has " + std::to_string(channels) + (channels == 1 ? " channel" : " channels") +
+                    " (grey); a vector displacement map needs red, green and blue");
     HeightImage image;
+    image.channels = wanted;
     image.width = static_cast<std::uint32_t>(w);
     image.height = static_cast<std::uint32_t>(h);
     const std::size_t count = std::size_t{image.width} * image.height;
     int decoded_w = 0, decoded_h = 0, decoded_channels = 0;
-    // The first channel of what stb_image decoded, divided by the format's largest value (1 for .hdr floats).
+    // The first `wanted` channels of what stb_image decoded, divided by the format's largest value (1 for
+    // .hdr floats).
     bool decoded = false;
     const auto first_channel = [&](auto* raw, float divisor) {
         using T = std::remove_pointer_t<decltype(raw)>;
         const std::unique_ptr<T, StbFree<T>> data(raw);
-        if (!data || decoded_w != w || decoded_h != h || decoded_channels <= 0) return;
-        image.texels.resize(count);
+        if (!data || decoded_w != w || decoded_h != h || decoded_channels < static_cast<int>(wanted)) return;
+        image.texels.resize(count * wanted);
         for (std::size_t i = 0; i < count; ++i)
-            image.texels[i] =
-                static_cast<float>(data.get()[i * static_cast<std::size_t>(decoded_channels)]) / divisor;
+            for (std::size_t c = 0; c < wanted; ++c)
+                image.texels[i * wanted + c] =
+                    static_cast<float>(data.get()[i * static_cast<std::size_t>(decoded_channels) + c]) /
+                    divisor;
         decoded = true;
     };
     if (stbi_is_hdr_from_memory(bytes.data(), length))
@@ -99,19 +108,36 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
     return result;
 }
 
-} // namespace
-
-HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
-    return detail::guarded_load<HeightMapResult>(name, [&] { return decode(bytes, name); });
+HeightMapResult load_from_memory(std::span<const std::uint8_t> bytes, const std::string& name,
+                                 unsigned wanted) {
+    return detail::guarded_load<HeightMapResult>(name, [&] { return decode(bytes, name, wanted); });
 }
 
-HeightMapResult load_height_map(const std::string& path) {
+HeightMapResult load_file(const std::string& path, unsigned wanted) {
     return detail::guarded_load<HeightMapResult>(path, [&] {
         HeightMapResult result;
         std::vector<std::uint8_t> bytes;
         result.error.message = detail::read_file_bytes(path, max_height_file_bytes, "1 GiB", bytes);
-        return result.error.message.empty() ? decode(bytes, path) : result;
+        return result.error.message.empty() ? decode(bytes, path, wanted) : result;
     });
+}
+
+} // namespace
+
+HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
+    return load_from_memory(bytes, name, 1);
+}
+
+HeightMapResult load_height_map(const std::string& path) {
+    return load_file(path, 1);
+}
+
+HeightMapResult load_vector_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
+    return load_from_memory(bytes, name, 3);
+}
+
+HeightMapResult load_vector_map(const std::string& path) {
+    return load_file(path, 3);
 }
 
 } // namespace ctess::models
