@@ -227,6 +227,7 @@ TEST_CASE("ctess mesh --displace-vector: an RGB tangent-space map keeps the cube
             const nlohmann::json s = stats(common);
             CHECK(s["output_open_edges"] == 0);
             CHECK(s["displacement"]["mode"] == "vector");
+            CHECK(s["displacement"]["tangents"] == "uv"); // an OBJ has no TANGENT
             CHECK(s["displacement"]["channels"] == 3);
             CHECK(s["displacement"]["width"] == 16);
             // The longest texel vector, 0.1 * |texel - 0.5|, at most 0.1 * sqrt(3) / 2.
@@ -243,6 +244,7 @@ TEST_CASE("ctess mesh --displace-vector: an RGB tangent-space map keeps the cube
     write_file(grey, png(4, 4, [](int x, int) { return static_cast<std::uint8_t>(x * 60); }));
     const nlohmann::json scalar = stats("--in " + in + " --factor 2 --displace " + grey);
     CHECK(scalar["displacement"]["mode"] == "scalar");
+    CHECK(scalar["displacement"]["tangents"] == "none");
     CHECK(scalar["displacement"]["channels"] == 1);
     // It moves the surface, differently from the scalar map of its red channel.
     const std::string plain = scratch("vector_plain.obj"), moved = scratch("vector_moved.obj");

@@ -485,3 +485,91 @@ TEST_CASE("load_vector_map: RGB and RGBA keep red, green, blue; grey is an error
     CHECK_FALSE(missing.ok());
     CHECK(missing.error.message.find("/nonexistent/ctess/vector.png") != std::string::npos);
 }
+
+namespace {
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t n = std::uint32_t{bytes[i]} << 16;
+        if (i + 1 < bytes.size()) n |= std::uint32_t{bytes[i + 1]} << 8;
+        if (i + 2 < bytes.size()) n |= bytes[i + 2];
+        out += digits[(n >> 18) & 63];
+        out += digits[(n >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(n >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[n & 63] : '=';
+    }
+    return out;
+}
+
+// A .gltf of the right triangle (0,0,0), (1,0,0), (0,1,0), normal +z, uv = xy, TANGENT (0, 1, 0, 1) (a frame
+// uv_tangents would not give: it would say +x), under `node` (its JSON); with a second primitive without
+// TANGENT when `second` is set.
+models::LoadResult tangent_gltf(const std::string& node, bool second) {
+    const float data[] = {0, 0, 0, 1, 0, 0, 0, 1, 0,           // POSITION
+                          0, 0, 1, 0, 0, 1, 0, 0, 1,           // NORMAL
+                          0, 0, 1, 0, 0, 1,                    // TEXCOORD_0
+                          0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1}; // TANGENT
+    std::vector<std::uint8_t> bytes(sizeof data);
+    std::memcpy(bytes.data(), data, sizeof data);
+    const std::string attributes = R"("POSITION":0,"NORMAL":1,"TEXCOORD_0":2)";
+    const std::string json =
+        R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":144,"uri":"data:application/octet-stream;base64,)" +
+        base64(bytes) +
+        R"("}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":36},)"
+        R"({"buffer":0,"byteOffset":72,"byteLength":24},{"buffer":0,"byteOffset":96,"byteLength":48}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},)"
+        R"({"bufferView":1,"componentType":5126,"count":3,"type":"VEC3"},)"
+        R"({"bufferView":2,"componentType":5126,"count":3,"type":"VEC2"},)"
+        R"({"bufferView":3,"componentType":5126,"count":3,"type":"VEC4"}],)"
+        R"("meshes":[{"primitives":[{"attributes":{)" +
+        attributes + R"(,"TANGENT":3}})" +
+        (second ? R"(,{"attributes":{)" + attributes + "}}" : std::string()) + R"(]}],"nodes":[)" + node +
+        R"(],"scenes":[{"nodes":[0]}],"scene":0})";
+    return models::load_model_from_memory(
+        std::span(reinterpret_cast<const std::uint8_t*>(json.data()), json.size()),
+        models::ModelKind::gltf_text, "tangents.gltf");
+}
+
+} // namespace
+
+TEST_CASE("glTF TANGENT: read, transformed, and used as the vector displacement's frame (§8.7)") {
+    const models::LoadResult plain = tangent_gltf(R"({"mesh":0})", false);
+    INFO(plain.error.message);
+    REQUIRE(plain.ok());
+    const models::Model& m = *plain.model;
+    REQUIRE(m.has_tangents);
+    CHECK(m.tangents == std::vector<float>{0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1});
+    // A mirroring node (x -> -x): the tangent (0, 1, 0) stays, the handedness flips.
+    const models::LoadResult mirrored = tangent_gltf(R"({"mesh":0,"scale":[-1,1,1]})", false);
+    REQUIRE(mirrored.ok());
+    CHECK(mirrored.model->tangents == std::vector<float>{0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1});
+    // A primitive without TANGENT: none kept (as has_normals).
+    const models::LoadResult mixed = tangent_gltf(R"({"mesh":0})", true);
+    REQUIRE(mixed.ok());
+    CHECK_FALSE(mixed.model->has_tangents);
+    CHECK(mixed.model->tangents.empty());
+    // The file's frame: T = +y, B = cross(N, T) = -x; the vector (0.75, 0.5, 1.25) moves by (-0.5,
+    // 0.75, 1.25).
+    const float texel[3] = {0.5f, 0.25f, 1.0f};
+    rt::Displacement d;
+    d.mode = rt::DisplacementMode::vector;
+    d.map = {texel, 1, 1, rt::AddressMode::clamp, 3};
+    d.scale = 0.5f;
+    d.factor = 2.0f;
+    d.offset = 0.5f;
+    d.tangents = m.tangents.data();
+    const rt::MeshView mesh = view_of(m, nullptr);
+    rt::PipelineOptions options = constant_factor(4.5f, rt::Surface::flat);
+    const Output base = unwelded(mesh, options);
+    options.displacement = &d;
+    const Output moved = unwelded(mesh, options);
+    REQUIRE(moved.vertices.size() == base.vertices.size());
+    std::size_t exact = 0;
+    for (std::size_t i = 0; i < moved.vertices.size(); ++i)
+        exact += moved.vertices[i].position[0] == base.vertices[i].position[0] - 0.5f &&
+                 moved.vertices[i].position[1] == base.vertices[i].position[1] + 0.75f &&
+                 moved.vertices[i].position[2] == 1.25f;
+    CHECK(exact == moved.vertices.size());
+}

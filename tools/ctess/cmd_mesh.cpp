@@ -298,6 +298,7 @@ int run_mesh(int argc, char** argv) {
     // Displacement (docs/algorithm.md §8): the height map, one direction per position, the options.
     models::HeightImage height_image;
     std::vector<float> directions, tangents;
+    std::string tangent_source = "none"; // --stats: vector mode's frame from the model's TANGENT or the uvs
     rt::Displacement displacement;
     if (displace.on) {
         start = Clock::now();
@@ -316,10 +317,17 @@ int run_mesh(int argc, char** argv) {
             displace.has_offset || !displace.from_gltf ? displace.offset : model.displacement.offset;
         displacement.directions = directions.data();
         if (displace.vector) {
-            // One frame per position, from the dominant vertex's uv tangent (docs/algorithm.md §8.7).
-            tangents.resize(4 * model.vertex_count());
-            if (!rt::uv_tangents(view, tangents))
-                throw std::runtime_error(in + ": cannot compute the displacement tangents");
+            // One frame per position, from the dominant vertex's tangent (docs/algorithm.md §8.7): the
+            // model's own (glTF TANGENT) when every primitive has them, else from the uv gradients.
+            if (model.has_tangents && model.tangents.size() == 4 * model.vertex_count()) {
+                tangents = model.tangents;
+                tangent_source = "model";
+            } else {
+                tangents.resize(4 * model.vertex_count());
+                if (!rt::uv_tangents(view, tangents))
+                    throw std::runtime_error(in + ": cannot compute the displacement tangents");
+                tangent_source = "uv";
+            }
             displacement.mode = rt::DisplacementMode::vector;
             displacement.tangents = tangents.data();
         }
@@ -391,11 +399,12 @@ int run_mesh(int argc, char** argv) {
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
         if (displace.on)
-            text += fmt::format("  \"displacement\": {{\"mode\": \"{}\", \"channels\": {}, \"width\": {}, "
-                                "\"height\": {}, \"bound\": {}, \"factor_bound\": {}}},\n",
-                                displace.vector ? "vector" : "scalar", height_image.channels,
-                                height_image.width, height_image.height, rt::displacement_bound(displacement),
-                                displacement.factor_bound);
+            text +=
+                fmt::format("  \"displacement\": {{\"mode\": \"{}\", \"tangents\": \"{}\", \"channels\": {}, "
+                            "\"width\": {}, \"height\": {}, \"bound\": {}, \"factor_bound\": {}}},\n",
+                            displace.vector ? "vector" : "scalar", tangent_source, height_image.channels,
+                            height_image.width, height_image.height, rt::displacement_bound(displacement),
+                            displacement.factor_bound);
         if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
             text +=
                 fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "
