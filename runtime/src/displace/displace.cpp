@@ -396,8 +396,7 @@ DisplacementPatch displacement_patch(const Displacement& d, const MeshView& mesh
         patch.corner_uv[k][1] = vertex_data(mesh, dom)[7];
         patch.direction[k] = vertex_direction(d, mesh, dom);
         if (d.mode == DisplacementMode::vector && d.tangents != nullptr) {
-            // The dominant vertex's frame (§8.7): its tangent made orthogonal to the direction, B = N x T *
-            // w.
+            // The dominant vertex's frame (§8.7): T made orthogonal to the direction N, B = cross(N, T) w.
             const float* t = d.tangents + 4 * std::size_t{dom};
             const Vec3 nd = patch.direction[k];
             const Vec3 raw{t[0], t[1], t[2]};
