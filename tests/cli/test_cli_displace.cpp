@@ -281,3 +281,57 @@ TEST_CASE("ctess mesh --displace-vector: grey maps, models without uvs and bad c
     };
     ctess::test::check_refused(cases, out);
 }
+
+TEST_CASE("ctess mesh --displace-vector: a glTF's own TANGENT is the frame (--stats says so)",
+          "[cli][mesh][displace]") {
+    // One flat triangle (normal +z, uv = xy) with TANGENT (0, 1, 0, 1): T = +y, B = cross(N, T) = -x, where
+    // tangents from the uvs would say T = +x. A one-texel RGB map (255, 0, 255) at scale 0.5: the vector
+    // (0.5, 0, 0.5) moves every point by 0.5 T + 0.5 N = (0, 0.5, 0.5).
+    std::string buffer;
+    const float data[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1,
+                          0, 0, 1, 0, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1};
+    buffer.assign(reinterpret_cast<const char*>(data), sizeof data);
+    const std::string gltf =
+        R"({"asset": {"version": "2.0"},
+  "buffers": [{"byteLength": 144, "uri": "data:application/octet-stream;base64,)" +
+        base64(buffer) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 72, "byteLength": 24}, {"buffer": 0, "byteOffset": 96, "byteLength": 48}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"},
+                {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC4"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TANGENT": 3}}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+    const std::string in = scratch("tangents.gltf"), map = scratch("magenta.png");
+    write_file(in, gltf);
+    write_file(map,
+               rgb_png(1, 1, [](int, int, int c) { return static_cast<std::uint8_t>(c == 1 ? 0 : 255); }));
+    const std::string args = "--in " + in + " --factor 4 --displace-vector " + map + " --displace-scale 0.5";
+    const nlohmann::json s = stats(args);
+    CHECK(s["displacement"]["tangents"] == "model");
+    const std::string plain = scratch("tangents_plain.obj"), moved = scratch("tangents_moved.obj");
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 4 --out " + plain).exit_code == 0);
+    REQUIRE(ctess_cli("mesh " + args + " --out " + moved).exit_code == 0);
+    // x, y, z of every OBJ vertex, in order.
+    auto positions = [](const std::string& path) {
+        std::istringstream text(read_file(path));
+        std::vector<double> p;
+        std::string line;
+        while (std::getline(text, line))
+            if (line.rfind("v ", 0) == 0) {
+                double x, y, z;
+                std::istringstream(line.substr(2)) >> x >> y >> z;
+                p.insert(p.end(), {x, y, z});
+            }
+        return p;
+    };
+    const std::vector<double> a = positions(plain), b = positions(moved);
+    REQUIRE(a.size() == b.size());
+    REQUIRE(a.size() > 30);
+    for (std::size_t i = 0; i < a.size(); i += 3) {
+        CHECK(std::fabs(b[i] - a[i]) <= 1e-6);
+        CHECK(std::fabs(b[i + 1] - a[i + 1] - 0.5) <= 1e-6);
+        CHECK(std::fabs(b[i + 2] - 0.5) <= 1e-6);
+    }
+}
