@@ -194,3 +194,144 @@ TEST_CASE("ctess mesh --displace: bad images and options are a clear error and w
     };
     ctess::test::check_refused(cases, out);
 }
+
+namespace {
+
+// An RGB PNG of w x h texels from a function of the texel giving its three channels.
+template <class F>
+std::string rgb_png(int w, int h, F texel) {
+    std::vector<std::uint8_t> t;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) t.push_back(texel(x, y, c));
+    std::string out;
+    REQUIRE(stbi_write_png_to_func(&append_bytes, &out, w, h, 3, t.data(), 3 * w) != 0);
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("ctess mesh --displace-vector: an RGB tangent-space map keeps the cube closed; --stats reports it",
+          "[cli][mesh][displace]") {
+    const std::string in = scratch("cube_vector.obj");
+    write_file(in, mixed_cube_obj());
+    const std::string map = scratch("vector.png");
+    write_file(map, rgb_png(16, 16, [](int x, int y, int c) {
+                   return static_cast<std::uint8_t>((x * 37 + y * 91 + c * 101) % 256);
+               }));
+    for (const char* surface : {"flat", "pn-aen"})
+        for (const char* pattern : {"cp", "uniform", "d3d11-even"}) {
+            const std::string common = std::string("--in ") + in + " --factor 5 --surface " + surface +
+                                       " --pattern " + pattern + " --displace-vector " + map +
+                                       " --displace-scale 0.1 --displace-offset -0.5";
+            const nlohmann::json s = stats(common);
+            CHECK(s["output_open_edges"] == 0);
+            CHECK(s["displacement"]["mode"] == "vector");
+            CHECK(s["displacement"]["tangents"] == "uv"); // an OBJ has no TANGENT
+            CHECK(s["displacement"]["channels"] == 3);
+            CHECK(s["displacement"]["width"] == 16);
+            // The longest texel vector, 0.1 * |texel - 0.5|, at most 0.1 * sqrt(3) / 2.
+            const double bound = s["displacement"]["bound"].get<double>();
+            CHECK(bound > 0.05);
+            CHECK(bound <= 0.1 * std::sqrt(3.0) / 2.0 + 1e-6);
+            const nlohmann::json grown = stats(common + " --displace-grow");
+            CHECK(grown["output_open_edges"] == 0);
+            CHECK(grown["displacement"]["factor_bound"] == grown["displacement"]["bound"]);
+            CHECK(grown["output_triangles"].get<long>() >= s["output_triangles"].get<long>());
+        }
+    // The scalar mode reports its own mode and one channel.
+    const std::string grey = scratch("grey_for_mode.png");
+    write_file(grey, png(4, 4, [](int x, int) { return static_cast<std::uint8_t>(x * 60); }));
+    const nlohmann::json scalar = stats("--in " + in + " --factor 2 --displace " + grey);
+    CHECK(scalar["displacement"]["mode"] == "scalar");
+    CHECK(scalar["displacement"]["tangents"] == "none");
+    CHECK(scalar["displacement"]["channels"] == 1);
+    // It moves the surface, differently from the scalar map of its red channel.
+    const std::string plain = scratch("vector_plain.obj"), moved = scratch("vector_moved.obj");
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 3 --out " + plain).exit_code == 0);
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 3 --displace-vector " + map +
+                      " --displace-scale 0.1 --displace-offset -0.5 --out " + moved)
+                .exit_code == 0);
+    CHECK(obj_z(plain).size() == obj_z(moved).size());
+    CHECK(obj_z(plain) != obj_z(moved));
+}
+
+TEST_CASE("ctess mesh --displace-vector: grey maps, models without uvs and bad combinations are errors",
+          "[cli][mesh][displace][bad_input]") {
+    const std::string out = scratch("never_vector.obj");
+    std::filesystem::remove(out);
+    const std::string cube = scratch("cube_vector_errors.obj");
+    write_file(cube, mixed_cube_obj());
+    const std::string grey = scratch("grey_vector.png"), rgb = scratch("rgb_vector.png");
+    write_file(grey, png(4, 4, [](int x, int) { return static_cast<std::uint8_t>(x * 60); }));
+    write_file(rgb, rgb_png(4, 4, [](int x, int, int c) { return static_cast<std::uint8_t>(x * 60 + c); }));
+    // A triangle without texture coordinates: no tangent frame.
+    const std::string no_uv = scratch("no_uv.obj");
+    write_file(no_uv, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string base = "--in " + cube + " --factor 3 --out " + out;
+    const std::vector<ctess::test::RefusedCase> cases = {
+        {base + " --displace-vector " + grey, 1, "a vector displacement map needs red, green and blue"},
+        {base + " --displace-vector /nonexistent/vector.png", 1, "/nonexistent/vector.png: no such file"},
+        {"--in " + no_uv + " --factor 3 --out " + out + " --displace-vector " + rgb, 1,
+         "no texture coordinates"},
+        {base + " --displace " + grey + " --displace-vector " + rgb, 2, "one of --displace"},
+        {base + " --displace-gltf --displace-vector " + rgb, 2, "one of --displace"},
+        {base + " --displace-vector " + rgb + " --displace-scale nan", 2, "--displace-scale"},
+        {base + " --displace-vector=", 2, "--displace-vector"},
+    };
+    ctess::test::check_refused(cases, out);
+}
+
+TEST_CASE("ctess mesh --displace-vector: a glTF's own TANGENT is the frame (--stats says so)",
+          "[cli][mesh][displace]") {
+    // One flat triangle (normal +z, uv = xy) with TANGENT (0, 1, 0, 1): T = +y, B = cross(N, T) = -x, where
+    // tangents from the uvs would say T = +x. A one-texel RGB map (255, 0, 255) at scale 0.5: the vector
+    // (0.5, 0, 0.5) moves every point by 0.5 T + 0.5 N = (0, 0.5, 0.5).
+    std::string buffer;
+    const float data[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1,
+                          0, 0, 1, 0, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1};
+    buffer.assign(reinterpret_cast<const char*>(data), sizeof data);
+    const std::string gltf =
+        R"({"asset": {"version": "2.0"},
+  "buffers": [{"byteLength": 144, "uri": "data:application/octet-stream;base64,)" +
+        base64(buffer) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 72, "byteLength": 24}, {"buffer": 0, "byteOffset": 96, "byteLength": 48}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"},
+                {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC4"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TANGENT": 3}}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+    const std::string in = scratch("tangents.gltf"), map = scratch("magenta.png");
+    write_file(in, gltf);
+    write_file(map,
+               rgb_png(1, 1, [](int, int, int c) { return static_cast<std::uint8_t>(c == 1 ? 0 : 255); }));
+    const std::string args = "--in " + in + " --factor 4 --displace-vector " + map + " --displace-scale 0.5";
+    const nlohmann::json s = stats(args);
+    CHECK(s["displacement"]["tangents"] == "model");
+    const std::string plain = scratch("tangents_plain.obj"), moved = scratch("tangents_moved.obj");
+    REQUIRE(ctess_cli("mesh --in " + in + " --factor 4 --out " + plain).exit_code == 0);
+    REQUIRE(ctess_cli("mesh " + args + " --out " + moved).exit_code == 0);
+    // x, y, z of every OBJ vertex, in order.
+    auto positions = [](const std::string& path) {
+        std::istringstream text(read_file(path));
+        std::vector<double> p;
+        std::string line;
+        while (std::getline(text, line))
+            if (line.rfind("v ", 0) == 0) {
+                double x, y, z;
+                std::istringstream(line.substr(2)) >> x >> y >> z;
+                p.insert(p.end(), {x, y, z});
+            }
+        return p;
+    };
+    const std::vector<double> a = positions(plain), b = positions(moved);
+    REQUIRE(a.size() == b.size());
+    REQUIRE(a.size() > 30);
+    for (std::size_t i = 0; i < a.size(); i += 3) {
+        CHECK(std::fabs(b[i] - a[i]) <= 1e-6);
+        CHECK(std::fabs(b[i + 1] - a[i + 1] - 0.5) <= 1e-6);
+        CHECK(std::fabs(b[i + 2] - 0.5) <= 1e-6);
+    }
+}

@@ -1,8 +1,9 @@
 // OpenEXR height maps (docs/models.md "Height maps"): images written here with OpenEXR's own writer (scan
 // lines and tiles, half and float, several compressions, a data window off the origin) must load with exactly
 // the texels written; the channel rule (R, else Y, else the first); and bad files: every truncated prefix, a
-// 65536 x 65536 or empty data window, an attribute claiming more bytes than the file has, non-finite texels,
-// deep or multi-part flags. Each gives an error naming the input and no image.
+// 65536 x 65536 or empty data window, an attribute claiming more bytes than the file has, too many samples,
+// tiles or chunks, non-finite texels, deep or multi-part flags. Each gives an error naming the input and no
+// image.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -153,6 +154,43 @@ TEST_CASE("load_height_map: the OpenEXR channel is R, else Y, else the file's fi
     CHECK(texels_of(write_exr(3, 2, {{"height", Imf::FLOAT, c}, {"mask", Imf::FLOAT, a}})) == c);
 }
 
+TEST_CASE(
+    "load_vector_map: an OpenEXR vector map is its R, G and B, interleaved; without all three, an error") {
+    const int w = 5, h = 3;
+    const std::vector<float> r = eighths(w * h, 1), g = eighths(w * h, 9), b = eighths(w * h, 17);
+    for (const bool tiled : {false, true}) {
+        INFO("tiled " << tiled);
+        const auto file = write_exr(
+            w, h, {{"A", Imf::HALF, g}, {"B", Imf::FLOAT, b}, {"G", Imf::HALF, g}, {"R", Imf::HALF, r}}, 2,
+            -1, Imf::PIZ_COMPRESSION, tiled);
+        const auto result = models::load_vector_map_from_memory(file, "vector.exr");
+        INFO(result.error.message);
+        REQUIRE(result.ok());
+        CHECK(result.image->channels == 3);
+        REQUIRE(result.image->texels.size() == 3u * w * h);
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            CHECK(result.image->texels[3 * i] == r[i]);
+            CHECK(result.image->texels[3 * i + 1] == g[i]);
+            CHECK(result.image->texels[3 * i + 2] == b[i]);
+        }
+        // As a height map the same file is its R channel.
+        const auto height = models::load_height_map_from_memory(file, "vector.exr");
+        REQUIRE(height.ok());
+        CHECK(height.image->texels == r);
+    }
+    const auto grey = models::load_vector_map_from_memory(write_exr(w, h, {{"Y", Imf::HALF, r}}), "grey.exr");
+    CHECK_FALSE(grey.ok());
+    CHECK(grey.error.message ==
+          "grey.exr: the OpenEXR image has no R, G and B channels; a vector displacement "
+          "map needs them");
+    auto nan = b;
+    nan[7] = std::numeric_limits<float>::quiet_NaN();
+    const auto bad = models::load_vector_map_from_memory(
+        write_exr(w, h, {{"B", Imf::FLOAT, nan}, {"G", Imf::FLOAT, g}, {"R", Imf::FLOAT, r}}), "nan.exr");
+    CHECK_FALSE(bad.ok());
+    CHECK(bad.error.message == "nan.exr: the OpenEXR texel (2, 1) is not finite");
+}
+
 TEST_CASE("load_height_map: an OpenEXR file from disk, by path") {
     const auto dir = std::filesystem::temp_directory_path() / "ctess_test_height_exr";
     std::filesystem::create_directories(dir);
@@ -191,7 +229,7 @@ TEST_CASE("load_height_map: bad OpenEXR files give an error naming the input and
                 CHECK(result.error.message.rfind("bad.exr: ", 0) == 0);
         }
     }
-    SECTION("a 65536 x 65536 data window is refused from the header, before OpenEXR allocates") {
+    SECTION("a 65536 x 65536 data window is refused after the header, before any chunk is read") {
         auto file = good;
         const std::size_t at = attribute_value(file, "dataWindow", "box2i");
         put_le32(file, at + 8, 65535);
@@ -205,7 +243,7 @@ TEST_CASE("load_height_map: bad OpenEXR files give an error naming the input and
         put_le32(file, at + 12, 4095);
         refused(file, "16384 x 4096 texels of 2 channels, past the limit of 2^26 samples");
     }
-    SECTION("tiles too large or too many: refused before OpenEXR sizes its buffers") {
+    SECTION("tiles too large or too many: refused before any chunk is read") {
         const auto tiled = write_exr(7, 5, {{"R", Imf::HALF, red}}, 0, 0, Imf::ZIP_COMPRESSION, true);
         REQUIRE(models::load_height_map_from_memory(tiled).ok());
         auto huge_tile = tiled;
@@ -215,18 +253,18 @@ TEST_CASE("load_height_map: bad OpenEXR files give an error naming the input and
         const std::size_t at = attribute_value(many_tiles, "dataWindow", "box2i");
         put_le32(many_tiles, at + 8, 16383);
         put_le32(many_tiles, at + 12, 4095);
-        refused(many_tiles, "the OpenEXR tiles are 4 x 4, outside the limits");
+        refused(many_tiles, "the OpenEXR image has 4194304 chunks, past the limit of 2^20");
     }
     SECTION("an empty data window (max below min)") {
         auto file = good;
         const std::size_t at = attribute_value(file, "dataWindow", "box2i");
         put_le32(file, at + 8, -1);
-        refused(file, "the image is empty");
+        refused(file, "OpenEXR cannot read the header (Invalid data window");
     }
     SECTION("an attribute claiming more bytes than the file holds") {
         auto file = good;
         put_le32(file, attribute_value(file, "compression", "compression") - 4, 0x7fffff00);
-        refused(file, "claims 2147483392 bytes, past the end of the file");
+        refused(file, "OpenEXR cannot");
     }
     SECTION("non-finite texels") {
         for (const float bad :
@@ -240,13 +278,13 @@ TEST_CASE("load_height_map: bad OpenEXR files give an error naming the input and
         for (const std::uint8_t flag : {std::uint8_t{0x08}, std::uint8_t{0x10}}) {
             auto file = good;
             file[5] = static_cast<std::uint8_t>(file[5] | flag);
-            refused(file, "deep or multi-part");
+            refused(file, "OpenEXR cannot read the header");
         }
         auto file = good;
         file[4] = 3;
-        refused(file, "OpenEXR version 3");
+        refused(file, "OpenEXR cannot read the header (File is of an unsupported version");
     }
     SECTION("the magic alone") {
-        refused({0x76, 0x2f, 0x31, 0x01}, "truncated OpenEXR file");
+        refused({0x76, 0x2f, 0x31, 0x01}, "OpenEXR cannot read the header");
     }
 }

@@ -767,6 +767,20 @@ TEST_CASE(
     CHECK_THROWS_AS(gpu.tessellate(scene.view(), options), vulkan::Error);
     CHECK_THROWS_WITH(gpu.tessellate(scene.view(), pipeline_params(scene), {}, &function),
                       Catch::Contains("HeightFunction"));
+    // Vector displacement is CPU only (docs/algorithm.md §8.7): refused by the options check and by the
+    // params overload, before anything is uploaded.
+    std::vector<float> tangents(4 * std::size_t{scene.view().vertex_count}, 0.0f);
+    const float rgb[3] = {0.5f, 0.5f, 0.5f};
+    rt::Displacement vector = data->d;
+    vector.mode = rt::DisplacementMode::vector;
+    vector.map = {rgb, 1, 1, rt::AddressMode::repeat, 3};
+    vector.tangents = tangents.data();
+    REQUIRE(rt::displacement_valid(vector));
+    options.displacement = &vector;
+    CHECK(rt::gpu::gpu_options_status(scene.view(), options) == rt::PipelineStatus::bad_option);
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), options), Catch::Contains("not vector displacement"));
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), pipeline_params(scene), {}, &vector),
+                      Catch::Contains("vector displacement"));
     // Params whose width x height is not the map's texel count.
     auto params = pipeline_params(scene);
     params[rt::gpu::param_word::height_map_width] += 1;

@@ -105,11 +105,11 @@ float finite_option(const Args& args, const std::string& key, float fallback) {
     return f;
 }
 
-// The displacement options (docs/cli.md, "Models"): --displace FILE or --displace-gltf, with
-// --displace-scale,
-// --displace-offset, --displace-address and --displace-grow. Checked before anything is loaded.
+// The displacement options (docs/cli.md, "Models"): --displace FILE, --displace-gltf or --displace-vector
+// FILE (an RGB tangent-space map, docs/algorithm.md §8.7), with --displace-scale, --displace-offset,
+// --displace-address and --displace-grow. Checked before anything is loaded.
 struct DisplaceRequest {
-    bool on = false, from_gltf = false, grow = false;
+    bool on = false, from_gltf = false, vector = false, grow = false;
     std::string file;
     float scale = 1.0f;
     bool has_offset = false;
@@ -119,18 +119,22 @@ struct DisplaceRequest {
 
 DisplaceRequest displace_request_from(const Args& args) {
     DisplaceRequest r;
-    if (args.has("displace") && args.has("displace-gltf"))
-        throw UsageError("give one of --displace FILE and --displace-gltf");
-    r.on = args.has("displace") || args.has("displace-gltf");
+    const int sources =
+        int{args.has("displace")} + int{args.has("displace-gltf")} + int{args.has("displace-vector")};
+    if (sources > 1)
+        throw UsageError("give one of --displace FILE, --displace-gltf and --displace-vector FILE");
+    r.on = sources == 1;
     const bool details = args.has("displace-scale") || args.has("displace-offset") ||
                          args.has("displace-address") || args.has("displace-grow");
     if (details && !r.on)
         throw UsageError(
             "--displace-scale, --displace-offset, --displace-address and --displace-grow go with "
-            "--displace FILE or --displace-gltf");
+            "--displace FILE, --displace-gltf or --displace-vector FILE");
     r.from_gltf = args.has("displace-gltf");
-    r.file = args.get_or("displace", "");
+    r.vector = args.has("displace-vector");
+    r.file = r.vector ? args.get_or("displace-vector", "") : args.get_or("displace", "");
     if (args.has("displace") && r.file.empty()) throw UsageError("--displace needs a height map file");
+    if (r.vector && r.file.empty()) throw UsageError("--displace-vector needs an RGB vector map file");
     r.scale = finite_option(args, "displace-scale", 1.0f);
     r.has_offset = args.has("displace-offset");
     r.offset = finite_option(args, "displace-offset", 0.0f);
@@ -147,7 +151,9 @@ DisplaceRequest displace_request_from(const Args& args) {
 models::HeightImage load_displacement_image(const DisplaceRequest& r, const std::string& in,
                                             const models::Model& model) {
     models::HeightMapResult image;
-    if (!r.from_gltf) {
+    if (r.vector) {
+        image = models::load_vector_map(r.file);
+    } else if (!r.from_gltf) {
         image = models::load_height_map(r.file);
     } else {
         const models::Model::Displacement& d = model.displacement;
@@ -225,7 +231,7 @@ int run_mesh(int argc, char** argv) {
     const Args args(argc, argv, 2,
                     {"in", "out", "pattern", "max", "factor", "edge-length", "dice-rate", "camera", "fov",
                      "resolution", "surface", "quad-rule", "max-triangles", "displace", "displace-scale",
-                     "displace-offset", "displace-address"},
+                     "displace-offset", "displace-address", "displace-vector"},
                     {"stats", "keep-degenerate", "displace-gltf", "displace-grow"});
     const std::string in = args.get("in");
     const std::string out = args.get_or("out", "");
@@ -291,10 +297,15 @@ int run_mesh(int argc, char** argv) {
 
     // Displacement (docs/algorithm.md §8): the height map, one direction per position, the options.
     models::HeightImage height_image;
-    std::vector<float> directions;
+    std::vector<float> directions, tangents;
+    std::string tangent_source = "none"; // --stats: vector mode's frame from the model's TANGENT or the uvs
     rt::Displacement displacement;
     if (displace.on) {
         start = Clock::now();
+        // Tangent space needs uvs: without them every tangent would be zero and x, y would be lost.
+        if (displace.vector && !model.has_uvs)
+            throw std::runtime_error(in + ": --displace-vector: the model has no texture coordinates (the "
+                                          "tangent frame comes from their gradients)");
         height_image = load_displacement_image(displace, in, model);
         directions.resize(3 * model.vertex_count());
         if (!rt::welded_directions(view, directions))
@@ -305,6 +316,21 @@ int run_mesh(int argc, char** argv) {
         displacement.offset =
             displace.has_offset || !displace.from_gltf ? displace.offset : model.displacement.offset;
         displacement.directions = directions.data();
+        if (displace.vector) {
+            // One frame per position, from the dominant vertex's tangent (docs/algorithm.md §8.7): the
+            // model's own (glTF TANGENT) when every primitive has them, else from the uv gradients.
+            if (model.has_tangents && model.tangents.size() == 4 * model.vertex_count()) {
+                tangents = model.tangents;
+                tangent_source = "model";
+            } else {
+                tangents.resize(4 * model.vertex_count());
+                if (!rt::uv_tangents(view, tangents))
+                    throw std::runtime_error(in + ": cannot compute the displacement tangents");
+                tangent_source = "uv";
+            }
+            displacement.mode = rt::DisplacementMode::vector;
+            displacement.tangents = tangents.data();
+        }
         if (displace.grow) displacement.factor_bound = rt::displacement_bound(displacement);
         options.displacement = &displacement;
         seconds.load += seconds_since(start);
@@ -373,10 +399,12 @@ int run_mesh(int argc, char** argv) {
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
         if (displace.on)
-            text += fmt::format("  \"displacement\": {{\"width\": {}, \"height\": {}, \"bound\": {}, "
-                                "\"factor_bound\": {}}},\n",
-                                height_image.width, height_image.height, rt::displacement_bound(displacement),
-                                displacement.factor_bound);
+            text +=
+                fmt::format("  \"displacement\": {{\"mode\": \"{}\", \"tangents\": \"{}\", \"channels\": {}, "
+                            "\"width\": {}, \"height\": {}, \"bound\": {}, \"factor_bound\": {}}},\n",
+                            displace.vector ? "vector" : "scalar", tangent_source, height_image.channels,
+                            height_image.width, height_image.height, rt::displacement_bound(displacement),
+                            displacement.factor_bound);
         if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
             text +=
                 fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "

@@ -30,7 +30,8 @@ commands:
            (--factor F | --edge-length L | --dice-rate PX --camera X,Y,Z [--fov DEG] [--resolution W,H])
            [--surface flat|pn|pn-aen|phong] [--max 64|256] [--quad-rule longer-pair|as-labelled]
            [--keep-degenerate] [--max-triangles N] [--stats]
-           [--displace HEIGHT.png | --displace-gltf] [--displace-scale S] [--displace-offset O]
+           [--displace HEIGHT.png | --displace-gltf | --displace-vector RGB.png] [--displace-scale S]
+           [--displace-offset O]
            [--displace-address repeat|clamp] [--displace-grow]
   serve    [--port N] [--viewer DIR] [--shaders DIR]   the browser viewer on 127.0.0.1 (docs/viewer.md)
 

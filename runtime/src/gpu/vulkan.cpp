@@ -430,7 +430,7 @@ Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& o
         throw Error(
             st == rt::PipelineStatus::bad_option
                 ? "the shaders run the cp or uniform pattern and camera factors, without position_ids, and "
-                  "displace by a valid height map only (not a HeightFunction) "
+                  "displace by a valid height map only (not a HeightFunction, not vector displacement) "
                   "(docs/shaders.md, \"Hosts\")"
                 : rt::pipeline_status_message(st));
     }
@@ -453,6 +453,9 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         if (displacement == nullptr) throw Error("the params displace but no rt::Displacement is given");
         if (displacement->function != nullptr)
             throw Error("a HeightFunction is CPU code: the shaders displace by a height map only");
+        if (displacement->mode != rt::DisplacementMode::scalar)
+            throw Error("vector displacement (DisplacementMode::vector) runs on the CPU only: the shaders "
+                        "displace by a scalar height map (docs/algorithm.md §8.7)");
         if (!rt::displacement_valid(*displacement))
             throw Error(
                 "the Displacement is not valid (rt::displacement_valid: finite numbers, factor_bound >= 0, "

@@ -16,14 +16,9 @@
 #include <stb/stb_image.h>
 
 #if CTESS_HAVE_OPENEXR
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfIO.h>
-#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/openexr.h>
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
 #endif
 
 namespace ctess::models {
@@ -58,158 +53,212 @@ bool is_exr(std::span<const std::uint8_t> bytes) {
 }
 
 #if CTESS_HAVE_OPENEXR
-// The encoded bytes as OpenEXR's input stream; a read past the end throws, as IStream::read must.
-class ByteStream final : public Imf::IStream {
-  public:
-    explicit ByteStream(std::span<const std::uint8_t> bytes) : Imf::IStream("<memory>"), bytes_(bytes) {}
-    bool read(char c[], int n) override {
-        if (n < 0 || static_cast<std::uint64_t>(n) > bytes_.size() - at_)
-            throw std::runtime_error("truncated OpenEXR file");
-        std::memcpy(c, bytes_.data() + at_, static_cast<std::size_t>(n));
-        at_ += static_cast<std::uint64_t>(n);
-        return at_ < bytes_.size();
-    }
-    std::uint64_t tellg() override { return at_; }
-    void seekg(std::uint64_t pos) override {
-        if (pos > bytes_.size()) throw std::runtime_error("truncated OpenEXR file");
-        at_ = pos;
-    }
-
-  private:
-    std::span<const std::uint8_t> bytes_;
-    std::uint64_t at_ = 0;
+// OpenEXR through its C core (OpenEXRCore, openexr.h), which validates what it reads against the size of the
+// input: the C++ library of 3.1 reconstructs a damaged chunk table and then reads uninitialised memory (found
+// by fuzz_height_map). Chunk reconstruction is off, so a damaged or incomplete file is an error.
+struct ExrInput {
+    std::span<const std::uint8_t> bytes;
+    std::string last_error; // the core's last message
 };
 
-// What the header walk finds: the data window's size, the channel count and the tiling.
-struct ExrHeaderFacts {
-    std::int64_t width = 0, height = 0;
-    bool found_window = false;
-    std::uint64_t channels = 0;
-    bool tiled = false;
-    std::uint32_t tile_width = 0, tile_height = 0;
-};
-
-// Walks the (first) header's attributes, each name, type, int32 size and value, checking every size against
-// the bytes left, and reads the data window. OpenEXR allocates an attribute's claimed size before reading it,
-// so a damaged size is refused here first; the decode itself is OpenEXR's.
-std::string walk_exr_header(std::span<const std::uint8_t> bytes, ExrHeaderFacts& facts) {
-    if (bytes.size() < 8) return "truncated OpenEXR file";
-    const std::uint32_t flags = bytes[5] | std::uint32_t{bytes[6]} << 8 | std::uint32_t{bytes[7]} << 16;
-    if (bytes[4] != 2) return "OpenEXR version " + std::to_string(bytes[4]) + " (2 is read)";
-    if ((flags & 0x18u) != 0)
-        return "a deep or multi-part OpenEXR file (only single-part flat images are read)";
-    auto le32 = [&](std::size_t at) {
-        return static_cast<std::int32_t>(std::uint32_t{bytes[at]} | std::uint32_t{bytes[at + 1]} << 8 |
-                                         std::uint32_t{bytes[at + 2]} << 16 |
-                                         std::uint32_t{bytes[at + 3]} << 24);
-    };
-    std::size_t at = 8;
-    const auto read_name = [&](std::string& out) {
-        const auto begin = bytes.begin() + static_cast<std::ptrdiff_t>(at);
-        const auto end = std::find(begin, bytes.end(), std::uint8_t{0});
-        if (end == bytes.end()) return false;
-        out.assign(begin, end);
-        at += out.size() + 1;
-        return true;
-    };
-    for (std::string name, type;;) {
-        if (at >= bytes.size()) return "truncated OpenEXR file";
-        if (bytes[at] == 0) break; // the header's end
-        if (!read_name(name) || !read_name(type) || bytes.size() - at < 4) return "truncated OpenEXR file";
-        const std::int32_t size = le32(at);
-        at += 4;
-        if (size < 0 || static_cast<std::uint64_t>(size) > bytes.size() - at)
-            return "the OpenEXR attribute '" + name + "' claims " + std::to_string(size) +
-                   " bytes, past the end of the file";
-        const std::size_t value = at, value_end = at + static_cast<std::size_t>(size);
-        if (name == "dataWindow" && type == "box2i" && size == 16) {
-            const std::int64_t x0 = le32(value), y0 = le32(value + 4), x1 = le32(value + 8),
-                               y1 = le32(value + 12);
-            facts.width = x1 >= x0 ? x1 - x0 + 1 : 0;
-            facts.height = y1 >= y0 ? y1 - y0 + 1 : 0;
-            facts.found_window = true;
-        } else if (name == "channels" && type == "chlist") {
-            // Entries: a name, then 16 bytes (type, pLinear, reserved, x and y sampling); a 0 ends the list.
-            facts.channels = 0;
-            for (std::size_t c = value; c < value_end && bytes[c] != 0; ++facts.channels) {
-                while (c < value_end && bytes[c] != 0) ++c;
-                c += 17;
-            }
-        } else if (name == "tiles" && type == "tiledesc" && size == 9) {
-            facts.tile_width = static_cast<std::uint32_t>(le32(value));
-            facts.tile_height = static_cast<std::uint32_t>(le32(value + 4));
-        }
-        at = value_end;
-    }
-    if (!facts.found_window) return "the OpenEXR header has no dataWindow";
-    facts.tiled = (flags & 0x02u) != 0;
-    return {};
+std::int64_t exr_read(exr_const_context_t, void* user, void* buffer, std::uint64_t size, std::uint64_t offset,
+                      exr_stream_error_func_ptr_t) {
+    const auto& bytes = static_cast<ExrInput*>(user)->bytes;
+    if (offset >= bytes.size()) return 0;
+    const std::uint64_t n = std::min<std::uint64_t>(size, bytes.size() - offset);
+    std::memcpy(buffer, bytes.data() + offset, static_cast<std::size_t>(n));
+    return static_cast<std::int64_t>(n);
 }
 
-// OpenEXR sizes its buffers by every channel of the file, and a tiled file's offset table by its tile count:
-// these bounds keep each below the height map's own texel limit (max_height_map_texels samples, 2^20 tiles)
-// whatever the header claims. Empty, or why the file is refused.
-std::string exr_buffer_problem(const ExrHeaderFacts& f) {
-    const auto w = static_cast<std::uint64_t>(f.width), h = static_cast<std::uint64_t>(f.height);
-    if (f.channels == 0) return "the OpenEXR image has no channels";
-    if (w * h * f.channels > max_height_map_texels)
-        return "the OpenEXR image holds " + std::to_string(w) + " x " + std::to_string(h) + " texels of " +
-               std::to_string(f.channels) + " channels, past the limit of 2^26 samples";
-    if (!f.tiled) return {};
-    const std::uint64_t tw = f.tile_width, th = f.tile_height;
-    if (tw == 0 || th == 0 || tw > max_height_map_side || th > max_height_map_side ||
-        tw * th * f.channels > max_height_map_texels ||
-        ((w + tw - 1) / tw) * ((h + th - 1) / th) > (1u << 20))
-        return "the OpenEXR tiles are " + std::to_string(tw) + " x " + std::to_string(th) +
-               ", outside the limits (sides 1 to 16384, at most 2^26 samples a tile and 2^20 tiles)";
-    return {};
+std::int64_t exr_size(exr_const_context_t, void* user) {
+    return static_cast<std::int64_t>(static_cast<ExrInput*>(user)->bytes.size());
 }
 
-// The R channel, else Y (luminance), else the first channel of the file, as floats (OpenEXR converts half
-// and uint); every texel must be finite, as the pipeline's height bound is taken over them (§8.4).
-HeightMapResult decode_exr(std::span<const std::uint8_t> bytes, const std::string& name) {
+// The core reports through this callback; the user data is reached through the context.
+void exr_error(exr_const_context_t ctxt, exr_result_t code, const char* message) {
+    void* user = nullptr;
+    if (exr_get_user_data(ctxt, &user) == EXR_ERR_SUCCESS && user != nullptr)
+        static_cast<ExrInput*>(user)->last_error =
+            message != nullptr ? message : exr_get_default_error_message(code);
+}
+
+// wanted = 1: the R channel, else Y (luminance), else the file's first channel (alphabetical); wanted = 3 (a
+// vector map): R, G and B, interleaved. Decoded to floats (half and uint converted); every texel must be
+// finite, as the pipeline's height bound is taken over them (§8.4). Before any chunk is read, the data window
+// is held to the height map's limits and the buffers the core sizes to bounds of their own: all channels
+// together 2^26 samples, tiles 1 to 16384 a side and 2^26 samples each, 2^20 chunks.
+HeightMapResult decode_exr(std::span<const std::uint8_t> bytes, const std::string& name, unsigned wanted) {
     HeightMapResult result;
+    ExrInput input{bytes, {}};
     auto fail = [&](const std::string& problem) {
         result.error.message = name + ": " + problem;
         return result;
     };
-    ExrHeaderFacts facts;
-    if (std::string problem = walk_exr_header(bytes, facts); !problem.empty()) return fail(problem);
-    if (std::string problem =
-            size_problem(static_cast<std::uint64_t>(facts.width), static_cast<std::uint64_t>(facts.height));
+    auto core_fail = [&](const char* what, exr_result_t code) {
+        return fail(std::string("OpenEXR cannot ") + what + " (" +
+                    (input.last_error.empty() ? exr_get_default_error_message(code) : input.last_error) +
+                    ")");
+    };
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = exr_error;
+    init.user_data = &input;
+    init.read_fn = exr_read;
+    init.size_fn = exr_size;
+    init.flags = EXR_CONTEXT_FLAG_DISABLE_CHUNK_RECONSTRUCTION;
+    exr_context_t ctxt = nullptr;
+    const exr_result_t opened = exr_start_read(&ctxt, name.c_str(), &init);
+    const std::unique_ptr<exr_context_t, void (*)(exr_context_t*)> closer(&ctxt, [](exr_context_t* c) {
+        if (*c != nullptr) exr_finish(c);
+    });
+    if (opened != EXR_ERR_SUCCESS) return core_fail("read the header", opened);
+    int parts = 0;
+    exr_storage_t storage = EXR_STORAGE_LAST_TYPE;
+    exr_attr_box2i_t window{};
+    const exr_attr_chlist_t* channels = nullptr;
+    if (exr_get_count(ctxt, &parts) != EXR_ERR_SUCCESS || parts != 1)
+        return fail("a multi-part OpenEXR file (only single-part images are read)");
+    if (exr_get_storage(ctxt, 0, &storage) != EXR_ERR_SUCCESS ||
+        (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED))
+        return fail("a deep OpenEXR image (only flat scan-line or tiled images are read)");
+    if (const exr_result_t r = exr_get_data_window(ctxt, 0, &window); r != EXR_ERR_SUCCESS)
+        return core_fail("read the data window", r);
+    if (const exr_result_t r = exr_get_channels(ctxt, 0, &channels);
+        r != EXR_ERR_SUCCESS || channels == nullptr)
+        return core_fail("read the channels", r);
+    const std::int64_t w64 = std::int64_t{window.max.x} - window.min.x + 1,
+                       h64 = std::int64_t{window.max.y} - window.min.y + 1;
+    if (std::string problem = size_problem(w64 > 0 ? static_cast<std::uint64_t>(w64) : 0,
+                                           h64 > 0 ? static_cast<std::uint64_t>(h64) : 0);
         !problem.empty())
         return fail(problem);
-    if (std::string problem = exr_buffer_problem(facts); !problem.empty()) return fail(problem);
-    ByteStream stream(bytes);
-    Imf::InputFile file(stream);
-    const Imath::Box2i window = file.header().dataWindow();
-    const Imf::ChannelList& channels = file.header().channels();
-    const char* channel = channels.findChannel("R") != nullptr   ? "R"
-                          : channels.findChannel("Y") != nullptr ? "Y"
-                          : channels.begin() != channels.end()   ? channels.begin().name()
-                                                                 : nullptr;
-    if (channel == nullptr) return fail("the OpenEXR image has no channels");
-    const Imf::Channel& picked = channels[channel];
-    if (picked.xSampling != 1 || picked.ySampling != 1)
-        return fail(std::string("the OpenEXR channel '") + channel + "' is subsampled");
+    const std::uint64_t w = static_cast<std::uint64_t>(w64), h = static_cast<std::uint64_t>(h64);
+    const auto channel_count = static_cast<std::uint64_t>(channels->num_channels);
+    if (channel_count == 0) return fail("the OpenEXR image has no channels");
+    if (w * h * channel_count > max_height_map_texels)
+        return fail("the OpenEXR image holds " + std::to_string(w) + " x " + std::to_string(h) +
+                    " texels of " + std::to_string(channel_count) +
+                    " channels, past the limit of 2^26 samples");
+    std::uint32_t tile_w = 0, tile_h = 0;
+    if (storage == EXR_STORAGE_TILED) {
+        exr_tile_level_mode_t level = EXR_TILE_LAST_TYPE;
+        exr_tile_round_mode_t round = EXR_TILE_ROUND_LAST_TYPE;
+        if (const exr_result_t r = exr_get_tile_descriptor(ctxt, 0, &tile_w, &tile_h, &level, &round);
+            r != EXR_ERR_SUCCESS)
+            return core_fail("read the tiles", r);
+        const std::uint64_t tw = tile_w, th = tile_h;
+        if (tw == 0 || th == 0 || tw > max_height_map_side || th > max_height_map_side ||
+            tw * th * channel_count > max_height_map_texels)
+            return fail("the OpenEXR tiles are " + std::to_string(tw) + " x " + std::to_string(th) +
+                        ", outside the limits (sides 1 to 16384, at most 2^26 samples a tile)");
+    }
+    std::int32_t chunks = 0;
+    if (const exr_result_t r = exr_get_chunk_count(ctxt, 0, &chunks); r != EXR_ERR_SUCCESS || chunks <= 0)
+        return core_fail("count the chunks", r);
+    if (chunks > (1 << 20))
+        return fail("the OpenEXR image has " + std::to_string(chunks) + " chunks, past the limit of 2^20");
+
+    // The channels wanted, by their index in the (alphabetical) channel list.
+    const auto find = [&](const char* wanted_name) {
+        for (int c = 0; c < channels->num_channels; ++c)
+            if (channels->entries[c].name.str != nullptr &&
+                std::strcmp(channels->entries[c].name.str, wanted_name) == 0)
+                return c;
+        return -1;
+    };
+    std::vector<int> picked;
+    if (wanted == 3) {
+        for (const char* c : {"R", "G", "B"}) picked.push_back(find(c));
+        if (std::find(picked.begin(), picked.end(), -1) != picked.end())
+            return fail("the OpenEXR image has no R, G and B channels; a vector displacement map needs them");
+    } else {
+        const int r = find("R"), y = find("Y");
+        picked.push_back(r >= 0 ? r : y >= 0 ? y : 0);
+    }
+    for (const int c : picked)
+        if (channels->entries[c].x_sampling != 1 || channels->entries[c].y_sampling != 1)
+            return fail(std::string("the OpenEXR channel '") + channels->entries[c].name.str +
+                        "' is subsampled");
+
     HeightImage image;
-    image.width = static_cast<std::uint32_t>(facts.width);
-    image.height = static_cast<std::uint32_t>(facts.height);
-    image.texels.assign(std::size_t{image.width} * image.height, 0.0f);
-    Imf::FrameBuffer frame;
-    frame.insert(channel, Imf::Slice::Make(Imf::FLOAT, image.texels.data(), window, sizeof(float),
-                                           sizeof(float) * std::size_t{image.width}));
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
+    image.channels = wanted;
+    image.width = static_cast<std::uint32_t>(w);
+    image.height = static_cast<std::uint32_t>(h);
+    image.texels.assign(w * h * wanted, 0.0f);
+    // One chunk at a time into the image, each with its own decoder: its picked channels as floats at the
+    // chunk's place.
+    std::vector<float> scratch;
+    const auto decode_chunk = [&](const exr_chunk_info_t& chunk) -> exr_result_t {
+        // The chunk's place in the image: a scan-line chunk names its first line, a tile its column and row
+        // (openexr_chunkio.h), both checked to lie inside the image before anything is written.
+        const bool tiled = storage == EXR_STORAGE_TILED;
+        const std::int64_t x0 = tiled ? std::int64_t{chunk.start_x} * tile_w : 0,
+                           y0 = tiled ? std::int64_t{chunk.start_y} * tile_h
+                                      : chunk.start_y - std::int64_t{window.min.y};
+        if (x0 < 0 || y0 < 0 || chunk.width < 0 || chunk.height < 0 ||
+            static_cast<std::uint64_t>(x0) + static_cast<std::uint64_t>(chunk.width) > w ||
+            static_cast<std::uint64_t>(y0) + static_cast<std::uint64_t>(chunk.height) > h)
+            return EXR_ERR_BAD_CHUNK_LEADER;
+        exr_decode_pipeline_t decoder{}; // all zero, as EXR_DECODE_PIPELINE_INITIALIZER
+        exr_result_t r = exr_decoding_initialize(ctxt, 0, &chunk, &decoder);
+        if (r != EXR_ERR_SUCCESS) return r;
+        // Every channel gets a destination: OpenEXR 3.1's unpacker can crash on a skipped (null) one, so the
+        // channels not wanted go to one scratch plane of the chunk's size.
+        scratch.resize(static_cast<std::size_t>(chunk.width) * static_cast<std::size_t>(chunk.height));
+        for (int c = 0; c < decoder.channel_count; ++c) {
+            exr_coding_channel_info_t& out = decoder.channels[c];
+            out.decode_to_ptr = reinterpret_cast<std::uint8_t*>(scratch.data());
+            out.user_pixel_stride = sizeof(float);
+            out.user_line_stride =
+                static_cast<std::int32_t>(sizeof(float) * static_cast<std::size_t>(chunk.width));
+            out.user_data_type = EXR_PIXEL_FLOAT;
+            out.user_bytes_per_element = sizeof(float);
+        }
+        for (unsigned k = 0; k < wanted; ++k) {
+            exr_coding_channel_info_t& out = decoder.channels[picked[k]];
+            out.decode_to_ptr = reinterpret_cast<std::uint8_t*>(
+                image.texels.data() +
+                (static_cast<std::uint64_t>(y0) * w + static_cast<std::uint64_t>(x0)) * wanted + k);
+            out.user_pixel_stride = static_cast<std::int32_t>(sizeof(float) * wanted);
+            out.user_line_stride = static_cast<std::int32_t>(sizeof(float) * wanted * w);
+            out.user_data_type = EXR_PIXEL_FLOAT;
+            out.user_bytes_per_element = sizeof(float);
+        }
+        r = exr_decoding_choose_default_routines(ctxt, 0, &decoder);
+        if (r == EXR_ERR_SUCCESS) r = exr_decoding_run(ctxt, 0, &decoder);
+        exr_decoding_destroy(ctxt, &decoder);
+        return r;
+    };
+    if (storage == EXR_STORAGE_SCANLINE) {
+        std::int32_t lines = 0;
+        if (const exr_result_t r = exr_get_scanlines_per_chunk(ctxt, 0, &lines);
+            r != EXR_ERR_SUCCESS || lines <= 0)
+            return core_fail("read the chunk height", r);
+        for (std::int64_t y = window.min.y; y <= window.max.y; y += lines) {
+            exr_chunk_info_t chunk{};
+            exr_result_t r = exr_read_scanline_chunk_info(ctxt, 0, static_cast<int>(y), &chunk);
+            if (r == EXR_ERR_SUCCESS) r = decode_chunk(chunk);
+            if (r != EXR_ERR_SUCCESS) return core_fail("decode the image", r);
+        }
+    } else {
+        const std::uint64_t tiles_x = (w + tile_w - 1) / tile_w, tiles_y = (h + tile_h - 1) / tile_h;
+        for (std::uint64_t ty = 0; ty < tiles_y; ++ty)
+            for (std::uint64_t tx = 0; tx < tiles_x; ++tx) {
+                exr_chunk_info_t chunk{};
+                exr_result_t r = exr_read_tile_chunk_info(ctxt, 0, static_cast<int>(tx), static_cast<int>(ty),
+                                                          0, 0, &chunk);
+                if (r == EXR_ERR_SUCCESS) r = decode_chunk(chunk);
+                if (r != EXR_ERR_SUCCESS) return core_fail("decode the image", r);
+            }
+    }
     for (std::size_t i = 0; i < image.texels.size(); ++i)
         if (!std::isfinite(image.texels[i]))
-            return fail("the OpenEXR texel (" + std::to_string(i % image.width) + ", " +
-                        std::to_string(i / image.width) + ") is not finite");
+            return fail("the OpenEXR texel (" + std::to_string(i / wanted % image.width) + ", " +
+                        std::to_string(i / wanted / image.width) + ") is not finite");
     result.image = std::move(image);
     return result;
 }
 #else
-HeightMapResult decode_exr(std::span<const std::uint8_t>, const std::string& name) {
+HeightMapResult decode_exr(std::span<const std::uint8_t>, const std::string& name, unsigned) {
     HeightMapResult result;
     result.error.message = name +
                            ": an OpenEXR image, and this build of ctess::models has no OpenEXR (Debian "
@@ -218,7 +267,8 @@ HeightMapResult decode_exr(std::span<const std::uint8_t>, const std::string& nam
 }
 #endif
 
-HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& name) {
+// wanted: 1 (a height map: the first channel) or 3 (a vector map: red, green, blue; docs/models.md).
+HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& name, unsigned wanted) {
     HeightMapResult result;
     auto fail = [&](const std::string& problem) {
         result.error.message = name + ": " + problem;
@@ -227,7 +277,7 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
     if (bytes.empty()) return fail("the file is empty");
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) return fail("larger than 2 GiB");
     const int length = static_cast<int>(bytes.size());
-    if (is_exr(bytes)) return decode_exr(bytes, name);
+    if (is_exr(bytes)) return decode_exr(bytes, name, wanted);
     // A PNG's size is read from its IHDR here first: stb_image refuses very large headers itself but names
     // no size ("unknown image type").
     constexpr std::uint8_t png_signature[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
@@ -246,21 +296,29 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
                                            h < 0 ? 0 : static_cast<std::uint64_t>(h));
         !problem.empty())
         return fail(problem);
+    // A vector map needs three colour channels: grey (1) or grey + alpha (2) would give no x and y.
+    if (wanted == 3 && channels < 3)
+        return fail("the image has " + std::to_string(channels) + (channels == 1 ? " channel" : " channels") +
+                    " (grey); a vector displacement map needs red, green and blue");
     HeightImage image;
+    image.channels = wanted;
     image.width = static_cast<std::uint32_t>(w);
     image.height = static_cast<std::uint32_t>(h);
     const std::size_t count = std::size_t{image.width} * image.height;
     int decoded_w = 0, decoded_h = 0, decoded_channels = 0;
-    // The first channel of what stb_image decoded, divided by the format's largest value (1 for .hdr floats).
+    // The first `wanted` channels of what stb_image decoded, divided by the format's largest value (1 for
+    // .hdr floats).
     bool decoded = false;
     const auto first_channel = [&](auto* raw, float divisor) {
         using T = std::remove_pointer_t<decltype(raw)>;
         const std::unique_ptr<T, StbFree<T>> data(raw);
-        if (!data || decoded_w != w || decoded_h != h || decoded_channels <= 0) return;
-        image.texels.resize(count);
+        if (!data || decoded_w != w || decoded_h != h || decoded_channels < static_cast<int>(wanted)) return;
+        image.texels.resize(count * wanted);
         for (std::size_t i = 0; i < count; ++i)
-            image.texels[i] =
-                static_cast<float>(data.get()[i * static_cast<std::size_t>(decoded_channels)]) / divisor;
+            for (std::size_t c = 0; c < wanted; ++c)
+                image.texels[i * wanted + c] =
+                    static_cast<float>(data.get()[i * static_cast<std::size_t>(decoded_channels) + c]) /
+                    divisor;
         decoded = true;
     };
     if (stbi_is_hdr_from_memory(bytes.data(), length))
@@ -279,19 +337,36 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
     return result;
 }
 
-} // namespace
-
-HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
-    return detail::guarded_load<HeightMapResult>(name, [&] { return decode(bytes, name); });
+HeightMapResult load_from_memory(std::span<const std::uint8_t> bytes, const std::string& name,
+                                 unsigned wanted) {
+    return detail::guarded_load<HeightMapResult>(name, [&] { return decode(bytes, name, wanted); });
 }
 
-HeightMapResult load_height_map(const std::string& path) {
+HeightMapResult load_file(const std::string& path, unsigned wanted) {
     return detail::guarded_load<HeightMapResult>(path, [&] {
         HeightMapResult result;
         std::vector<std::uint8_t> bytes;
         result.error.message = detail::read_file_bytes(path, max_height_file_bytes, "1 GiB", bytes);
-        return result.error.message.empty() ? decode(bytes, path) : result;
+        return result.error.message.empty() ? decode(bytes, path, wanted) : result;
     });
+}
+
+} // namespace
+
+HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
+    return load_from_memory(bytes, name, 1);
+}
+
+HeightMapResult load_height_map(const std::string& path) {
+    return load_file(path, 1);
+}
+
+HeightMapResult load_vector_map_from_memory(std::span<const std::uint8_t> bytes, const std::string& name) {
+    return load_from_memory(bytes, name, 3);
+}
+
+HeightMapResult load_vector_map(const std::string& path) {
+    return load_file(path, 3);
 }
 
 } // namespace ctess::models

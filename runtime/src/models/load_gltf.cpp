@@ -276,7 +276,7 @@ class GltfReader {
         const auto position_it = prim.attributes.find("POSITION");
         if (position_it == prim.attributes.end())
             throw LoadFailure{where + ": no POSITION attribute" + suffix};
-        AccessorView positions, normals, uvs;
+        AccessorView positions, normals, uvs, tangents;
         try {
             positions = view_accessor(g_, position_it->second, where + " POSITION");
         } catch (const LoadFailure& f) {
@@ -299,8 +299,19 @@ class GltfReader {
             if (uvs.count != positions.count)
                 throw LoadFailure{where + ": TEXCOORD_0 and POSITION counts differ"};
         }
+        // TANGENT (vector displacement's frame, docs/algorithm.md §8.7): kept only when every primitive has
+        // it.
+        const auto tangent_it = prim.attributes.find("TANGENT");
+        const bool has_tangents = tangent_it != prim.attributes.end();
+        if (has_tangents) {
+            tangents = view_accessor(g_, tangent_it->second, where + " TANGENT");
+            check_attribute(tangents, 4, where + " TANGENT");
+            if (tangents.count != positions.count)
+                throw LoadFailure{where + ": TANGENT and POSITION counts differ"};
+        }
         first_primitive_ ? (model_.has_normals = has_normals, model_.has_uvs = has_uvs)
                          : (model_.has_normals &= has_normals, model_.has_uvs &= has_uvs);
+        model_.has_tangents = (first_primitive_ || model_.has_tangents) && has_tangents;
         first_primitive_ = false;
 
         // Corner list: the index accessor's values, or 0..count-1 for a non-indexed primitive.
@@ -355,6 +366,25 @@ class GltfReader {
             }
             if (has_uvs)
                 for (int c = 0; c < 2; ++c) out[6 + c] = read_component(uvs, i, c);
+        }
+        // Tangents lie in the surface, so they transform as positions' differences (the upper 3x3); a mirror
+        // flips the handedness. Dropped as soon as one primitive lacks them.
+        if (!model_.has_tangents) {
+            model_.tangents.clear();
+        } else {
+            model_.tangents.resize((base + positions.count) * 4, 0.0f);
+            for (std::size_t i = 0; i < positions.count; ++i) {
+                float* out = model_.tangents.data() + (base + i) * 4;
+                double t[3], m[3];
+                for (int c = 0; c < 3; ++c) t[c] = read_component(tangents, i, c);
+                for (int r = 0; r < 3; ++r)
+                    m[r] = world[r] * t[0] + world[4 + r] * t[1] + world[8 + r] * t[2];
+                const double len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+                const bool usable = len > 0 && std::isfinite(len); // else (0, 0, 0): no tangent there
+                for (int r = 0; r < 3; ++r) out[r] = usable ? static_cast<float>(m[r] / len) : 0.0f;
+                const float w = read_component(tangents, i, 3);
+                out[3] = (w < 0.0f) != (det < 0) ? -1.0f : 1.0f;
+            }
         }
 
         // Triangles from the corner list (glTF 2.0 §3.7.2.1, primitive modes); a mirrored node (det < 0)

@@ -17,6 +17,17 @@
 //   d.directions = directions.data();
 //   options.displacement = &d;                         // then setup_welded / emit_welded_mesh as usual
 //
+// Vector displacement (§8.7): with mode = DisplacementMode::vector the texel is an RGB vector in tangent
+// space, vector = scale * (texel * factor + offset) per channel, and a point moves by x T + y B + z N, the
+// frame taken per position from the dominant vertex (N its direction, T its tangent made orthogonal to N, B =
+// cross(N, T) * handedness) and interpolated as the directions are:
+//
+//   std::vector<float> tangents(4 * std::size_t{mesh.vertex_count});
+//   rt::uv_tangents(mesh, tangents);                   // or the model's own (glTF TANGENT's layout)
+//   d.mode = rt::DisplacementMode::vector;
+//   d.map = rgb_image.view();                          // 3 channels (models::load_vector_map)
+//   d.tangents = tangents.data();
+//
 // The evaluation is out of line in ctess::runtime_core, compiled with -ffp-contract=off -fno-fast-math.
 #pragma once
 #include <cstdint>
@@ -31,6 +42,14 @@ namespace ctess::rt {
 
 // A procedural height: the "texel" at (u, v); the pipeline applies scale, factor and offset to it.
 using HeightFunction = float (*)(const void* context, float u, float v);
+// A procedural vector texel (tangent space: x along T, y along B, z along N) for DisplacementMode::vector.
+using VectorFunction = Vec3 (*)(const void* context, float u, float v);
+
+// What the texel is (docs/algorithm.md §8.7).
+enum class DisplacementMode : std::uint8_t {
+    scalar = 0, // a height along the direction: map of 1 channel or HeightFunction (the default)
+    vector = 1, // a tangent-space vector: map of 3 channels (RGB) or VectorFunction, and tangents
+};
 
 struct Displacement {
     HeightMap map{};                                  // the texture, read when function is null
@@ -45,17 +64,32 @@ struct Displacement {
     float factor_bound = 0.0f;
     // The finite-difference step of the displaced normals, in the patch's parameter (§8.3), in (0, 0.5].
     float normal_step = 1.0f / 256.0f;
+    // Vector displacement (§8.7). In vector mode `function` must be null and `vector_function`, when set,
+    // replaces the map; in scalar mode `vector_function` must be null (displacement_valid).
+    DisplacementMode mode = DisplacementMode::scalar;
+    VectorFunction vector_function = nullptr;
+    // Vector mode: 4 floats per mesh vertex, glTF TANGENT's layout: the tangent xyz (along +u) and the
+    // handedness w (B = cross(N, T) * w, w < 0 gives -1, anything else +1). Required in vector mode; the
+    // frame is read at dominant vertices only, so any per-vertex tangents give one frame per position.
+    const float* tangents = nullptr;
 };
 
 // scale * (texel * factor + offset) at (u, v).
 float displacement_height(const Displacement& d, float u, float v);
+// Vector mode: the tangent-space vector scale * (texel * factor + offset), per channel, at (u, v) (the texel
+// from vector_function, else sample_bilinear_rgb of the map).
+Vec3 displacement_vector(const Displacement& d, float u, float v);
 
-// The largest |height| the map can give (from its texel range); 0 for a function source (the caller knows
-// its bound) or an empty map.
+// The largest |height| the map can give (from its texel range); in vector mode the largest length of a
+// texel's vector (texels with a NaN channel skipped); 0 for a function source (the caller knows its bound)
+// or an empty map.
 float displacement_bound(const Displacement& d);
 
-// True when scale, factor, offset and factor_bound are finite, factor_bound >= 0 and normal_step is in
-// (0, 0.5]; the pipeline answers PipelineStatus::bad_option otherwise.
+// True when scale, factor, offset and factor_bound are finite, factor_bound >= 0, normal_step is in
+// (0, 0.5], and the source fits the mode: scalar mode has no vector_function and, reading a non-empty map,
+// a map of 1 channel; vector mode has no (scalar) function, has tangents and, reading a non-empty map, a map
+// of 3 channels; a mode outside the enum is refused. The pipeline answers PipelineStatus::bad_option
+// otherwise.
 bool displacement_valid(const Displacement& d);
 
 // One direction per position: out[3v..3v+2] = the normalised sum of the normals of every vertex at vertex v's
@@ -64,17 +98,28 @@ bool displacement_valid(const Displacement& d);
 // position id is out of range or not its own id.
 bool welded_directions(const MeshView& mesh, std::span<float> out);
 
+// Per-vertex tangents from the uv gradients (Lengyel 2001, "Computing Tangent Space Basis Vectors for an
+// Arbitrary Mesh"; docs/algorithm.md §8.7): out[4v..4v+3] = the tangent xyz and handedness w of vertex v.
+// Each face triangle (a quad as (q0, q1, q2) and (q0, q2, q3)) adds its dP/du and dP/dv to its three
+// vertices; the sum of dP/du is made orthogonal to the vertex's own normal (Gram-Schmidt) and normalised, and
+// w is -1 where cross(N, T) points against the summed dP/dv, else +1. A face whose uv area is zero or whose
+// gradients are not finite adds nothing; a vertex with no usable tangent gets (0, 0, 0, 1), so the vector's
+// x and y move nothing there. False, and nothing written, when out is shorter than 4 * vertex_count or a
+// face index is out of range.
+bool uv_tangents(const MeshView& mesh, std::span<float> out);
+
 // --- The mesh pipeline's hook (mesh_pipeline.cpp); public so that tests can drive it directly ---
 
 // What one patch's displacement reads, set up once per patch: per corner the dominant vertex's uv and
 // direction, per edge the dominant edge's uvs, and the own corners for the finite differences.
 struct DisplacementPatch {
-    const Displacement* source = nullptr; // null: no displacement
-    unsigned corners = 3;                 // 3 (a triangle) or 4 (a quad)
-    float corner_uv[4][2] = {};           // the dominant vertex's uv
-    Vec3 direction[4] = {};               // the dominant vertex's direction, normalised
-    float edge_uv[4][2][2] = {};          // edge k (corner k -> k + 1): the dominant edge's uv at both ends
-    Vec3 position[4] = {};                // the own corners' positions and uvs
+    const Displacement* source = nullptr;    // null: no displacement
+    unsigned corners = 3;                    // 3 (a triangle) or 4 (a quad)
+    float corner_uv[4][2] = {};              // the dominant vertex's uv
+    Vec3 direction[4] = {};                  // the dominant vertex's direction, normalised
+    Vec3 tangent[4] = {}, bitangent[4] = {}; // vector mode: the dominant vertex's T and B (§8.7)
+    float edge_uv[4][2][2] = {}; // edge k (corner k -> k + 1): the dominant edge's uv at both ends
+    Vec3 position[4] = {};       // the own corners' positions and uvs
     float own_uv[4][2] = {};
 };
 

@@ -148,13 +148,15 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
 // Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (the
 // uniform_split and D3D11 patterns, factors other than FactorMode::camera, MeshView::position_ids: the
 // shaders order shared edges by vertex index, so a seam between different indices would not get the CPU's
-// bits; displacement by a HeightFunction, which is CPU code)
+// bits; displacement by a HeightFunction, which is CPU code; vector displacement, DisplacementMode::vector,
+// which the shaders do not port yet: docs/algorithm.md §8.7)
 // and for a QuadRule outside its enum, a Displacement that displacement_valid refuses (as the CPU
 // pipeline does), or too_many_patches.
 inline PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
     if (mesh.position_ids != nullptr) return PipelineStatus::bad_option;
     if (const Displacement* d = options.displacement; d != nullptr)
-        if (d->function != nullptr || !displacement_valid(*d)) return PipelineStatus::bad_option;
+        if (d->function != nullptr || d->mode != DisplacementMode::scalar || !displacement_valid(*d))
+            return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
     if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;

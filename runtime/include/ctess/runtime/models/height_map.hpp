@@ -25,10 +25,11 @@ inline constexpr std::uint64_t max_height_map_texels = std::uint64_t{1} << 26;
 
 struct HeightImage {
     std::uint32_t width = 0, height = 0;
-    std::vector<float> texels; // width * height, row-major, the file's first row first (v = 0, glTF)
+    std::uint32_t channels = 1; // floats per texel: 1 (load_height_map) or 3 (load_vector_map: r, g, b)
+    std::vector<float> texels;  // width * height * channels, row-major, the file's first row first (v = 0)
     // A view for the pipeline (rt::Displacement::map); valid while this image lives.
     rt::HeightMap view(rt::AddressMode address = rt::AddressMode::repeat) const {
-        return {texels.data(), width, height, address};
+        return {texels.data(), width, height, address, channels};
     }
 };
 
@@ -42,6 +43,15 @@ struct HeightMapResult {
 HeightMapResult load_height_map(const std::string& path);
 // The same from encoded bytes (a glTF's embedded image); `name` is what error messages call the input.
 HeightMapResult load_height_map_from_memory(std::span<const std::uint8_t> bytes,
+                                            const std::string& name = "<memory>");
+
+// A vector displacement map (docs/models.md, "Vector maps"; docs/algorithm.md §8.7): the same formats,
+// limits and errors, but the image keeps red, green and blue (channels = 3; an alpha channel is dropped),
+// each normalised as above (a PNG's texels lie in [0, 1]: the usual signed encoding 0.5 = zero wants
+// Displacement::offset -0.5, --displace-offset -0.5). A grey or grey + alpha image is an error (it has no x
+// and y), not a grey vector.
+HeightMapResult load_vector_map(const std::string& path);
+HeightMapResult load_vector_map_from_memory(std::span<const std::uint8_t> bytes,
                                             const std::string& name = "<memory>");
 
 } // namespace ctess::models

@@ -21,6 +21,11 @@ struct Model {
     // false: zeros were written for the missing attribute (no normals are generated; docs/models.md). When
     // some primitives or faces have the attribute and others do not, the flag is false.
     bool has_normals = false, has_uvs = false;
+    // glTF TANGENT, 4 floats per vertex (xyz by the node's matrix, renormalised; w the handedness, negated
+    // under a mirroring node), rt::Displacement::tangents' layout (docs/algorithm.md §8.7). Filled only when
+    // every loaded primitive has it (has_tangents); else empty. OBJ files have none.
+    std::vector<float> tangents;
+    bool has_tangents = false;
     // KHR_materials_displacement (unofficial, issue KhronosGroup/glTF#948): read from the first material of a
     // loaded primitive that has it.
     struct Displacement {
