@@ -372,7 +372,7 @@ export class MeshView {
     }
 
     async redraw(maxFactor) {
-        const started = performance.now();
+        let started = performance.now();
         const kind = this.ui.kind.value === 'model' && this.model ? 'model' : (MESHES[this.ui.kind.value] ? this.ui.kind.value : 'ico0');
         const mesh = this.mesh(kind);
         this.radius = mesh.radius;
@@ -391,6 +391,7 @@ export class MeshView {
         this.ui.compareFigure.hidden = !compare;
         const pipeline = await this.pipelineFor();
         this.lastPipeline = Promise.resolve(pipeline);
+        started = performance.now(); // the frame: both sides' passes (a pass's first use compiles it) and draws
         const C = pipeline.constants;
         if (C.MESH_VERTEX_FLOATS !== MESH_VERTEX_FLOATS)
             throw new Error(`the generated pipeline reads ${C.MESH_VERTEX_FLOATS} floats per mesh vertex, the viewer's meshes have ${MESH_VERTEX_FLOATS}`);
