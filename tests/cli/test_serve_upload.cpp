@@ -285,7 +285,7 @@ TEST_CASE("serve upload: the body limit, two uploads at once, Host and Origin", 
     const std::string head =
         "POST /api/model?name=slow.obj HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 1000000"
         "\r\nConnection: close\r\n\r\nv 0 0 0\n";
-    const int first = connect_loopback(port), second = connect_loopback(port);
+    const int first = connect_loopback(port), second = connect_loopback(port, 20);
     REQUIRE(first >= 0);
     REQUIRE(second >= 0);
     REQUIRE(send_all(first, head));
@@ -301,7 +301,6 @@ TEST_CASE("serve upload: the body limit, two uploads at once, Host and Origin", 
     ::close(first);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     CHECK(http(port, post("/api/model?name=cube.obj", port, mixed_cube_obj())).status == 200);
-    ::close(second);
 
     // The server's Host and Origin rules apply to uploads (docs/cli.md, "Viewer server").
     const std::string cube = mixed_cube_obj();
@@ -313,5 +312,13 @@ TEST_CASE("serve upload: the body limit, two uploads at once, Host and Origin", 
     CHECK(http(port, post("/api/model?name=cube.obj", port, cube,
                           "Origin: http://127.0.0.1:" + std::to_string(port) + "\r\n"))
               .status == 200);
+
+    // The second upload stays truncated: at the request deadline (10 s after its connection opened) it gets
+    // 408, as JSON, and the connection is closed.
+    const Reply late = parse_reply(recv_all(second));
+    ::close(second);
+    CHECK(late.status == 408);
+    CHECK(is_json_error(late, "Request Timeout"));
+    CHECK(seconds_since(t0) < 12.0);
     CHECK(server.alive());
 }

@@ -239,6 +239,11 @@ void refuse_and_close(int fd, int status, bool json = false, const std::string& 
 
 } // namespace
 
+bool api_request(std::string_view in) {
+    const std::size_t sp = in.find(' ');
+    return sp != std::string_view::npos && in.substr(sp + 1, 5) == "/api/";
+}
+
 bool upload_target(std::string_view method, std::string_view target) {
     const std::string_view path = target.substr(0, target.find('?'));
     return method == "POST" && (path == "/api/model" || path == "/api/height-map");
@@ -493,7 +498,10 @@ bool BoundedServer::serve_forever() {
         std::vector<int> late;
         for (const auto& [fd, c] : connections)
             if (!c.busy && c.deadline <= now) late.push_back(fd);
-        for (const int fd : late) close_connection(fd, connections.at(fd).in.empty() ? 0 : 408);
+        for (const int fd : late) {
+            const std::string_view in = connections.at(fd).in;
+            close_connection(fd, in.empty() ? 0 : 408, api_request(in));
+        }
 
         if (polled[0].revents) {
             for (;;) {

@@ -36,6 +36,10 @@ struct ServeLimits {
 // Whether a request line's method and target are an upload (POST /api/model or /api/height-map, any query).
 bool upload_target(std::string_view method, std::string_view target);
 
+// Whether a buffered request (its request line may still be partial) is for an /api/ target, whose refusals
+// are JSON.
+bool api_request(std::string_view in);
+
 // An httplib::Server whose routes are set as usual, served by the loop above instead of httplib's listen().
 class BoundedServer : public httplib::Server {
   public:
