@@ -169,6 +169,7 @@ export function fnv1a(hash, words, stride = 1, offsets = [0]) {
     return hash;
 }
 const FNV_BASIS = 2166136261;
+const CHECKSUM_EVERY_FRAME = 1 << 22; // output vertices + triangles of one side
 const hex = (h) => h.toString(16).padStart(8, '0');
 
 // One canvas: its WebGPU context, depth buffer, camera uniform and the output buffers it last drew.
@@ -430,6 +431,10 @@ export class MeshView {
             readback = { vertices: await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS),
                          indices: await pipeline.read(out.indices, out.triangleCount * 3), records: out.patches };
         }
+        // The checksums of every side's output (read back after the frame, outside its time), up to a size where
+        // reading back each frame stays cheap; beyond it, ctessViewerChecksum() reads them on request.
+        for (let k = 0; k < sides.length; k++)
+            sides[k].checksum = sides[k].vertices + sides[k].triangles <= CHECKSUM_EVERY_FRAME ? await this.checksum(k) : null;
         const uniformMax = patterns.slice(0, sides.length).includes('uniform') ? (await pipeline.uniformTables()).maxFactor : null;
         this.ui.diceValue.textContent = `${dice} px`;
         this.ui.patches.textContent = mesh.patches;
@@ -444,8 +449,8 @@ export class MeshView {
             patches: mesh.patches, quads: mesh.quads.length / 4, surface, diceRate: dice, camera: { eye: [...eye], target: [...target], fov: this.fovDegrees },
             resolution: [canvas.width, canvas.height], factorScaleBits: sides[0].factorScaleBits,
             displacement: displaced ? { scale, offset, address: this.ui.displaceAddress.value, width: h.width, height: h.height, name: h.name } : null,
-            wireframe: settings.wireframe, vertices: sides[0].vertices, triangles: sides[0].triangles,
-            compare: compare ? { mode: patterns[1], vertices: sides[1].vertices, triangles: sides[1].triangles } : null,
+            wireframe: settings.wireframe, vertices: sides[0].vertices, triangles: sides[0].triangles, checksum: sides[0].checksum,
+            compare: compare ? { mode: patterns[1], vertices: sides[1].vertices, triangles: sides[1].triangles, checksum: sides[1].checksum } : null,
             ms: { frame: frameMs, compute: sides.map((s) => s.computeMs) }, readback,
         };
         return window.ctessViewer;

@@ -3,7 +3,7 @@
 // (OBJ/regr_3429812.obj: a quad and two triangles) through the file picker and one with uv and normal seams
 // (glTF2/BoxTextured-glTF-Binary/BoxTextured.glb: 24 vertices at 8 positions) by drag and drop, plus a height
 // map, sets the camera exactly (URL and JS hook) and the DiceRate, and compares the page's counts and the
-// checksums of its output buffers (window.ctessViewer, window.ctessViewerChecksum) with `ctess mesh --stats`'s
+// checksums of its output buffers (window.ctessViewer, and window.ctessViewerChecksum on request) with `ctess mesh --stats`'s
 // `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement. A .gltf whose
 // buffer is a separate file is refused with the server's message on the page.
 //   node tests/viewer/test_viewer_models.mjs path/to/ctess    exit 0 pass, 1 fail, 77 skipped (no chromium/models)
@@ -71,7 +71,9 @@ async function sameAsCli(state, file, options, sides) {
         const what = `${file.split('/').pop()} ${pattern} ${options.surface}${options.displace ? ' displaced' : ''} DiceRate ${options.dice}`;
         const ref = cliStats(file, { ...options, pattern }).gpu;
         const counts = side === 0 ? state : state.compare;
-        const sum = await page.evaluate((s) => window.ctessViewerChecksum(s), side);
+        const sum = counts?.checksum;
+        const onRequest = await page.evaluate((s) => window.ctessViewerChecksum(s), side);
+        check(JSON.stringify(onRequest) === JSON.stringify(sum), `${what}: ctessViewerChecksum ${JSON.stringify(onRequest)}, ctessViewer ${JSON.stringify(sum)}`);
         let ok = check(ref && counts?.mode === pattern, `${what}: the CLI has no gpu block, or the page shows ${counts?.mode}`);
         ok &&= check(state.factorScaleBits === ref.factor_scale_bits, `${what}: factor scale bits ${state.factorScaleBits}, CLI ${ref.factor_scale_bits}`);
         ok &&= check(state.patches === ref.patches && counts.vertices === ref.vertices && counts.triangles === ref.triangles,
