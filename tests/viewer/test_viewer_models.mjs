@@ -4,8 +4,9 @@
 // (glTF2/BoxTextured-glTF-Binary/BoxTextured.glb: 24 vertices at 8 positions) by drag and drop, plus a height
 // map, sets the camera exactly (URL and JS hook) and the DiceRate, and compares the page's counts and the
 // checksums of its output buffers (window.ctessViewer, and window.ctessViewerChecksum on request) with `ctess mesh --stats`'s
-// `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement. A .gltf whose
-// buffer is a separate file is refused with the server's message on the page.
+// `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement. The built-in
+// quad torus displaced by the map stays closed and moves by at most the height bound. A .gltf whose buffer is a
+// separate file is refused with the server's message on the page.
 //   node tests/viewer/test_viewer_models.mjs path/to/ctess    exit 0 pass, 1 fail, 77 skipped (no chromium/models)
 import { spawn, execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
@@ -109,9 +110,49 @@ state = await viewerState(() => window.ctessViewer?.displacement?.scale === Math
 check(state.displacement.width === 211 && state.displacement.height === 211, `height map: ${JSON.stringify(state.displacement)}`);
 await sameAsCli(state, mixed, { surface: 'phong', dice: 8, eye: mixedEye, displace: { file: heightMap, scale: 0.004, offset: -0.5 } }, [['cp', 0]]);
 
+// ---- the built-in quad torus displaced by the same map: still closed, every point moved by at most the bound ----
+// (Its vertices are shared across the uv seam and it has no adjacency: each vertex moves along its own normal.)
+const C = (await (await fetch(`${base}shaders/ctess_mesh_64.layout.json`)).json()).constants;
+const torusPositions = () => page.evaluate((C) => {
+    const { vertices, indices } = window.ctessViewer.readback;
+    const p = [];
+    for (let i = 0; i < vertices.length; i += C.VERTEX_WORDS) p.push(...new Float32Array(vertices.slice(i + C.VERTEX_POSITION, i + C.VERTEX_POSITION + 3).buffer));
+    // Welded by position bits, CP's zero-area triangles left out: every edge used once each way.
+    const id = new Map(), key = (i) => `${vertices[i * C.VERTEX_WORDS + C.VERTEX_POSITION]},${vertices[i * C.VERTEX_WORDS + C.VERTEX_POSITION + 1]},${vertices[i * C.VERTEX_WORDS + C.VERTEX_POSITION + 2]}`;
+    const directed = new Map();
+    for (let t = 0; t < indices.length; t += 3) {
+        const w = [0, 1, 2].map((k) => { const s = key(indices[t + k]); if (!id.has(s)) id.set(s, id.size); return id.get(s); });
+        if (w[0] === w[1] || w[1] === w[2] || w[2] === w[0]) continue;
+        for (let k = 0; k < 3; k++) directed.set(`${w[k]},${w[(k + 1) % 3]}`, (directed.get(`${w[k]},${w[(k + 1) % 3]}`) ?? 0) + 1);
+    }
+    let unpaired = 0;
+    for (const [e, n] of directed) { const [a, b] = e.split(','); if (n !== 1 || directed.get(`${b},${a}`) !== 1) unpaired++; }
+    return { positions: p, unpaired };
+}, C);
+await page.evaluate(() => window.ctessViewerSetCamera([2.4, 1.8, 3.2], [0, 0, 0]));
+await page.selectOption('#mesh-kind', 'torus');
+const displacedTorus = await viewerState(() => window.ctessViewer?.mesh === 'torus' && window.ctessViewer.displacement &&
+                                                   window.ctessViewer.camera.eye[0] === Math.fround(2.4));
+const moved = await torusPositions();
+await page.uncheck('#displace');
+const plainTorus = await viewerState(() => window.ctessViewer?.mesh === 'torus' && !window.ctessViewer.displacement);
+const still = await torusPositions();
+// |height| <= scale * max |texel + offset| (factor 1), 0.004 * 0.5 with texels in [0, 1]; plus the positions'
+// float rounding (they are about 1.4 in size).
+const bound = 0.004 * 0.5 + 1e-6;
+let largest = 0;
+for (let i = 0; i < still.positions.length; i += 3)
+    largest = Math.max(largest, Math.hypot(...[0, 1, 2].map((k) => moved.positions[i + k] - still.positions[i + k])));
+check(displacedTorus.vertices === plainTorus.vertices && displacedTorus.triangles === plainTorus.triangles &&
+      JSON.stringify(displacedTorus.checksum) === JSON.stringify(plainTorus.checksum),
+      `displaced torus: ${displacedTorus.vertices}/${displacedTorus.triangles}, plain ${plainTorus.vertices}/${plainTorus.triangles}`);
+check(moved.unpaired === 0 && still.unpaired === 0 && largest > 0 && largest <= bound,
+      `displaced torus: ${moved.unpaired} unpaired edges (plain ${still.unpaired}), largest move ${largest}, bound ${bound}`);
+console.log(`displaced torus: closed, ${displacedTorus.triangles} triangles, largest move ${largest.toFixed(5)} (bound ${bound.toFixed(5)})`);
+await page.selectOption('#mesh-kind', 'model');
+
 // ---- the seamed model dropped on the canvas, the camera through the JS hook; CP | uniform again ----
 const seamsEye = [2.2, 1.6, 2.9];
-await page.uncheck('#displace');
 await page.selectOption('#surface', 'pn-aen');
 await page.check('#compare');
 const dropped = await page.evaluateHandle(([name, bytes]) => {
