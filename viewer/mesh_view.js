@@ -319,7 +319,6 @@ export class MeshView {
 
     // One side: the pipeline on the mesh with the pattern, then the draw. Resolves to its counts and timings.
     async drawSide(target, pipeline, mesh, pattern, settings) {
-        const C = pipeline.constants;
         const { surface, dice, eye, viewProj, displacement, wireframe } = settings;
         const projectionScale = Math.fround(target.canvas.height / (2 * Math.tan((this.fovDegrees * Math.PI) / 360)));
         const factorScale = Math.fround(projectionScale / Math.fround(dice));
