@@ -139,8 +139,9 @@ void answer_upload(const httplib::Request& req, httplib::Response& res, Answer a
         if (name.empty())
             throw std::runtime_error("give the file's name: ?name=FILE (its extension picks the reader)");
         const auto* bytes = reinterpret_cast<const std::uint8_t*>(req.body.data());
-        res.set_content(answer(std::span<const std::uint8_t>(bytes, req.body.size()), name),
-                        "application/octet-stream");
+        // Moved into the body (set_content would copy it): a model's answer can be tens of MB.
+        res.body = answer(std::span<const std::uint8_t>(bytes, req.body.size()), name);
+        res.set_header("Content-Type", "application/octet-stream");
     } catch (const std::exception& e) {
         res.status = 400;
         res.set_content(fmt::format("{{\"error\": \"{}\"}}\n", json_escape(e.what())), "application/json");
@@ -187,6 +188,14 @@ int run_serve(int argc, char** argv) {
             return refuse(res, 403, "ctess serve: Origin must be a loopback http origin\n");
         if (!is_safe_path(req.path)) return refuse(res, 400, "ctess serve: bad path\n");
         if (many_ranges) return refuse(res, 416, "ctess serve: at most one byte range\n");
+        // An upload's body is the file's bytes whatever Content-Type the client sent: httplib would parse a
+        // form-urlencoded body into parameters (and refuse one past 8 KiB with an empty 413) and decode a
+        // multipart one. The request is httplib's own non-const object, as for the ranges above.
+        if (upload_target(req.method, req.path)) {
+            auto& headers = const_cast<httplib::Request&>(req).headers;
+            headers.erase("Content-Type");
+            headers.emplace("Content-Type", "application/octet-stream");
+        }
         return httplib::Server::HandlerResponse::Unhandled;
     });
     server.set_file_request_handler(bound_compression);
