@@ -52,11 +52,12 @@ export class WgslPipeline {
 
     // Runs setup (explicit factors, or projected from the mesh) and the prefix sum, then both emit passes, with
     // the blob of the pattern the params name. Returns {patches, vertexCount, triangleCount, vertices,
-    // indices} with the output as GPU buffers.
-    run(params, meshVertices, meshIndices, explicit, indexUsage = 0) {
+    // indices, milliseconds} with the output as GPU buffers. `data` is the displacement's {texels, directions}
+    // (the host's run() options).
+    run(params, meshVertices, meshIndices, explicit, indexUsage = 0, data = {}) {
         const n = params[this.constants.PARAM_PATCH_COUNT];
         return this.host.run(params, meshVertices, meshIndices,
-                             { setup: explicit ? { entry: 'viewer_explicit_setup', groups: n } : undefined, indexUsage });
+                             { ...data, setup: explicit ? { entry: 'viewer_explicit_setup', groups: n } : undefined, indexUsage });
     }
 
     // One CP triangle (three edge factors, floats) or one CP quad (four: q0q1, q1q2, q2q3, q3q0), or with

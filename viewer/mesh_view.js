@@ -1,11 +1,14 @@
-// Mesh view: a built-in icosahedron/icosphere or quad torus run through the whole generated pipeline with the
-// CP or the uniform-density pattern (projected edge factors over a DiceRate, PN or Phong evaluation), drawn
-// shaded with its wireframe, under an orbit camera.
+// Mesh view: a built-in icosahedron/icosphere or quad torus, or the user's own model (.glb, .gltf, .obj, loaded
+// by `ctess serve` through ctess::models exactly as `ctess mesh` loads and prepares it: /api/model), run through
+// the whole generated pipeline with the CP or the uniform-density pattern (projected edge factors over a
+// DiceRate; flat, PN, PN-AEN or Phong evaluation; optional displacement by an uploaded height map), drawn shaded
+// with its wireframe under an orbit camera, optionally side by side with a second pattern (docs/viewer.md).
 import { PATTERN_NAMES } from './ctess_gpu.js';
 
-const FOV_Y = Math.PI / 4;
+const DEFAULT_FOV_DEGREES = 45;
 // The meshes below: position xyz, normal xyz, uv per vertex (checked against the pipeline's MESH_VERTEX_FLOATS).
 const MESH_VERTEX_FLOATS = 8;
+export const SURFACE_NAMES = ['flat', 'pn', 'pn-aen', 'phong'];
 
 // Icosahedron (counter-clockwise seen from outside), optionally split once (each triangle into four).
 function icosphere(levels) {
@@ -33,12 +36,11 @@ function icosphere(levels) {
         const n = Math.hypot(...q), u = q.map((x) => x / n);
         vertices.set([u[0], u[1], u[2], u[0], u[1], u[2], 0.5 + Math.atan2(u[2], u[0]) / (2 * Math.PI), 0.5 - Math.asin(u[1]) / Math.PI], i * MESH_VERTEX_FLOATS);
     });
-    return { vertices, indices: new Uint32Array(f.flat()), patches: f.length };
+    return { vertices, triangles: new Uint32Array(f.flat()), quads: new Uint32Array(0) };
 }
 
-// A torus (major radius 1, minor 0.4) of 12 x 8 quads, with the smooth surface's normals. The pipeline takes
-// triangles only, so each quad q0 q1 q2 q3 (counter-clockwise seen from outside) becomes (q0, q1, q3) and
-// (q2, q3, q1), the halves of cp::split_quad: the diagonal q1q3 is one shared edge and gets one factor.
+// A torus (major radius 1, minor 0.4) of 12 x 8 quads q0 q1 q2 q3 (counter-clockwise seen from outside), with
+// the smooth surface's normals: quad patches on the GPU (docs/shaders.md, "Quads"; docs/algorithm.md §7.2-7.3).
 // Vertices are shared across the seams (the factors are per edge of the indexed mesh); uv is (i / 12, j / 8).
 const TORUS = { major: 1, minor: 0.4, around: 12, across: 8 };
 function torus({ major, minor, around, across }) {
@@ -52,17 +54,62 @@ function torus({ major, minor, around, across }) {
                           i / around, j / across], at(i, j) * MESH_VERTEX_FLOATS);
         }
     }
-    const tris = [];
-    for (let i = 0; i < around; i++) {
-        for (let j = 0; j < across; j++) {
-            const q = [at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)]; // counter-clockwise from outside
-            tris.push([q[0], q[1], q[3]], [q[2], q[3], q[1]]);
-        }
-    }
-    return { vertices, indices: new Uint32Array(tris.flat()), patches: tris.length };
+    const quads = [];
+    for (let i = 0; i < around; i++)
+        for (let j = 0; j < across; j++) quads.push(at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));
+    return { vertices, triangles: new Uint32Array(0), quads: new Uint32Array(quads) };
 }
 const MESHES = { ico0: () => icosphere(0), ico1: () => icosphere(1), torus: () => torus(TORUS) };
 export const MESH_NAMES = Object.keys(MESHES);
+
+// `ctess serve`'s upload answers (tools/ctess/model_upload.hpp): "CTMD", version 1, the JSON header's length,
+// the header, then little-endian 32-bit sections at the offsets the header gives.
+export function parseContainer(buffer) {
+    const bytes = new Uint8Array(buffer);
+    if (bytes.length < 12 || String.fromCharCode(...bytes.subarray(0, 4)) !== 'CTMD')
+        throw new Error('the server answered something other than a ctess container');
+    const view = new DataView(buffer);
+    if (view.getUint32(4, true) !== 1) throw new Error(`container version ${view.getUint32(4, true)}, this viewer reads 1`);
+    const headerBytes = view.getUint32(8, true);
+    const header = JSON.parse(new TextDecoder().decode(bytes.subarray(12, 12 + headerBytes)));
+    const sections = {};
+    for (const s of header.sections) {
+        if (s.offset % 4 || s.offset + 4 * s.count > buffer.byteLength) throw new Error(`container section ${s.name} lies outside the answer`);
+        sections[s.name] = new (s.type === 'f32' ? Float32Array : Uint32Array)(buffer, s.offset, s.count);
+    }
+    return { header, sections };
+}
+
+// POSTs a file to /api/model or /api/height-map; the server's {"error": ...} becomes the thrown message.
+async function upload(endpoint, file) {
+    let r;
+    try {
+        r = await fetch(`api/${endpoint}?name=${encodeURIComponent(file.name)}`, { method: 'POST', body: file });
+    } catch {
+        throw new Error(`${file.name}: models are loaded by \`ctess serve\`, which did not answer`);
+    }
+    if (!r.ok) {
+        const text = await r.text();
+        let message = `HTTP ${r.status}`;
+        try { message = JSON.parse(text).error ?? message; } catch { message = `${message}: ${text.trim()}`; }
+        throw new Error(message);
+    }
+    return parseContainer(await r.arrayBuffer());
+}
+
+// The model as the pipeline takes it, and the box the camera frames.
+function withBounds(mesh) {
+    const v = mesh.vertices, n = v.length / MESH_VERTEX_FLOATS;
+    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < n; i++)
+        for (let k = 0; k < 3; k++) {
+            lo[k] = Math.min(lo[k], v[i * MESH_VERTEX_FLOATS + k]);
+            hi[k] = Math.max(hi[k], v[i * MESH_VERTEX_FLOATS + k]);
+        }
+    const center = lo.map((x, k) => (x + hi[k]) / 2);
+    const radius = Math.max(1e-6, Math.hypot(...hi.map((x, k) => x - lo[k])) / 2);
+    return { ...mesh, patches: mesh.triangles.length / 3 + mesh.quads.length / 4, center, radius };
+}
 
 function mul(a, b) { // column-major 4x4
     const r = new Float32Array(16);
@@ -75,16 +122,18 @@ function perspective(fovY, aspect, near, far) {
     r[0] = f / aspect; r[5] = f; r[10] = far / (near - far); r[11] = -1; r[14] = (near * far) / (near - far);
     return r;
 }
-function lookAt(eye) {
+const sub = (a, b) => a.map((x, k) => x - b[k]);
+function lookAt(eye, target) {
     const norm = (v) => { const l = Math.hypot(...v); return v.map((x) => x / l); };
     const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-    const z = norm(eye), x = norm(cross([0, 1, 0], z)), y = cross(z, x);
+    const z = norm(sub(eye, target));
+    const x = norm(Math.abs(z[1]) > 0.999 ? cross([0, 0, 1], z) : cross([0, 1, 0], z)), y = cross(z, x);
     const d = (a) => -(a[0] * eye[0] + a[1] * eye[1] + a[2] * eye[2]);
     return new Float32Array([x[0], y[0], z[0], 0, x[1], y[1], z[1], 0, x[2], y[2], z[2], 0, d(x), d(y), d(z), 1]);
 }
 
 // The pipeline's output vertex layout (VERTEX_WORDS, VERTEX_POSITION, VERTEX_NORMAL) is the generated module's
-// (its layout.json constants, docs/shaders.md), prefixed to the render shader.
+// (its layout.json constants, docs/shaders.md), prefixed to the render shader. cam.light.w turns the wireframe on.
 const renderWgsl = (C) => ['VERTEX_WORDS', 'VERTEX_POSITION', 'VERTEX_NORMAL'].map((k) => `const ${k}: u32 = ${C[k]}u;`).join('\n') + `
 struct Camera { view_proj: mat4x4<f32>, light: vec4<f32> }
 @group(0) @binding(0) var<uniform> cam: Camera;
@@ -99,57 +148,250 @@ struct VOut { @builtin(position) pos: vec4<f32>, @location(0) normal: vec3<f32>,
     let n = vec3<f32>(verts[o + VERTEX_NORMAL], verts[o + VERTEX_NORMAL + 1u], verts[o + VERTEX_NORMAL + 2u]);
     return VOut(cam.view_proj * vec4<f32>(p, 1.0), n, b);
 }
-@fragment fn fs(in: VOut) -> @location(0) vec4<f32> {
+@fragment fn fs(in: VOut, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
     let w = fwidth(in.bary);
     let a = smoothstep(vec3<f32>(0.0), 1.2 * w, in.bary);
-    let edge = 1.0 - min(min(a.x, a.y), a.z);
-    let n = normalize(in.normal);
+    let edge = (1.0 - min(min(a.x, a.y), a.z)) * cam.light.w;
+    var n = normalize(in.normal);
+    if (!front) { n = -n; }
     let lit = 0.25 + 0.75 * max(dot(n, normalize(cam.light.xyz)), 0.0);
     return vec4<f32>(mix(vec3<f32>(0.55, 0.7, 0.9) * lit, vec3<f32>(0.08, 0.12, 0.2), edge), 1.0);
 }`;
 
-export class MeshView {
-    constructor(canvas, ui, pipeline, redraw) {
-        Object.assign(this, { canvas, ui, pipeline, requestRedraw: redraw });
-        this.camera = { yaw: 0.6, pitch: 0.35, distance: 4 };
-        let drag = null;
-        canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
-        canvas.addEventListener('pointerup', () => { drag = null; });
-        canvas.addEventListener('pointermove', (e) => {
-            if (!drag) return;
-            this.camera.yaw -= (e.clientX - drag[0]) * 0.01;
-            this.camera.pitch = Math.max(-1.5, Math.min(1.5, this.camera.pitch + (e.clientY - drag[1]) * 0.01));
-            drag = [e.clientX, e.clientY];
-            redraw();
-        });
-        canvas.addEventListener('wheel', (e) => {
-            e.preventDefault();
-            this.camera.distance = Math.max(1.3, Math.min(40, this.camera.distance * Math.exp(e.deltaY * 0.001)));
-            redraw();
-        }, { passive: false });
-        for (const el of [ui.kind, ui.surface, ui.dice, ui.pattern]) el.addEventListener('input', () => redraw());
+// FNV-1a (32 bits) over the little-endian bytes of 32-bit words, as `ctess mesh --stats` computes its `gpu`
+// checksums (docs/cli.md, "Models").
+export function fnv1a(hash, words, stride = 1, offsets = [0]) {
+    for (let i = 0; i + stride <= words.length; i += stride)
+        for (const o of offsets) {
+            const w = words[i + o];
+            for (let b = 0; b < 32; b += 8) hash = Math.imul(hash ^ ((w >>> b) & 255), 16777619) >>> 0;
+        }
+    return hash;
+}
+const FNV_BASIS = 2166136261;
+const CHECKSUM_EVERY_FRAME = 1 << 22; // output vertices + triangles of one side
+const hex = (h) => h.toString(16).padStart(8, '0');
+
+// One canvas: its WebGPU context, depth buffer, camera uniform and the output buffers it last drew.
+class Target {
+    constructor(canvas) {
+        this.canvas = canvas;
     }
 
-    attach(device) {
-        this.device = device;
+    attach(device, format) {
         this.context = this.canvas.getContext('webgpu');
-        this.format = navigator.gpu.getPreferredCanvasFormat();
-        this.context.configure({ device, format: this.format, alphaMode: 'opaque' });
-        this.render = null; // made on the first redraw, from the pipeline's vertex layout
+        this.context.configure({ device, format, alphaMode: 'opaque' });
         this.depth = device.createTexture({ size: [this.canvas.width, this.canvas.height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT });
         this.uniform = device.createBuffer({ size: 80, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
     }
 
+    // The buffers of the previous draw are kept until the next one, so checksum() can read them on request.
+    replace(out) {
+        this.out?.vertices?.destroy();
+        this.out?.indices?.destroy();
+        this.out = out;
+    }
+}
+
+export class MeshView {
+    constructor(ui, pipelineFor, redraw, setStatus) {
+        Object.assign(this, { ui, pipelineFor, requestRedraw: redraw, setStatus });
+        this.targets = [new Target(ui.canvas), new Target(ui.canvasB)];
+        this.model = null; // the uploaded model (withBounds), once loaded
+        this.heightMap = null; // {name, width, height, texels}
+        this.camera = null; // {eye, target}: set from the mesh's bounds when null
+        this.cameraFor = null; // the mesh the camera was framed for
+        this.cameraPinned = false; // set exactly (setCamera, ?camera=): kept across meshes until the user moves it
+        this.fovDegrees = DEFAULT_FOV_DEGREES;
+        this.meshCache = new Map();
+        for (const canvas of [ui.canvas, ui.canvasB]) this.listenCamera(canvas);
+        for (const el of [ui.kind, ui.surface, ui.dice, ui.pattern, ui.compare, ui.comparePattern, ui.wireframe, ui.displace,
+                          ui.displaceScale, ui.displaceOffset, ui.displaceAddress])
+            el.addEventListener('input', () => redraw());
+        ui.modelFile.addEventListener('change', () => ui.modelFile.files[0] && this.loadModel(ui.modelFile.files[0]));
+        ui.heightFile.addEventListener('change', () => ui.heightFile.files[0] && this.loadHeightMap(ui.heightFile.files[0]));
+        for (const zone of [ui.dropZone, ui.canvas, ui.canvasB]) {
+            zone.addEventListener('dragover', (e) => { e.preventDefault(); zone.classList.add('dragging'); });
+            zone.addEventListener('dragleave', () => zone.classList.remove('dragging'));
+            zone.addEventListener('drop', (e) => {
+                e.preventDefault();
+                zone.classList.remove('dragging');
+                for (const file of e.dataTransfer.files) {
+                    if (/\.png$/i.test(file.name) || file.type === 'image/png') this.loadHeightMap(file);
+                    else this.loadModel(file);
+                }
+            });
+        }
+    }
+
+    // Orbit (drag) and dolly (wheel) around the camera's target; the eye is the state, so a camera set exactly
+    // (setCamera, ?camera=) stays exact until the user moves it.
+    listenCamera(canvas) {
+        let drag = null;
+        canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
+        canvas.addEventListener('pointerup', () => { drag = null; });
+        canvas.addEventListener('pointermove', (e) => {
+            if (!drag || !this.camera) return;
+            const { yaw, pitch, distance } = this.orbit();
+            this.cameraPinned = false;
+            this.setOrbit(yaw - (e.clientX - drag[0]) * 0.01, Math.max(-1.5, Math.min(1.5, pitch + (e.clientY - drag[1]) * 0.01)), distance);
+            drag = [e.clientX, e.clientY];
+            this.requestRedraw();
+        });
+        canvas.addEventListener('wheel', (e) => {
+            e.preventDefault();
+            if (!this.camera) return;
+            const { yaw, pitch, distance } = this.orbit(), r = this.radius ?? 1;
+            this.cameraPinned = false;
+            this.setOrbit(yaw, pitch, Math.max(0.3 * r, Math.min(60 * r, distance * Math.exp(e.deltaY * 0.001))));
+            this.requestRedraw();
+        }, { passive: false });
+    }
+
+    orbit() {
+        const d = sub(this.camera.eye, this.camera.target), distance = Math.hypot(...d);
+        return { yaw: Math.atan2(d[0], d[2]), pitch: Math.asin(Math.max(-1, Math.min(1, d[1] / distance))), distance };
+    }
+
+    setOrbit(yaw, pitch, distance) {
+        const t = this.camera.target;
+        this.camera.eye = [t[0] + distance * Math.cos(pitch) * Math.sin(yaw), t[1] + distance * Math.sin(pitch),
+                           t[2] + distance * Math.cos(pitch) * Math.cos(yaw)].map(Math.fround);
+    }
+
+    // The automation hook (docs/viewer.md): the eye (and optionally the target) exactly, as float32 values.
+    setCamera(eye, target) {
+        this.camera = { eye: eye.map(Math.fround), target: (target ?? this.camera?.target ?? [0, 0, 0]).map(Math.fround) };
+        this.cameraPinned = true;
+        this.requestRedraw();
+    }
+
+    attach(device) {
+        this.device = device;
+        this.format = navigator.gpu.getPreferredCanvasFormat();
+        for (const t of this.targets) t.attach(device, this.format);
+        this.render = null; // made on the first redraw, from the pipeline's vertex layout
+    }
+
+    async loadModel(file) {
+        try {
+            this.setStatus(`Loading ${file.name} through ctess serve…`);
+            const { header, sections } = await upload('model', file);
+            this.model = withBounds({ name: header.name, header, vertices: sections.vertices, triangles: sections.triangles,
+                                      quads: sections.quads, adjacency: sections.adjacency, directions: sections.directions,
+                                      positionIds: sections.position_ids });
+            this.ui.kindModel.disabled = false;
+            this.ui.kindModel.textContent = `${header.name} (${header.triangle_count} triangles, ${header.quad_count} quads)`;
+            this.ui.modelInfo.textContent = `${header.name}: ${header.vertex_count} vertices, ${header.triangle_count} triangles, ` +
+                `${header.quad_count} quads, ${header.open_edges} open edges` +
+                (header.dropped_degenerate_faces ? `, ${header.dropped_degenerate_faces} degenerate faces dropped` : '') +
+                (header.has_normals ? '' : ' (no normals in the file: zeros, so PN and Phong are flat)');
+            this.ui.kind.value = 'model';
+            if (!this.cameraPinned) this.camera = null; // frame the new model
+            this.ui.kind.dispatchEvent(new Event('change'));
+            this.requestRedraw();
+        } catch (e) {
+            this.setStatus(`Model: ${e.message}`, true);
+            window.ctessViewer = { ...(window.ctessViewer ?? {}), uploadError: e.message };
+        }
+    }
+
+    async loadHeightMap(file) {
+        try {
+            this.setStatus(`Loading ${file.name} through ctess serve…`);
+            const { header, sections } = await upload('height-map', file);
+            this.heightMap = { name: header.name, width: header.width, height: header.height, texels: sections.texels };
+            this.ui.displace.disabled = false;
+            this.ui.displace.checked = true;
+            this.requestRedraw();
+        } catch (e) {
+            this.setStatus(`Height map: ${e.message}`, true);
+            window.ctessViewer = { ...(window.ctessViewer ?? {}), uploadError: e.message };
+        }
+    }
+
+    mesh(kind) {
+        if (kind === 'model' && this.model) return this.model;
+        const name = MESHES[kind] ? kind : 'ico0';
+        if (!this.meshCache.has(name)) this.meshCache.set(name, withBounds({ name, ...MESHES[name]() }));
+        return this.meshCache.get(name);
+    }
+
+    // One side: the pipeline on the mesh with the pattern, then the draw. Resolves to its counts and timings.
+    async drawSide(target, pipeline, mesh, pattern, settings) {
+        const { surface, dice, eye, viewProj, displacement, wireframe } = settings;
+        const projectionScale = Math.fround(target.canvas.height / (2 * Math.tan((this.fovDegrees * Math.PI) / 360)));
+        const factorScale = Math.fround(projectionScale / Math.fround(dice));
+        // PN-AEN reads the adjacency after the indices, and displacement its dominant edges and corners; the
+        // built-in meshes have none (PN-AEN is then PN with every edge a boundary).
+        const adjacency = mesh.adjacency && (surface === 'pn-aen' || displacement) ? mesh.adjacency : null;
+        const indices = new Uint32Array(mesh.triangles.length + mesh.quads.length + (adjacency?.length ?? 0));
+        indices.set(mesh.triangles);
+        indices.set(mesh.quads, mesh.triangles.length);
+        if (adjacency) indices.set(adjacency, mesh.triangles.length + mesh.quads.length);
+        const params = pipeline.params({ patchCount: mesh.patches, quadCount: mesh.quads.length / 4, surface, alpha: 1, factorScale, eye,
+                                         meshVertexCount: mesh.vertices.length / MESH_VERTEX_FLOATS, pattern,
+                                         displacement: displacement && { ...displacement.params, directions: !!mesh.directions, adjacency: !!adjacency } });
+        const out = await pipeline.run(params, mesh.vertices, indices, false, 0,
+                                       displacement ? { texels: displacement.texels, directions: mesh.directions ?? undefined } : {});
+        target.replace(out);
+        const u = new Float32Array(20);
+        u.set(viewProj);
+        u.set([eye[0] - settings.target[0] + 1, eye[1] - settings.target[1] + 2, eye[2] - settings.target[2], wireframe ? 1 : 0], 16);
+        this.device.queue.writeBuffer(target.uniform, 0, u);
+        const bind = this.device.createBindGroup({
+            layout: this.render.getBindGroupLayout(0),
+            entries: [{ binding: 0, resource: { buffer: target.uniform } }, { binding: 1, resource: { buffer: out.vertices } },
+                      { binding: 2, resource: { buffer: out.indices } }],
+        });
+        const enc = this.device.createCommandEncoder();
+        const pass = enc.beginRenderPass({
+            colorAttachments: [{ view: target.context.getCurrentTexture().createView(), clearValue: [1, 1, 1, 1], loadOp: 'clear', storeOp: 'store' }],
+            depthStencilAttachment: { view: target.depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' },
+        });
+        pass.setPipeline(this.render);
+        pass.setBindGroup(0, bind);
+        pass.draw(out.triangleCount * 3);
+        pass.end();
+        this.device.queue.submit([enc.finish()]);
+        return { mode: pattern, vertices: out.vertexCount, triangles: out.triangleCount, computeMs: out.milliseconds,
+                 factorScaleBits: new Uint32Array(new Float32Array([factorScale]).buffer)[0] };
+    }
+
+    // Checksums of a side's last output, as `ctess mesh --stats` reports them under `gpu`: the patch records (48
+    // words each, without the totals), each vertex's (u, v) and the indices.
+    async checksum(side = 0) {
+        const target = this.targets[side], out = target.out, pipeline = await this.lastPipeline;
+        if (!out) return null;
+        const C = pipeline.constants, n = out.patches.length - C.TOTALS_WORDS;
+        const vertices = await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS);
+        const indices = await pipeline.read(out.indices, out.triangleCount * 3);
+        return { records: hex(fnv1a(FNV_BASIS, out.patches.subarray(0, n))),
+                 barycentrics: hex(fnv1a(FNV_BASIS, vertices, C.VERTEX_WORDS, [C.VERTEX_U, C.VERTEX_V])),
+                 indices: hex(fnv1a(FNV_BASIS, indices)) };
+    }
+
     async redraw(maxFactor) {
-        const kind = MESHES[this.ui.kind.value] ? this.ui.kind.value : 'ico0';
-        const mesh = MESHES[kind]();
-        const { yaw, pitch, distance } = this.camera;
-        const eye = [distance * Math.cos(pitch) * Math.sin(yaw), distance * Math.sin(pitch), distance * Math.cos(pitch) * Math.cos(yaw)];
+        let started = performance.now();
+        const kind = this.ui.kind.value === 'model' && this.model ? 'model' : (MESHES[this.ui.kind.value] ? this.ui.kind.value : 'ico0');
+        const mesh = this.mesh(kind);
+        this.radius = mesh.radius;
+        if (!this.camera || (this.cameraFor !== kind && !this.cameraPinned)) {
+            // Frame the mesh: the built-in ones as before (distance 4 from the origin), a model at 2.5 radii.
+            const target = kind === 'model' ? mesh.center : [0, 0, 0];
+            this.camera = { eye: [0, 0, 0], target: target.map(Math.fround) };
+            this.setOrbit(0.6, 0.35, kind === 'model' ? 2.5 * mesh.radius : 4);
+            this.cameraFor = kind;
+        }
+        const { eye, target } = this.camera;
         const dice = Number(this.ui.dice.value);
-        const projectionScale = this.canvas.height / (2 * Math.tan(FOV_Y / 2));
-        const surface = Number(this.ui.surface.value);
-        const pattern = PATTERN_NAMES.includes(this.ui.pattern.value) ? this.ui.pattern.value : 'cp';
-        const pipeline = await this.pipeline();
+        const surface = SURFACE_NAMES.includes(this.ui.surface.value) ? this.ui.surface.value : 'pn';
+        const patterns = [this.ui.pattern.value, this.ui.comparePattern.value].map((p) => (PATTERN_NAMES.includes(p) ? p : 'cp'));
+        const compare = this.ui.compare.checked;
+        this.ui.compareFigure.hidden = !compare;
+        const pipeline = await this.pipelineFor();
+        this.lastPipeline = Promise.resolve(pipeline);
+        started = performance.now(); // the frame: both sides' passes (a pass's first use compiles it) and draws
         const C = pipeline.constants;
         if (C.MESH_VERTEX_FLOATS !== MESH_VERTEX_FLOATS)
             throw new Error(`the generated pipeline reads ${C.MESH_VERTEX_FLOATS} floats per mesh vertex, the viewer's meshes have ${MESH_VERTEX_FLOATS}`);
@@ -163,44 +405,52 @@ export class MeshView {
                 depthStencil: { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' },
             });
         }
-        // The pattern word: uniform factors are rounded and clamped to [1, N] by the setup pass.
-        const params = pipeline.params({ patchCount: mesh.patches, surface, alpha: 1, factorScale: projectionScale / dice, eye,
-                                         meshVertexCount: mesh.vertices.length / MESH_VERTEX_FLOATS, pattern });
-        const out = await pipeline.run(params, new Uint32Array(mesh.vertices.buffer), mesh.indices, false);
-        const uniformMax = pattern === 'uniform' ? (await pipeline.uniformTables()).maxFactor : null;
-        const viewProj = mul(perspective(FOV_Y, this.canvas.width / this.canvas.height, 0.05, 100), lookAt(eye));
-        const u = new Float32Array(20);
-        u.set(viewProj);
-        u.set([eye[0] + 1, eye[1] + 2, eye[2], 0], 16);
-        this.device.queue.writeBuffer(this.uniform, 0, u);
-        const bind = this.device.createBindGroup({
-            layout: this.render.getBindGroupLayout(0),
-            entries: [{ binding: 0, resource: { buffer: this.uniform } }, { binding: 1, resource: { buffer: out.vertices } },
-                      { binding: 2, resource: { buffer: out.indices } }],
-        });
-        const enc = this.device.createCommandEncoder();
-        const pass = enc.beginRenderPass({
-            colorAttachments: [{ view: this.context.getCurrentTexture().createView(), clearValue: [1, 1, 1, 1], loadOp: 'clear', storeOp: 'store' }],
-            depthStencilAttachment: { view: this.depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' },
-        });
-        pass.setPipeline(this.render);
-        pass.setBindGroup(0, bind);
-        pass.draw(out.triangleCount * 3);
-        pass.end();
-        this.device.queue.submit([enc.finish()]);
+        // Displacement (docs/shaders.md, "Displacement"): an uploaded height map, factor 1 as `ctess mesh
+        // --displace FILE`, the scale and offset typed (float32, as the CLI parses them).
+        const h = this.heightMap, displaced = !!(h && this.ui.displace.checked);
+        const [scale, offset] = [this.ui.displaceScale.value, this.ui.displaceOffset.value].map((x) => Math.fround(Number(x)));
+        if (displaced && !(Number.isFinite(scale) && Number.isFinite(offset))) throw new Error('displacement: scale and offset must be finite numbers');
+        const displacement = displaced ? { texels: h.texels, params: { scale, factor: 1, offset, width: h.width, height: h.height,
+                                                                       address: this.ui.displaceAddress.value } } : null;
+        const near = Math.max(1e-4 * mesh.radius, Math.hypot(...sub(eye, target)) - 4 * mesh.radius);
+        const far = Math.hypot(...sub(eye, target)) + 8 * mesh.radius;
+        const canvas = this.targets[0].canvas;
+        const fovY = (this.fovDegrees * Math.PI) / 180;
+        const viewProj = mul(perspective(fovY, canvas.width / canvas.height, Math.max(near, 1e-3 * far), far), lookAt(eye, target));
+        const settings = { surface, dice, eye, target, viewProj, displacement, wireframe: this.ui.wireframe.checked };
+        const sides = [await this.drawSide(this.targets[0], pipeline, mesh, patterns[0], settings)];
+        if (compare) sides.push(await this.drawSide(this.targets[1], pipeline, mesh, patterns[1], settings));
+        else this.targets[1].replace(null);
         await this.device.queue.onSubmittedWorkDone();
-        // What the pipeline wrote, for the test's watertightness check (docs/shaders.md's vertex records).
-        const readback = { vertices: await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS),
-                           indices: await pipeline.read(out.indices, out.triangleCount * 3), records: out.patches };
-        out.vertices.destroy();
-        out.indices.destroy();
+        const frameMs = performance.now() - started;
+        // The built-in meshes' output words, for the test's watertightness checks (docs/shaders.md's vertex records).
+        let readback = null;
+        if (kind !== 'model') {
+            const out = this.targets[0].out;
+            readback = { vertices: await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS),
+                         indices: await pipeline.read(out.indices, out.triangleCount * 3), records: out.patches };
+        }
+        // The checksums of every side's output (read back after the frame, outside its time), up to a size where
+        // reading back each frame stays cheap; beyond it, ctessViewerChecksum() reads them on request.
+        for (let k = 0; k < sides.length; k++)
+            sides[k].checksum = sides[k].vertices + sides[k].triangles <= CHECKSUM_EVERY_FRAME ? await this.checksum(k) : null;
+        const uniformMax = patterns.slice(0, sides.length).includes('uniform') ? (await pipeline.uniformTables()).maxFactor : null;
         this.ui.diceValue.textContent = `${dice} px`;
-        this.ui.vertices.textContent = out.vertexCount;
-        this.ui.triangles.textContent = out.triangleCount;
+        this.ui.patches.textContent = mesh.patches;
+        this.ui.vertices.textContent = sides.map((s) => s.vertices).join(' | ');
+        this.ui.triangles.textContent = sides.map((s) => s.triangles).join(' | ');
+        this.ui.frameTime.textContent = `${frameMs.toFixed(1)} ms (GPU passes ${sides.map((s) => s.computeMs.toFixed(1)).join(' + ')} ms)`;
+        const caption = (s) => `${s.mode === 'uniform' ? 'uniform density' : 'CP'}: ${s.vertices} vertices, ${s.triangles} triangles`;
+        this.ui.captionA.textContent = caption(sides[0]);
+        this.ui.captionB.textContent = compare ? caption(sides[1]) : '';
         window.ctessViewer = {
-            view: 'mesh', mode: pattern, uniformMax, max: maxFactor, mesh: kind, patches: mesh.patches,
-            surface: ['flat', 'pn', 'phong'][surface], diceRate: dice, vertices: out.vertexCount,
-            triangles: out.triangleCount, readback,
+            view: 'mesh', mode: patterns[0], uniformMax, max: maxFactor, mesh: kind, model: kind === 'model' ? this.model.header : null,
+            patches: mesh.patches, quads: mesh.quads.length / 4, surface, diceRate: dice, camera: { eye: [...eye], target: [...target], fov: this.fovDegrees },
+            resolution: [canvas.width, canvas.height], factorScaleBits: sides[0].factorScaleBits,
+            displacement: displaced ? { scale, offset, address: this.ui.displaceAddress.value, width: h.width, height: h.height, name: h.name } : null,
+            wireframe: settings.wireframe, vertices: sides[0].vertices, triangles: sides[0].triangles, checksum: sides[0].checksum,
+            compare: compare ? { mode: patterns[1], vertices: sides[1].vertices, triangles: sides[1].triangles, checksum: sides[1].checksum } : null,
+            ms: { frame: frameMs, compute: sides.map((s) => s.computeMs) }, readback,
         };
         return window.ctessViewer;
     }

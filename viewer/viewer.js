@@ -4,7 +4,7 @@
 // zeroArea, ratioToD3d11Even, sides, corners, readback} for automation (docs/viewer.md);
 // ?view=pattern|mesh&mode=cp&factors=10.3,6,3&max=64 sets the starting state.
 import { openDevice, WgslPipeline } from './ctess_gpu.js';
-import { MeshView, MESH_NAMES } from './mesh_view.js';
+import { MeshView, MESH_NAMES, SURFACE_NAMES } from './mesh_view.js';
 
 const MODES = ['cp', 'd3d11-integer', 'd3d11-pow2', 'd3d11-odd', 'd3d11-even', 'uniform'];
 const $ = (id) => document.getElementById(id);
@@ -236,8 +236,10 @@ async function redraw() {
             if (state.view === 'pattern') await redrawPattern();
             else {
                 const m = await meshView.redraw(state.max);
-                const pattern = m.mode === 'uniform' ? `uniform density, factors clamped to [1, ${m.uniformMax}]` : 'CP';
-                setStatus(`mesh · ${pattern} · ${m.surface} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
+                const name = (mode) => (mode === 'uniform' ? `uniform density, factors clamped to [1, ${m.uniformMax}]` : 'CP');
+                setStatus(`mesh · ${m.model ? m.model.name : m.mesh} · ${name(m.mode)}${m.compare ? ` | ${name(m.compare.mode)}` : ''} · ` +
+                          `${m.surface}${m.displacement ? ' displaced' : ''} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
+                syncUrl();
             }
         } while (pending);
     } catch (e) {
@@ -303,6 +305,14 @@ function syncUrl() {
     if (state.view === 'mesh') {
         q.set('mesh', $('mesh-kind').value);
         q.set('pattern', $('mesh-pattern').value);
+        q.set('surface', $('surface').value);
+        q.set('dice', $('dice').value);
+        if ($('compare').checked) q.set('compare', $('compare-pattern').value);
+        if (!$('wireframe').checked) q.set('wireframe', '0');
+        if (meshView.cameraPinned && meshView.camera) {
+            q.set('camera', meshView.camera.eye.join(','));
+            q.set('target', meshView.camera.target.join(','));
+        }
     }
     history.replaceState(null, '', `?${q}`);
 }
@@ -380,16 +390,37 @@ $('play').addEventListener('click', () => {
     step();
 });
 
-const meshView = new MeshView($('mesh-canvas'), {
-    kind: $('mesh-kind'), pattern: $('mesh-pattern'), surface: $('surface'), dice: $('dice'), diceValue: $('dice-value'),
-    vertices: $('mesh-vertices'), triangles: $('mesh-triangles'),
-}, () => pipelineFor(state.max), redraw);
+const meshView = new MeshView({
+    canvas: $('mesh-canvas'), canvasB: $('mesh-canvas-b'), compareFigure: $('compare-figure'), captionA: $('caption-a'),
+    captionB: $('caption-b'), kind: $('mesh-kind'), kindModel: $('mesh-kind-model'), pattern: $('mesh-pattern'),
+    compare: $('compare'), comparePattern: $('compare-pattern'), surface: $('surface'), dice: $('dice'),
+    diceValue: $('dice-value'), wireframe: $('wireframe'), displace: $('displace'), displaceScale: $('displace-scale'),
+    displaceOffset: $('displace-offset'), displaceAddress: $('displace-address'), modelFile: $('model-file'),
+    heightFile: $('height-file'), dropZone: $('drop-zone'), modelInfo: $('model-info'), patches: $('mesh-patches'),
+    vertices: $('mesh-vertices'), triangles: $('mesh-triangles'), frameTime: $('frame-time'),
+}, () => pipelineFor(state.max), redraw, setStatus);
+// Automation (docs/viewer.md): the camera exactly (float32 eye and target, world units), and the checksums of a
+// side's output buffers (0: the left canvas, 1: the side-by-side one), as `ctess mesh --stats` reports them.
+window.ctessViewerSetCamera = (eye, target) => meshView.setCamera(eye, target);
+window.ctessViewerChecksum = (side = 0) => meshView.checksum(side);
 
 // ---- start ----
+const numbers = (text, count) => {
+    const v = (text ?? '').split(',').map(Number);
+    return v.length === count && v.every(Number.isFinite) ? v : null;
+};
 if (MESH_NAMES.includes(query.get('mesh'))) $('mesh-kind').value = query.get('mesh');
 if (['cp', 'uniform'].includes(query.get('pattern'))) $('mesh-pattern').value = query.get('pattern');
-$('mesh-kind').addEventListener('change', syncUrl);
-$('mesh-pattern').addEventListener('change', syncUrl);
+if (SURFACE_NAMES.includes(query.get('surface'))) $('surface').value = query.get('surface');
+if (Number(query.get('dice')) > 0) $('dice').value = query.get('dice');
+if (['cp', 'uniform'].includes(query.get('compare'))) {
+    $('compare').checked = true;
+    $('compare-pattern').value = query.get('compare');
+}
+if (query.get('wireframe') === '0') $('wireframe').checked = false;
+if (numbers(query.get('camera'), 3)) meshView.setCamera(numbers(query.get('camera'), 3), numbers(query.get('target'), 3) ?? [0, 0, 0]);
+for (const id of ['mesh-kind', 'mesh-pattern', 'surface', 'dice', 'compare', 'compare-pattern', 'wireframe'])
+    $(id).addEventListener('change', syncUrl);
 if (state.domain === 'quad') {
     $('sweep-from').value = '1,1,1,1';
     $('sweep-to').value = '8,8,8,8';

@@ -6,7 +6,10 @@
 #include "mesh_cli_support.hpp"
 #include "support/cli_run.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -183,4 +186,44 @@ TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][me
         {"--in " + cube + " --factor 2 --max-triangles 0 --out " + out, 2, "--max-triangles"},
     };
     ctess::test::check_refused(cases, out);
+}
+
+TEST_CASE("ctess mesh --stats: the gpu block is the unwelded pipeline's, for the shaders' options only",
+          "[cli][mesh]") {
+    const std::string in = scratch("mixed_cube_gpu.obj");
+    write_file(in, mixed_cube_obj());
+    const std::string camera = " --dice-rate 3 --camera 2.5,1.7,3.1 --fov 45 --resolution 640,600";
+    const nlohmann::json cp = stats("--in " + in + camera);
+    REQUIRE(cp.contains("gpu"));
+    const nlohmann::json& g = cp["gpu"];
+    CHECK(g["pattern"] == "cp");
+    CHECK(g["patches"] == 8); // 4 triangles and 4 quads, one patch each
+    // Every patch keeps its own corner and edge points: at least as many vertices and triangles as the weld.
+    CHECK(g["vertices"].get<long>() > cp["output_vertices"].get<long>());
+    CHECK(g["triangles"].get<long>() >= cp["output_triangles"].get<long>());
+    // The factor scale the shaders get: 600 / (2 tan(22.5 deg)) / 3 as a float.
+    const float scale = static_cast<float>(600 / (2 * std::tan(22.5 * 3.14159265358979323846 / 180))) / 3.0f;
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &scale, 4);
+    CHECK(g["factor_scale_bits"] == bits);
+    // Records, barycentrics and indices do not depend on the surface (positions, left out, do).
+    for (const char* surface : {"pn", "pn-aen", "phong"}) {
+        const nlohmann::json other = stats("--in " + in + camera + " --surface " + surface);
+        CHECK(other["gpu"]["checksum"] == g["checksum"]);
+        CHECK(other["gpu"]["triangles"] == g["triangles"]);
+    }
+    // Another camera, other factors: other records.
+    const nlohmann::json moved = stats("--in " + in + " --dice-rate 3 --camera 2.5,1.7,3.2");
+    CHECK(moved["gpu"]["checksum"]["records"] != g["checksum"]["records"]);
+    // Uniform: the shaders clamp to N = 16 where `ctess mesh` splits. A close camera asks for more.
+    const nlohmann::json uniform =
+        stats("--in " + in + " --pattern uniform --dice-rate 1 --camera 0.5,0.5,1.6");
+    CHECK(uniform["gpu"]["pattern"] == "uniform");
+    CHECK(uniform["clamped_edges"] == 0);
+    CHECK(uniform["gpu"]["clamped_edges"].get<long>() > 0);
+    CHECK(uniform["gpu"]["triangles"].get<long>() < uniform["output_triangles"].get<long>());
+    // No block where the shaders cannot run the options: D3D11 patterns, the CPU's factor modes.
+    CHECK_FALSE(stats("--in " + in + " --pattern d3d11-even" + camera).contains("gpu"));
+    CHECK_FALSE(stats("--in " + in + " --factor 4").contains("gpu"));
+    CHECK_FALSE(stats("--in " + in + " --edge-length 0.1").contains("gpu"));
 }

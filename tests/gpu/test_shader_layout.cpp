@@ -118,9 +118,9 @@ TEST_CASE("the shader templates restate no generated constant") {
 }
 
 TEST_CASE("the JS hosts and the viewer take their layout from layout.json") {
-    for (const char* path :
-         {"shaders/ctess_webgpu.mjs", "tests/gpu/run_wgsl.mjs", "viewer/ctess_gpu.js", "viewer/mesh_view.js",
-          "viewer/explicit_factors.wgsl", "tests/viewer/test_viewer.mjs"}) {
+    for (const char* path : {"shaders/ctess_webgpu.mjs", "tests/gpu/run_wgsl.mjs", "viewer/ctess_gpu.js",
+                             "viewer/mesh_view.js", "viewer/explicit_factors.wgsl",
+                             "tests/viewer/test_viewer.mjs", "tests/viewer/test_viewer_models.mjs"}) {
         INFO(path);
         const std::string text = source(path);
         CHECK(!contains(text, "ctess_cp"));

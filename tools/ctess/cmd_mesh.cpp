@@ -8,6 +8,7 @@
 #include "file_output.hpp"
 #include "json_escape.hpp"
 #include "model_formats.hpp"
+#include "model_prep.hpp"
 
 #include <ctess/runtime/cp/table_set.hpp>
 #include <ctess/runtime/displace/displace.hpp>
@@ -20,8 +21,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,15 +38,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string extension_of(const std::string& path) {
-    const auto dot = path.find_last_of('.');
-    const auto slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot + 1);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
 }
 
 rt::Vec3 parse_vec3(const std::string& text, const std::string& what) {
@@ -217,6 +211,66 @@ EdgeQuantiles longest_edges(const OutputMesh& mesh, const rt::DiceOptions& dice)
     return q;
 }
 
+// FNV-1a (32 bits) over the little-endian bytes of 32-bit words: the checksum the viewer computes over the
+// GPU's output buffers too (docs/cli.md, "Models": `gpu`).
+std::uint32_t fnv1a_words(std::uint32_t hash, std::span<const std::uint32_t> words) {
+    for (const std::uint32_t w : words)
+        for (unsigned byte = 0; byte < 4; ++byte) {
+            hash ^= (w >> (8 * byte)) & 0xFFu;
+            hash *= 16777619u;
+        }
+    return hash;
+}
+constexpr std::uint32_t fnv1a_basis = 2166136261u;
+
+// What the generated shaders write for these options, which a GPU host can match bit for bit: the unwelded
+// pipeline's counts (setup_patches, emit_mesh: every patch's own vertices, docs/shaders.md) and checksums of
+// its exact words, the patch records (48 words each, without the totals), each vertex's base weights (u, v)
+// and the indices. Positions, normals and uvs are left out: they agree with the GPU's within a bound only
+// (docs/shaders.md, "Bit-exactness"). The shaders take the camera factor mode and the cp and uniform
+// patterns; their uniform pattern clamps factors to [1, N] where `ctess mesh --pattern uniform` splits
+// (docs/algorithm.md §7.5), and this block is the clamped one.
+struct GpuReference {
+    bool present = false;
+    std::uint64_t patches = 0;
+    rt::PipelineTotals totals;
+    std::uint32_t factor_scale_bits = 0;
+    std::uint32_t records = fnv1a_basis, barycentrics = fnv1a_basis, indices = fnv1a_basis;
+    double seconds = 0;
+};
+
+GpuReference gpu_reference(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform,
+                           const rt::MeshView& view, rt::PipelineOptions options, const std::string& in) {
+    GpuReference g;
+    if (options.dice.mode != rt::FactorMode::camera ||
+        (options.pattern != rt::Pattern::cp && options.pattern != rt::Pattern::uniform_split))
+        return g;
+    const auto start = Clock::now();
+    if (options.pattern == rt::Pattern::uniform_split) options.pattern = rt::Pattern::uniform;
+    std::vector<rt::PatchRecord> records(view.patch_count());
+    rt::PipelineStatus status = rt::setup_patches(cp, uniform, view, options, records, g.totals);
+    if (status == rt::PipelineStatus::ok) {
+        std::vector<rt::TessVertex> vertices(g.totals.vertices);
+        std::vector<std::uint32_t> indices(3 * std::size_t{g.totals.triangles});
+        status = rt::emit_mesh(cp, uniform, view, options, records, vertices, indices);
+        for (const rt::PatchRecord& r : records) {
+            std::uint32_t words[sizeof(rt::PatchRecord) / 4];
+            std::memcpy(words, &r, sizeof words);
+            g.records = fnv1a_words(g.records, words);
+        }
+        for (const rt::TessVertex& v : vertices) g.barycentrics = fnv1a_words(g.barycentrics, {{v.u, v.v}});
+        g.indices = fnv1a_words(g.indices, indices);
+    }
+    if (status != rt::PipelineStatus::ok)
+        throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+    g.present = true;
+    g.patches = view.patch_count();
+    const float scale = options.dice.factor_scale();
+    std::memcpy(&g.factor_scale_bits, &scale, 4);
+    g.seconds = seconds_since(start);
+    return g;
+}
+
 void check_triangle_limit(const std::string& in, std::uint32_t triangles, unsigned max_triangles) {
     if (triangles > max_triangles)
         throw std::runtime_error(
@@ -273,27 +327,14 @@ int run_mesh(int argc, char** argv) {
     auto start = Clock::now();
     models::LoadResult loaded = models::load_model(in);
     if (!loaded) throw std::runtime_error(loaded.error.message);
-    const models::Model& model = *loaded.model;
     seconds.load = seconds_since(start);
 
     start = Clock::now();
-    const models::Adjacency adjacency = models::build_adjacency(model);
-    const std::size_t input_open_edges = models::open_edge_count(model, adjacency.position_ids);
+    const PreparedModel prepared = prepare_model(std::move(*loaded.model), in);
+    const models::Model& model = prepared.model;
+    const std::size_t input_open_edges = prepared.open_edges;
+    const rt::MeshView view = prepared.view();
     seconds.adjacency = seconds_since(start);
-
-    // The pipeline counts in 32 bits (the GPU's words); the loaders' own bounds keep models far below.
-    if (model.vertex_count() > 0xFFFFFFFFu || model.triangle_count() > 0xFFFFFFFFu ||
-        model.quad_count() > 0xFFFFFFFFu)
-        throw std::runtime_error(fmt::format("{}: more than 2^32 - 1 vertices or faces", in));
-    rt::MeshView view;
-    view.vertices = model.vertices.data();
-    view.vertex_count = static_cast<std::uint32_t>(model.vertex_count());
-    view.indices = model.triangles.data();
-    view.triangle_count = static_cast<std::uint32_t>(model.triangle_count());
-    view.quad_indices = model.quads.data();
-    view.quad_count = static_cast<std::uint32_t>(model.quad_count());
-    view.position_ids = adjacency.position_ids.data();      // seams order their edges by position
-    view.adjacency = adjacency.tessellation_indices.data(); // PN-AEN's neighbours, dominant edges and corners
 
     // Displacement (docs/algorithm.md §8): the height map, one direction per position, the options.
     models::HeightImage height_image;
@@ -307,9 +348,7 @@ int run_mesh(int argc, char** argv) {
             throw std::runtime_error(in + ": --displace-vector: the model has no texture coordinates (the "
                                           "tangent frame comes from their gradients)");
         height_image = load_displacement_image(displace, in, model);
-        directions.resize(3 * model.vertex_count());
-        if (!rt::welded_directions(view, directions))
-            throw std::runtime_error(in + ": cannot compute the displacement directions");
+        directions = displacement_directions(prepared, in);
         displacement.map = height_image.view(displace.address);
         displacement.scale = displace.scale;
         displacement.factor = displace.from_gltf ? model.displacement.factor : 1.0f;
@@ -405,6 +444,14 @@ int run_mesh(int argc, char** argv) {
                             displace.vector ? "vector" : "scalar", tangent_source, height_image.channels,
                             height_image.width, height_image.height, rt::displacement_bound(displacement),
                             displacement.factor_bound);
+        if (const GpuReference g = gpu_reference(cp, uniform, view, options, in); g.present)
+            text +=
+                fmt::format("  \"gpu\": {{\"pattern\": \"{}\", \"patches\": {}, \"vertices\": {}, "
+                            "\"triangles\": {}, \"clamped_edges\": {}, \"factor_scale_bits\": {}, "
+                            "\"checksum\": {{\"records\": \"{:08x}\", \"barycentrics\": \"{:08x}\", "
+                            "\"indices\": \"{:08x}\"}}, \"seconds\": {:.6f}}},\n",
+                            pattern, g.patches, g.totals.vertices, g.totals.triangles, g.totals.clamped_edges,
+                            g.factor_scale_bits, g.records, g.barycentrics, g.indices, g.seconds);
         if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
             text +=
                 fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "

@@ -7,6 +7,7 @@
 #include "json_escape.hpp"
 #include "mesh.hpp"
 #include "mesh_formats.hpp"
+#include "model_upload.hpp"
 #include "serve_loop.hpp"
 
 #include <httplib.h>
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 #include <fmt/core.h>
@@ -127,6 +129,26 @@ void bound_compression(const httplib::Request& req, const httplib::Response& res
     if (res.body.size() > kMaxCompressedBody) set_accepted_coding(req, false);
 }
 
+// POST /api/model?name=FILE and /api/height-map?name=FILE: the body is the file's bytes, the answer the
+// library's reading of it in model_upload.hpp's container, or 400 and {"error": "..."} naming the problem.
+// The loop has bounded the body (ServeLimits::max_upload_body) and the number of uploads at once.
+template <class Answer>
+void answer_upload(const httplib::Request& req, httplib::Response& res, Answer answer) {
+    try {
+        const std::string name = req.get_param_value("name");
+        if (name.empty())
+            throw std::runtime_error("give the file's name: ?name=FILE (its extension picks the reader)");
+        const auto* bytes = reinterpret_cast<const std::uint8_t*>(req.body.data());
+        // Moved into the body (set_content would copy it): a model's answer can be tens of MB.
+        res.body = answer(std::span<const std::uint8_t>(bytes, req.body.size()), name);
+        res.set_header("Content-Type", "application/octet-stream");
+    } catch (const std::exception& e) {
+        res.status = 400;
+        res.set_content(fmt::format("{{\"error\": \"{}\"}}\n", json_escape(e.what())), "application/json");
+    }
+    bound_compression(req, res);
+}
+
 httplib::Server::HandlerResponse refuse(httplib::Response& res, int status, const char* why) {
     res.status = status;
     res.set_content(why, "text/plain");
@@ -166,6 +188,14 @@ int run_serve(int argc, char** argv) {
             return refuse(res, 403, "ctess serve: Origin must be a loopback http origin\n");
         if (!is_safe_path(req.path)) return refuse(res, 400, "ctess serve: bad path\n");
         if (many_ranges) return refuse(res, 416, "ctess serve: at most one byte range\n");
+        // An upload's body is the file's bytes whatever Content-Type the client sent: httplib would parse a
+        // form-urlencoded body into parameters (and refuse one past 8 KiB with an empty 413) and decode a
+        // multipart one. The request is httplib's own non-const object, as for the ranges above.
+        if (upload_target(req.method, req.path)) {
+            auto& headers = const_cast<httplib::Request&>(req).headers;
+            headers.erase("Content-Type");
+            headers.emplace("Content-Type", "application/octet-stream");
+        }
         return httplib::Server::HandlerResponse::Unhandled;
     });
     server.set_file_request_handler(bound_compression);
@@ -178,6 +208,13 @@ int run_serve(int argc, char** argv) {
                             "application/json");
         }
         bound_compression(req, res);
+    });
+
+    server.Post("/api/model", [](const httplib::Request& req, httplib::Response& res) {
+        answer_upload(req, res, model_answer);
+    });
+    server.Post("/api/height-map", [](const httplib::Request& req, httplib::Response& res) {
+        answer_upload(req, res, height_map_answer);
     });
 
     const char* host = "127.0.0.1"; // loopback only: the viewer is a local tool

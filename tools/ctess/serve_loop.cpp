@@ -146,6 +146,8 @@ struct Framing {
     std::size_t size = 0; // head and body bytes, when whole
     int status = 0;       // when refused
     bool api = false;     // costly_target: the /api/ lane
+    bool json = false;    // an /api/ target: a refusal is {"error": ...}
+    bool upload = false;  // upload_target: the larger body bound, one of the upload slots
 };
 
 // Finds where the first buffered request ends (RFC 9112 §6: Content-Length frames a request body; a request
@@ -162,9 +164,18 @@ Framing frame_request(std::string_view in, const ServeLimits& limits) {
     const std::string_view line = head.substr(0, line_end);
     const std::size_t sp = line.find(' ');
     if (sp != std::string_view::npos) {
-        const std::string_view target = line.substr(sp + 1);
-        f.api = costly_target(target.substr(0, target.find(' ')));
+        std::string_view target = line.substr(sp + 1);
+        target = target.substr(0, target.find(' '));
+        f.api = costly_target(target);
+        f.json = target.substr(0, 5) == "/api/";
+        f.upload = upload_target(line.substr(0, sp), target);
     }
+    const auto refused = [&](int status) {
+        Framing r = f;
+        r.kind = Framing::Kind::refuse;
+        r.status = status;
+        return r;
+    };
     std::size_t body = 0;
     bool has_length = false;
     for (std::size_t at = line_end + 2; at < head.size();) {
@@ -175,15 +186,15 @@ Framing frame_request(std::string_view in, const ServeLimits& limits) {
         if (colon == std::string_view::npos) continue; // httplib answers malformed lines itself
         const std::string_view name = field.substr(0, colon);
         const std::string_view value = trim(field.substr(colon + 1));
-        if (iequals(name, "Transfer-Encoding")) return {Framing::Kind::refuse, 0, 501, f.api};
+        if (iequals(name, "Transfer-Encoding")) return refused(501);
         if (!iequals(name, "Content-Length")) continue;
         if (has_length || value.empty() || value.size() > 9 ||
             value.find_first_not_of("0123456789") != std::string_view::npos)
-            return {Framing::Kind::refuse, 0, 400, f.api};
+            return refused(400);
         has_length = true;
         body = static_cast<std::size_t>(std::stoul(std::string(value)));
     }
-    if (body > limits.max_request_body) return {Framing::Kind::refuse, 0, 413, f.api};
+    if (body > (f.upload ? limits.max_upload_body : limits.max_request_body)) return refused(413);
     f.size = head_end + 4 + body;
     f.kind = in.size() >= f.size ? Framing::Kind::whole : Framing::Kind::incomplete;
     return f;
@@ -207,13 +218,16 @@ const char* reason(int status) {
 }
 
 // The loop's own refusals: small enough for the socket buffer, sent once without waiting, then the socket
-// is closed.
-void refuse_and_close(int fd, int status) {
-    const std::string body = std::string("ctess serve: ") + reason(status) + "\n";
-    const std::string reply =
-        "HTTP/1.1 " + std::to_string(status) + " " + reason(status) +
-        "\r\nContent-Type: text/plain\r\nContent-Length: " + std::to_string(body.size()) +
-        "\r\nConnection: close\r\n\r\n" + body;
+// is closed. An /api/ target gets {"error": "..."} as the endpoints' own errors (docs/cli.md), with `detail`
+// (ASCII, no quotes) saying which bound it passed.
+void refuse_and_close(int fd, int status, bool json = false, const std::string& detail = "") {
+    const std::string text =
+        std::string("ctess serve: ") + reason(status) + (detail.empty() ? "" : ": " + detail);
+    const std::string body = json ? "{\"error\": \"" + text + "\"}\n" : text + "\n";
+    const std::string reply = "HTTP/1.1 " + std::to_string(status) + " " + reason(status) +
+                              "\r\nContent-Type: " + (json ? "application/json" : "text/plain") +
+                              "\r\nContent-Length: " + std::to_string(body.size()) +
+                              "\r\nConnection: close\r\n\r\n" + body;
     [[maybe_unused]] const ssize_t n = ::send(fd, reply.data(), reply.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
     ::shutdown(fd, SHUT_WR);
     // Unread input makes close() send a reset, which can discard the answer before the client reads it.
@@ -224,6 +238,16 @@ void refuse_and_close(int fd, int status) {
 }
 
 } // namespace
+
+bool api_request(std::string_view in) {
+    const std::size_t sp = in.find(' ');
+    return sp != std::string_view::npos && in.substr(sp + 1, 5) == "/api/";
+}
+
+bool upload_target(std::string_view method, std::string_view target) {
+    const std::string_view path = target.substr(0, target.find('?'));
+    return method == "POST" && (path == "/api/model" || path == "/api/height-map");
+}
 
 // A worker lane: a bounded queue of whole requests and its threads.
 struct ServeWorker {
@@ -352,15 +376,22 @@ bool BoundedServer::serve_forever() {
         std::size_t answered = 0;
         std::string peer_ip;
         int peer_port = 0;
+        bool upload = false; // holds an upload slot: its request is being buffered or answered
     };
     std::unordered_map<int, Connection> connections;
+    std::size_t uploads = 0; // upload slots held
     std::list<int> order; // non-busy connections, longest-waiting first: the one a new connection displaces
 
-    const auto close_connection = [&](int fd, int status) {
+    const auto release_upload = [&](Connection& c) {
+        if (c.upload) --uploads;
+        c.upload = false;
+    };
+    const auto close_connection = [&](int fd, int status, bool json = false, const std::string& detail = "") {
         Connection& c = connections.at(fd);
         if (!c.busy) order.erase(c.waiting);
+        release_upload(c);
         if (status)
-            refuse_and_close(fd, status);
+            refuse_and_close(fd, status, json, detail);
         else
             ::close(fd);
         connections.erase(fd);
@@ -374,8 +405,21 @@ bool BoundedServer::serve_forever() {
     const auto dispatch = [&](int fd) {
         Connection& c = connections.at(fd);
         const Framing f = frame_request(c.in, limits_);
+        if (f.kind == Framing::Kind::refuse) {
+            const std::size_t limit = f.upload ? limits_.max_upload_body : limits_.max_request_body;
+            return close_connection(
+                fd, f.status, f.json,
+                f.status == 413 ? "the body is larger than " + std::to_string(limit) + " bytes" : "");
+        }
+        // An upload takes a slot as soon as its head says so, before its body is buffered.
+        if (f.upload && !c.upload) {
+            if (uploads >= limits_.max_uploads)
+                return close_connection(fd, 503, f.json,
+                                        std::to_string(uploads) + " uploads are in progress, try again");
+            c.upload = true;
+            ++uploads;
+        }
         if (f.kind == Framing::Kind::incomplete) return;
-        if (f.kind == Framing::Kind::refuse) return close_connection(fd, f.status);
         const bool last = c.answered + 1 >= limits_.max_requests_per_connection;
         ServeWorker::Job job{fd, c.in.substr(0, f.size), last, c.peer_ip, c.peer_port};
         if (!(f.api ? api : files).push(std::move(job))) return close_connection(fd, 503);
@@ -386,6 +430,7 @@ bool BoundedServer::serve_forever() {
     };
 
     std::vector<pollfd> polled;
+    std::vector<char> buf(std::size_t{1} << 16); // one receive; uploads arrive in these steps
     for (;;) {
         polled.clear();
         polled.push_back({listen_fd_, POLLIN, 0});
@@ -419,6 +464,7 @@ bool BoundedServer::serve_forever() {
             }
             for (const auto& d : finished) {
                 Connection& c = connections.at(d.fd);
+                release_upload(c);
                 start_waiting(d.fd, c);
                 if (!d.keep_open)
                     close_connection(d.fd, 0);
@@ -433,14 +479,16 @@ bool BoundedServer::serve_forever() {
             const auto it = connections.find(fd);
             if (it == connections.end() || it->second.busy) continue;
             Connection& c = it->second;
-            char buf[16384];
-            const std::size_t room = limits_.max_request_head + limits_.max_request_body - c.in.size();
-            const ssize_t n = ::recv(fd, buf, std::min(sizeof buf, room + 1), 0);
+            // One byte past the bound, so that frame_request sees a request too large and refuses it.
+            const std::size_t limit =
+                limits_.max_request_head + (c.upload ? limits_.max_upload_body : limits_.max_request_body);
+            const std::size_t room = limit > c.in.size() ? limit - c.in.size() : 0;
+            const ssize_t n = ::recv(fd, buf.data(), std::min(buf.size(), room + 1), 0);
             if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
                 close_connection(fd, 0);
                 continue;
             }
-            if (n > 0) c.in.append(buf, static_cast<std::size_t>(n));
+            if (n > 0) c.in.append(buf.data(), static_cast<std::size_t>(n));
             dispatch(fd);
         }
 
@@ -450,7 +498,10 @@ bool BoundedServer::serve_forever() {
         std::vector<int> late;
         for (const auto& [fd, c] : connections)
             if (!c.busy && c.deadline <= now) late.push_back(fd);
-        for (const int fd : late) close_connection(fd, connections.at(fd).in.empty() ? 0 : 408);
+        for (const int fd : late) {
+            const std::string_view in = connections.at(fd).in;
+            close_connection(fd, in.empty() ? 0 : 408, api_request(in));
+        }
 
         if (polled[0].revents) {
             for (;;) {

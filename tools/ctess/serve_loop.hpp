@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace ctess::cli {
 
@@ -18,6 +19,11 @@ struct ServeLimits {
     std::size_t max_connections = 512;    // open at once; a new one closes the longest-waiting non-busy one
     std::size_t max_request_head = 16384; // request line and headers, bytes (431 beyond)
     std::size_t max_request_body = 65536; // Content-Length bytes (413 beyond; chunked bodies get 501)
+    // POST /api/model and /api/height-map (upload_target): their bodies may be this large (413 beyond), and
+    // at most max_uploads of them are buffered or being answered at once (503 beyond), so uploads bound
+    // memory.
+    std::size_t max_upload_body = std::size_t{64} << 20;
+    std::size_t max_uploads = 2;
     std::chrono::milliseconds request_deadline{10000}; // a whole request must arrive within this (408/close)
     std::chrono::milliseconds write_deadline{10000};   // the client must take a whole response within this
     unsigned file_workers = 4;                         // static files and refusals
@@ -26,6 +32,13 @@ struct ServeLimits {
     std::size_t max_requests_per_connection = 1000;
     int listen_backlog = 1024; // the kernel caps it at net.core.somaxconn
 };
+
+// Whether a request line's method and target are an upload (POST /api/model or /api/height-map, any query).
+bool upload_target(std::string_view method, std::string_view target);
+
+// Whether a buffered request (its request line may still be partial) is for an /api/ target, whose refusals
+// are JSON.
+bool api_request(std::string_view in);
 
 // An httplib::Server whose routes are set as usual, served by the loop above instead of httplib's listen().
 class BoundedServer : public httplib::Server {

@@ -183,21 +183,57 @@ HeightMapResult decode_exr(std::span<const std::uint8_t> bytes, const std::strin
     image.channels = wanted;
     image.width = static_cast<std::uint32_t>(w);
     image.height = static_cast<std::uint32_t>(h);
+    // Every chunk's info (its place, read from the chunk table and the chunk's own leader) is read and
+    // checked first, then the image is allocated and the chunks decoded: a file with a damaged chunk
+    // allocates nothing.
+    std::int32_t lines = 0;
+    if (storage == EXR_STORAGE_SCANLINE) {
+        if (const exr_result_t r = exr_get_scanlines_per_chunk(ctxt, 0, &lines);
+            r != EXR_ERR_SUCCESS || lines <= 0)
+            return core_fail("read the chunk height", r);
+    }
+    const auto for_each_chunk = [&](auto&& per_chunk) -> exr_result_t {
+        const bool tiled = storage == EXR_STORAGE_TILED;
+        const std::uint64_t across = tiled ? (w + tile_w - 1) / tile_w : 1,
+                            down = tiled ? (h + tile_h - 1) / tile_h
+                                         : (h + static_cast<std::uint64_t>(lines) - 1) /
+                                               static_cast<std::uint64_t>(lines);
+        for (std::uint64_t j = 0; j < down; ++j)
+            for (std::uint64_t i = 0; i < across; ++i) {
+                exr_chunk_info_t chunk{};
+                exr_result_t r =
+                    tiled
+                        ? exr_read_tile_chunk_info(ctxt, 0, static_cast<int>(i), static_cast<int>(j), 0, 0,
+                                                   &chunk)
+                        : exr_read_scanline_chunk_info(
+                              ctxt, 0, static_cast<int>(window.min.y + static_cast<std::int64_t>(j) * lines),
+                              &chunk);
+                // The chunk's place in the image: a scan-line chunk names its first line, a tile its column
+                // and row (openexr_chunkio.h); it must lie inside the image.
+                const std::int64_t x0 = tiled ? std::int64_t{chunk.start_x} * tile_w : 0,
+                                   y0 = tiled ? std::int64_t{chunk.start_y} * tile_h
+                                              : chunk.start_y - std::int64_t{window.min.y};
+                if (r == EXR_ERR_SUCCESS &&
+                    (x0 < 0 || y0 < 0 || chunk.width < 0 || chunk.height < 0 ||
+                     static_cast<std::uint64_t>(x0) + static_cast<std::uint64_t>(chunk.width) > w ||
+                     static_cast<std::uint64_t>(y0) + static_cast<std::uint64_t>(chunk.height) > h))
+                    r = EXR_ERR_BAD_CHUNK_LEADER;
+                if (r == EXR_ERR_SUCCESS)
+                    r = per_chunk(chunk, static_cast<std::uint64_t>(x0), static_cast<std::uint64_t>(y0));
+                if (r != EXR_ERR_SUCCESS) return r;
+            }
+        return EXR_ERR_SUCCESS;
+    };
+    if (const exr_result_t r = for_each_chunk(
+            [](const exr_chunk_info_t&, std::uint64_t, std::uint64_t) { return EXR_ERR_SUCCESS; });
+        r != EXR_ERR_SUCCESS)
+        return core_fail("read the chunk table", r);
     image.texels.assign(w * h * wanted, 0.0f);
     // One chunk at a time into the image, each with its own decoder: its picked channels as floats at the
     // chunk's place.
     std::vector<float> scratch;
-    const auto decode_chunk = [&](const exr_chunk_info_t& chunk) -> exr_result_t {
-        // The chunk's place in the image: a scan-line chunk names its first line, a tile its column and row
-        // (openexr_chunkio.h), both checked to lie inside the image before anything is written.
-        const bool tiled = storage == EXR_STORAGE_TILED;
-        const std::int64_t x0 = tiled ? std::int64_t{chunk.start_x} * tile_w : 0,
-                           y0 = tiled ? std::int64_t{chunk.start_y} * tile_h
-                                      : chunk.start_y - std::int64_t{window.min.y};
-        if (x0 < 0 || y0 < 0 || chunk.width < 0 || chunk.height < 0 ||
-            static_cast<std::uint64_t>(x0) + static_cast<std::uint64_t>(chunk.width) > w ||
-            static_cast<std::uint64_t>(y0) + static_cast<std::uint64_t>(chunk.height) > h)
-            return EXR_ERR_BAD_CHUNK_LEADER;
+    const auto decode_chunk = [&](const exr_chunk_info_t& chunk, std::uint64_t x0,
+                                  std::uint64_t y0) -> exr_result_t {
         exr_decode_pipeline_t decoder{}; // all zero, as EXR_DECODE_PIPELINE_INITIALIZER
         exr_result_t r = exr_decoding_initialize(ctxt, 0, &chunk, &decoder);
         if (r != EXR_ERR_SUCCESS) return r;
@@ -215,41 +251,18 @@ HeightMapResult decode_exr(std::span<const std::uint8_t> bytes, const std::strin
         }
         for (unsigned k = 0; k < wanted; ++k) {
             exr_coding_channel_info_t& out = decoder.channels[picked[k]];
-            out.decode_to_ptr = reinterpret_cast<std::uint8_t*>(
-                image.texels.data() +
-                (static_cast<std::uint64_t>(y0) * w + static_cast<std::uint64_t>(x0)) * wanted + k);
+            out.decode_to_ptr =
+                reinterpret_cast<std::uint8_t*>(image.texels.data() + (y0 * w + x0) * wanted + k);
             out.user_pixel_stride = static_cast<std::int32_t>(sizeof(float) * wanted);
             out.user_line_stride = static_cast<std::int32_t>(sizeof(float) * wanted * w);
-            out.user_data_type = EXR_PIXEL_FLOAT;
-            out.user_bytes_per_element = sizeof(float);
         }
         r = exr_decoding_choose_default_routines(ctxt, 0, &decoder);
         if (r == EXR_ERR_SUCCESS) r = exr_decoding_run(ctxt, 0, &decoder);
         exr_decoding_destroy(ctxt, &decoder);
         return r;
     };
-    if (storage == EXR_STORAGE_SCANLINE) {
-        std::int32_t lines = 0;
-        if (const exr_result_t r = exr_get_scanlines_per_chunk(ctxt, 0, &lines);
-            r != EXR_ERR_SUCCESS || lines <= 0)
-            return core_fail("read the chunk height", r);
-        for (std::int64_t y = window.min.y; y <= window.max.y; y += lines) {
-            exr_chunk_info_t chunk{};
-            exr_result_t r = exr_read_scanline_chunk_info(ctxt, 0, static_cast<int>(y), &chunk);
-            if (r == EXR_ERR_SUCCESS) r = decode_chunk(chunk);
-            if (r != EXR_ERR_SUCCESS) return core_fail("decode the image", r);
-        }
-    } else {
-        const std::uint64_t tiles_x = (w + tile_w - 1) / tile_w, tiles_y = (h + tile_h - 1) / tile_h;
-        for (std::uint64_t ty = 0; ty < tiles_y; ++ty)
-            for (std::uint64_t tx = 0; tx < tiles_x; ++tx) {
-                exr_chunk_info_t chunk{};
-                exr_result_t r = exr_read_tile_chunk_info(ctxt, 0, static_cast<int>(tx), static_cast<int>(ty),
-                                                          0, 0, &chunk);
-                if (r == EXR_ERR_SUCCESS) r = decode_chunk(chunk);
-                if (r != EXR_ERR_SUCCESS) return core_fail("decode the image", r);
-            }
-    }
+    if (const exr_result_t r = for_each_chunk(decode_chunk); r != EXR_ERR_SUCCESS)
+        return core_fail("decode the image", r);
     for (std::size_t i = 0; i < image.texels.size(); ++i)
         if (!std::isfinite(image.texels[i]))
             return fail("the OpenEXR texel (" + std::to_string(i / wanted % image.width) + ", " +

@@ -1,0 +1,342 @@
+// `ctess serve`'s uploads (docs/cli.md, "Viewer server"; tools/ctess/model_upload.hpp): POST /api/model and
+// /api/height-map answer with the library's reading of the file in the documented container, bad files get
+// 400 and {"error": ...} naming the problem, and the server's bounds hold for uploads too: the body limit
+// (413), at most two uploads at once (503) while other clients are still answered, the Host and Origin
+// checks.
+#include "cli/mesh_cli_support.hpp"
+#include "cli/serve_process.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <stb/stb_image_write.h>
+
+using namespace ctess::test;
+
+namespace {
+
+std::string post(const std::string& target, int port, const std::string& body,
+                 const std::string& extra = "") {
+    return "POST " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n" + extra +
+           "Content-Type: application/octet-stream\r\nContent-Length: " + std::to_string(body.size()) +
+           "\r\nConnection: close\r\n\r\n" + body;
+}
+
+// The body of a reply whose head may say it is gzip'd: the tests send no Accept-Encoding, so it never is.
+struct Container {
+    nlohmann::json header;
+    std::string body;
+
+    // Section `name` as 32-bit elements of type T.
+    template <class T>
+    std::vector<T> section(const std::string& name) const {
+        for (const auto& s : header.at("sections"))
+            if (s.at("name") == name) {
+                const std::size_t offset = s.at("offset"), count = s.at("count");
+                REQUIRE(offset + 4 * count <= body.size());
+                std::vector<T> out(count);
+                std::memcpy(out.data(), body.data() + offset, 4 * count);
+                return out;
+            }
+        FAIL("no section " << name);
+        return {};
+    }
+};
+
+// Parses the container of model_upload.hpp, checking its framing: magic, version, a header of a multiple of 4
+// bytes, sections 4-byte aligned, back to back in the order listed, ending exactly at the end of the body.
+Container parse_container(const std::string& body) {
+    REQUIRE(body.size() >= 12);
+    REQUIRE(body.substr(0, 4) == "CTMD");
+    std::uint32_t version = 0, header_bytes = 0;
+    std::memcpy(&version, body.data() + 4, 4);
+    std::memcpy(&header_bytes, body.data() + 8, 4);
+    CHECK(version == 1);
+    REQUIRE(header_bytes % 4 == 0);
+    REQUIRE(12 + header_bytes <= body.size());
+    Container c{nlohmann::json::parse(body.substr(12, header_bytes)), body};
+    std::size_t at = 12 + header_bytes;
+    for (const auto& s : c.header.at("sections")) {
+        CHECK(s.at("offset") == at);
+        CHECK((s.at("type") == "f32" || s.at("type") == "u32"));
+        at += 4 * static_cast<std::size_t>(s.at("count"));
+    }
+    CHECK(at == body.size());
+    return c;
+}
+
+void append_bytes(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+}
+
+// A grey 8-bit PNG of w x h texels, texel (x, y) = value(x, y).
+template <class F>
+std::string png(int w, int h, F value) {
+    std::vector<std::uint8_t> t(static_cast<std::size_t>(w * h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) t[static_cast<std::size_t>(y * w + x)] = value(x, y);
+    std::string out;
+    REQUIRE(stbi_write_png_to_func(&append_bytes, &out, w, h, 1, t.data(), w) != 0);
+    return out;
+}
+
+// One triangle in a .gltf whose buffer is either a data: uri (36 bytes of positions, base64) or a file beside
+// it.
+std::string triangle_gltf(bool embedded) {
+    // Positions (0,0,0), (1,0,0), (0,1,0) as little-endian floats, base64.
+    const std::string uri =
+        embedded ? "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"
+                 : "triangle.bin";
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "buffers": [{"uri": ")" +
+           uri + R"(", "byteLength": 36}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}]})";
+}
+
+// An n x n grid of quads in the z = 0 plane (OBJ), large enough to pass the 64 KiB bound of other requests.
+std::string grid_obj(int n) {
+    std::string s;
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x) s += "v " + std::to_string(x) + " " + std::to_string(y) + " 0\n";
+    const auto at = [&](int x, int y) { return std::to_string(y * (n + 1) + x + 1); };
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+            s += "f " + at(x, y) + " " + at(x + 1, y) + " " + at(x + 1, y + 1) + " " + at(x, y + 1) + "\n";
+    return s;
+}
+
+bool is_json_error(const Reply& r, const std::string& part) {
+    if (!has(r.head, "Content-Type: application/json")) return false;
+    const auto j = nlohmann::json::parse(r.body, nullptr, false);
+    return j.is_object() && j.size() == 1 && j.contains("error") &&
+           j.at("error").get<std::string>().find(part) != std::string::npos;
+}
+
+} // namespace
+
+TEST_CASE("serve upload: a mixed OBJ comes back as ctess mesh prepares it", "[cli][serve][upload]") {
+    const ServeProcess server;
+    REQUIRE(server.port > 0);
+    const Reply r = http(server.port, post("/api/model?name=cube.obj", server.port, mixed_cube_obj()));
+    REQUIRE(r.status == 200);
+    CHECK(has(r.head, "Content-Type: application/octet-stream"));
+    const Container c = parse_container(r.body);
+    const nlohmann::json& h = c.header;
+    // The cube (mesh_cli_support.hpp): 4 quads, 4 triangles, 8 positions, each corner a (position, normal,
+    // uv) triple of its own face, so 16 + 4 + 4 = 24 vertices; closed.
+    CHECK(h.at("name") == "cube.obj");
+    CHECK(h.at("vertex_count") == 24);
+    CHECK(h.at("triangle_count") == 4);
+    CHECK(h.at("quad_count") == 4);
+    CHECK(h.at("has_normals") == true);
+    CHECK(h.at("has_uvs") == true);
+    CHECK(h.at("open_edges") == 0);
+    CHECK(h.at("displacement").is_null());
+    const auto vertices = c.section<float>("vertices");
+    const auto triangles = c.section<std::uint32_t>("triangles");
+    const auto quads = c.section<std::uint32_t>("quads");
+    const auto ids = c.section<std::uint32_t>("position_ids");
+    const auto adjacency = c.section<std::uint32_t>("adjacency");
+    const auto directions = c.section<float>("directions");
+    REQUIRE(vertices.size() == 24 * 8);
+    REQUIRE(triangles.size() == 4 * 3);
+    REQUIRE(quads.size() == 4 * 4);
+    REQUIRE(ids.size() == 24);
+    REQUIRE(adjacency.size() == 12 * (4 + 2 * 4));
+    REQUIRE(directions.size() == 24 * 3);
+    const auto position = [&](std::uint32_t v) {
+        return std::vector<float>{vertices[8 * v], vertices[8 * v + 1], vertices[8 * v + 2]};
+    };
+    // The first quad is OBJ face 1 2 6 5: (0,0,0), (1,0,0), (1,0,1), (0,0,1), in the file's order.
+    const std::vector<std::vector<float>> first_quad = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
+    for (int k = 0; k < 4; ++k) CHECK(position(quads[static_cast<std::size_t>(k)]) == first_quad[k]);
+    for (std::uint32_t v = 0; v < 24; ++v) {
+        INFO("vertex " << v);
+        const auto p = position(v);
+        // Position ids: the first vertex at the same position; every cube corner has 3 faces' vertices.
+        REQUIRE(ids[v] < 24);
+        CHECK(position(ids[v]) == p);
+        CHECK(ids[ids[v]] == ids[v]);
+        // One direction per position: the normalised sum of its three faces' normals, away from the centre.
+        for (int k = 0; k < 3; ++k)
+            CHECK(directions[3 * v + k] == Approx((p[k] - 0.5f) * 2 / std::sqrt(3.0f)).margin(1e-6));
+    }
+    // The adjacency's corners are the triangles', then each quad's (q0, q1, q2) and (q0, q2, q3).
+    for (std::size_t t = 0; t < 4; ++t)
+        for (std::size_t k = 0; k < 3; ++k) CHECK(adjacency[12 * t + k] == triangles[3 * t + k]);
+    for (std::size_t q = 0; q < 4; ++q) {
+        const std::size_t a = 12 * (4 + 2 * q), b = a + 12;
+        CHECK(std::vector<std::uint32_t>{adjacency[a], adjacency[a + 1], adjacency[a + 2]} ==
+              std::vector<std::uint32_t>{quads[4 * q], quads[4 * q + 1], quads[4 * q + 2]});
+        CHECK(std::vector<std::uint32_t>{adjacency[b], adjacency[b + 1], adjacency[b + 2]} ==
+              std::vector<std::uint32_t>{quads[4 * q], quads[4 * q + 2], quads[4 * q + 3]});
+    }
+}
+
+TEST_CASE("serve upload: glTF with data: uris loads, external buffers, truncated and misnamed files get 400",
+          "[cli][serve][upload]") {
+    const ServeProcess server;
+    REQUIRE(server.port > 0);
+    const int port = server.port;
+    const Reply embedded = http(port, post("/api/model?name=t.gltf", port, triangle_gltf(true)));
+    REQUIRE(embedded.status == 200);
+    const Container c = parse_container(embedded.body);
+    CHECK(c.header.at("vertex_count") == 3);
+    CHECK(c.header.at("triangle_count") == 1);
+    CHECK(c.header.at("has_normals") == false);
+    CHECK(c.header.at("open_edges") == 3);
+    CHECK(c.section<float>("vertices") ==
+          std::vector<float>{0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0});
+
+    const Reply external = http(port, post("/api/model?name=t.gltf", port, triangle_gltf(false)));
+    CHECK(external.status == 400);
+    CHECK(is_json_error(external, "triangle.bin"));
+    CHECK(is_json_error(external, "data: URIs"));
+
+    // A .glb cut short after its 12-byte header and chunk header, and a .glb that is not one.
+    std::string glb("glTF\x02\0\0\0\xe8\x03\0\0\x64\0\0\0JSON{\"asset\"", 28);
+    const Reply truncated = http(port, post("/api/model?name=cut.glb", port, glb));
+    CHECK(truncated.status == 400);
+    CHECK(is_json_error(truncated, "cut.glb: "));
+    const Reply not_glb = http(port, post("/api/model?name=cube.glb", port, mixed_cube_obj()));
+    CHECK(not_glb.status == 400);
+    CHECK(is_json_error(not_glb, "not a binary glTF file"));
+    const Reply empty = http(port, post("/api/model?name=e.obj", port, ""));
+    CHECK(empty.status == 400);
+    CHECK(is_json_error(empty, "e.obj: the file is empty"));
+    const Reply no_faces = http(port, post("/api/model?name=p.obj", port, "v 0 0 0\nv 1 0 0\n"));
+    CHECK(no_faces.status == 400);
+    CHECK(is_json_error(no_faces, "no triangles or quads"));
+    const Reply stl = http(port, post("/api/model?name=cube.stl", port, mixed_cube_obj()));
+    CHECK(stl.status == 400);
+    CHECK(is_json_error(stl, "must end in .glb, .gltf or .obj"));
+    const Reply unnamed = http(port, post("/api/model", port, mixed_cube_obj()));
+    CHECK(unnamed.status == 400);
+    CHECK(is_json_error(unnamed, "?name=FILE"));
+    CHECK(server.alive());
+}
+
+TEST_CASE("serve upload: height maps come back as the library decodes them, bad images get 400",
+          "[cli][serve][upload]") {
+    const ServeProcess server;
+    REQUIRE(server.port > 0);
+    const int port = server.port;
+    const auto value = [](int x, int y) { return static_cast<std::uint8_t>(x * 50 + y * 7); };
+    const Reply r = http(port, post("/api/height-map?name=h.png", port, png(5, 3, value)));
+    REQUIRE(r.status == 200);
+    const Container c = parse_container(r.body);
+    CHECK(c.header.at("width") == 5);
+    CHECK(c.header.at("height") == 3);
+    const auto texels = c.section<float>("texels");
+    REQUIRE(texels.size() == 15);
+    // 8-bit texels are c / 255 (docs/models.md, "Height maps"), row 0 first.
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            CHECK(texels[static_cast<std::size_t>(y * 5 + x)] == Approx(value(x, y) / 255.0).epsilon(1e-7));
+    CHECK(c.header.at("texel_min") == 0.0);
+    CHECK(c.header.at("texel_max").get<double>() == Approx(214 / 255.0).epsilon(1e-7));
+
+    const std::string good = png(8, 8, value);
+    const Reply truncated =
+        http(port, post("/api/height-map?name=cut.png", port, good.substr(0, good.size() / 2)));
+    CHECK(truncated.status == 400);
+    CHECK(is_json_error(truncated, "cut.png"));
+    const Reply text = http(port, post("/api/height-map?name=t.png", port, "not an image"));
+    CHECK(text.status == 400);
+    CHECK(is_json_error(text, "t.png"));
+    CHECK(http(port, post("/api/height-map?name=e.png", port, "")).status == 400);
+}
+
+TEST_CASE("serve upload: the body limit, two uploads at once, Host and Origin", "[cli][serve][upload]") {
+    const ServeProcess server;
+    REQUIRE(server.port > 0);
+    const int port = server.port;
+    // Past 64 MiB: 413 from the head alone, as JSON (the body is never read).
+    const std::string too_large =
+        "POST /api/model?name=big.obj HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: " +
+        std::to_string((64u << 20) + 1) + "\r\nConnection: close\r\n\r\n";
+    const Reply large = http(port, too_large);
+    CHECK(large.status == 413);
+    CHECK(is_json_error(large, "larger than 67108864 bytes"));
+    // Other targets keep the 64 KiB bound, a GET of /api/model too.
+    const std::string body(100000, 'v');
+    CHECK(http(port, post("/api/pattern?mode=cp&factors=4,4,4", port, body)).status == 413);
+    CHECK(http(port, get("/api/model?name=a.obj", port, "Content-Length: 100000\r\n")).status == 413);
+    // An upload past 64 KiB is read whole: a 120 x 120 grid of quads, about 440 KB of OBJ.
+    const std::string grid = grid_obj(120);
+    REQUIRE(grid.size() > 256 * 1024);
+    const Reply big = http(port, post("/api/model?name=grid.obj", port, grid));
+    REQUIRE(big.status == 200);
+    const Container c = parse_container(big.body);
+    CHECK(c.header.at("quad_count") == 120 * 120);
+    CHECK(c.header.at("vertex_count") == 121 * 121);
+    CHECK(c.header.at("open_edges") == 4 * 120);
+
+    // Two uploads whose bodies have not arrived hold both slots: a third is refused at once with 503, while
+    // files and patterns are still answered. Closing one frees its slot.
+    const std::string head =
+        "POST /api/model?name=slow.obj HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 1000000"
+        "\r\nConnection: close\r\n\r\nv 0 0 0\n";
+    const int first = connect_loopback(port), second = connect_loopback(port, 20);
+    REQUIRE(first >= 0);
+    REQUIRE(second >= 0);
+    REQUIRE(send_all(first, head));
+    REQUIRE(send_all(second, head));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const auto t0 = Clock::now();
+    const Reply busy = http(port, post("/api/model?name=cube.obj", port, mixed_cube_obj()));
+    CHECK(busy.status == 503);
+    CHECK(is_json_error(busy, "2 uploads are in progress"));
+    CHECK(http(port, get("/viewer.css", port)).status == 200);
+    CHECK(http(port, get("/api/pattern?mode=cp&factors=4,4,4", port)).status == 200);
+    CHECK(seconds_since(t0) < 2.0);
+    ::close(first);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    CHECK(http(port, post("/api/model?name=cube.obj", port, mixed_cube_obj())).status == 200);
+
+    // The body is the file whatever its Content-Type: curl's default form-urlencoded type (httplib would
+    // parse it into parameters and refuse it past 8 KiB), none, or a multipart type (not decoded: the loader
+    // reads the bytes and names the problem).
+    for (const char* type : {"application/x-www-form-urlencoded", "text/plain", ""}) {
+        std::string request = post("/api/model?name=grid.obj", port, grid);
+        request.replace(request.find("application/octet-stream"), 24, type);
+        if (!*type) request.replace(request.find("Content-Type: \r\n"), 16, "");
+        INFO("Content-Type: " << type);
+        const Reply typed = http(port, request);
+        CHECK(typed.status == 200);
+        CHECK(parse_container(typed.body).header.at("quad_count") == 120 * 120);
+    }
+    std::string multipart = post("/api/model?name=cube.obj", port, "--x\r\n\r\nv 0 0 0\r\n--x--\r\n");
+    multipart.replace(multipart.find("application/octet-stream"), 24, "multipart/form-data; boundary=x");
+    const Reply form = http(port, multipart);
+    CHECK(form.status == 400);
+    CHECK(is_json_error(form, "cube.obj: "));
+
+    // The server's Host and Origin rules apply to uploads (docs/cli.md, "Viewer server").
+    const std::string cube = mixed_cube_obj();
+    std::string rebound = post("/api/model?name=cube.obj", port, cube);
+    rebound.replace(rebound.find("127.0.0.1:"), 9, "evil.test");
+    CHECK(http(port, rebound).status == 403);
+    CHECK(http(port, post("/api/model?name=cube.obj", port, cube, "Origin: http://evil.test\r\n")).status ==
+          403);
+    CHECK(http(port, post("/api/model?name=cube.obj", port, cube,
+                          "Origin: http://127.0.0.1:" + std::to_string(port) + "\r\n"))
+              .status == 200);
+
+    // The second upload stays truncated: at the request deadline (10 s after its connection opened) it gets
+    // 408, as JSON, and the connection is closed.
+    const Reply late = parse_reply(recv_all(second));
+    ::close(second);
+    CHECK(late.status == 408);
+    CHECK(is_json_error(late, "Request Timeout"));
+    CHECK(seconds_since(t0) < 12.0);
+    CHECK(server.alive());
+}

@@ -1,0 +1,128 @@
+// `ctess serve`'s model and height-map answers (model_upload.hpp): the library loads and prepares, this
+// writes the container.
+#include "model_upload.hpp"
+
+#include "json_escape.hpp"
+#include "model_prep.hpp"
+
+#include <ctess/runtime/displace/height_map.hpp>
+#include <ctess/runtime/models/height_map.hpp>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/core.h>
+
+namespace ctess::cli {
+
+namespace {
+
+struct Section {
+    const char* name;
+    const char* type; // "f32" or "u32"
+    const void* data;
+    std::size_t count; // 4-byte elements
+};
+
+// The container (model_upload.hpp): magic, version, header length, the JSON header padded to 4 bytes, then
+// the sections. `scalars` is the header's members before "sections", each followed by ", ".
+std::string container(const std::string& scalars, std::span<const Section> sections) {
+    // The offsets depend on the header's length, which depends on the offsets' digits: lay the header out
+    // with the offsets the previous pass gave until it stops growing (two passes in practice).
+    std::string header;
+    std::size_t header_bytes = 0;
+    for (int pass = 0; pass < 8; ++pass) {
+        std::size_t offset = 12 + header_bytes;
+        header = "{" + scalars + "\"sections\": [";
+        for (std::size_t i = 0; i < sections.size(); ++i) {
+            header +=
+                fmt::format("{}{{\"name\": \"{}\", \"type\": \"{}\", \"offset\": {}, \"count\": {}}}",
+                            i ? ", " : "", sections[i].name, sections[i].type, offset, sections[i].count);
+            offset += 4 * sections[i].count;
+        }
+        header += "]}";
+        const std::size_t padded = (header.size() + 3) / 4 * 4;
+        if (padded == header_bytes) break;
+        header_bytes = padded;
+    }
+    header.resize(header_bytes, ' ');
+    std::size_t total = 12 + header.size();
+    for (const Section& s : sections) total += 4 * s.count;
+    std::string out;
+    out.reserve(total);
+    const auto word = [&](std::uint32_t w) {
+        for (unsigned b = 0; b < 4; ++b) out.push_back(static_cast<char>((w >> (8 * b)) & 0xFFu));
+    };
+    out += "CTMD";
+    word(1);
+    word(static_cast<std::uint32_t>(header.size()));
+    out += header;
+    // The host is little-endian (x86-64, AArch64): the arrays are copied as they are in memory.
+    static_assert(std::endian::native == std::endian::little, "the container is little-endian");
+    for (const Section& s : sections) out.append(static_cast<const char*>(s.data), 4 * s.count);
+    return out;
+}
+
+// JSON has no NaN or infinity: such a number is written as null.
+std::string json_number(float f) {
+    return std::isfinite(f) ? fmt::format("{}", f) : std::string("null");
+}
+
+} // namespace
+
+std::string model_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
+    const std::optional<models::ModelKind> kind = model_kind_of(name);
+    if (!kind) throw std::runtime_error(name + ": the name must end in .glb, .gltf or .obj");
+    models::LoadResult loaded = models::load_model_from_memory(bytes, *kind, name);
+    if (!loaded) {
+        // One upload holds one file: a .gltf whose buffers are separate files cannot come with it.
+        std::string message = loaded.error.message;
+        if (*kind == models::ModelKind::gltf_text &&
+            (message.find("not found") != std::string::npos || message.find("external") != std::string::npos))
+            message +=
+                " (an upload is one file: a .gltf must embed its buffers as data: URIs; or upload the .glb)";
+        throw std::runtime_error(message);
+    }
+    const PreparedModel prepared = prepare_model(std::move(*loaded.model), name);
+    const std::vector<float> directions = displacement_directions(prepared, name);
+    const models::Model& m = prepared.model;
+    const models::Model::Displacement& d = m.displacement;
+    const std::string displacement =
+        d.present
+            ? fmt::format("{{\"factor\": {}, \"offset\": {}, \"embedded_image\": {}}}", json_number(d.factor),
+                          json_number(d.offset), d.image_uri.empty() && !d.image_bytes.empty())
+            : std::string("null");
+    const std::string scalars = fmt::format(
+        "\"name\": \"{}\", \"vertex_count\": {}, \"triangle_count\": {}, \"quad_count\": {}, "
+        "\"has_normals\": {}, "
+        "\"has_uvs\": {}, \"dropped_degenerate_faces\": {}, \"open_edges\": {}, \"displacement\": {}, ",
+        json_escape(name), m.vertex_count(), m.triangle_count(), m.quad_count(), m.has_normals, m.has_uvs,
+        m.dropped_degenerate_faces, prepared.open_edges, displacement);
+    const models::Adjacency& a = prepared.adjacency;
+    const Section sections[] = {
+        {"vertices", "f32", m.vertices.data(), m.vertices.size()},
+        {"triangles", "u32", m.triangles.data(), m.triangles.size()},
+        {"quads", "u32", m.quads.data(), m.quads.size()},
+        {"position_ids", "u32", a.position_ids.data(), a.position_ids.size()},
+        {"adjacency", "u32", a.tessellation_indices.data(), a.tessellation_indices.size()},
+        {"directions", "f32", directions.data(), directions.size()},
+    };
+    return container(scalars, sections);
+}
+
+std::string height_map_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
+    const models::HeightMapResult loaded = models::load_height_map_from_memory(bytes, name);
+    if (!loaded) throw std::runtime_error(loaded.error.message);
+    const models::HeightImage& image = *loaded.image;
+    const rt::TexelRange range = rt::texel_range(image.view());
+    const std::string scalars = fmt::format(
+        "\"name\": \"{}\", \"width\": {}, \"height\": {}, \"texel_min\": {}, \"texel_max\": {}, ",
+        json_escape(name), image.width, image.height, json_number(range.min), json_number(range.max));
+    const Section sections[] = {{"texels", "f32", image.texels.data(), image.texels.size()}};
+    return container(scalars, sections);
+}
+
+} // namespace ctess::cli

@@ -1,0 +1,33 @@
+// `ctess serve`'s uploads (docs/cli.md, "Viewer server"; docs/viewer.md, "Your model"): a model file's bytes
+// in, the model as ctess::models loads it and `ctess mesh` prepares it out (model_prep.hpp); a height map's
+// bytes in, its texels as models::load_height_map_from_memory decodes them out. Both answers use one small
+// binary container, so that a WebGPU host can hand the arrays to the pipeline without parsing text:
+//
+//   bytes 0-3   "CTMD"
+//   bytes 4-7   u32 version (1), little-endian like everything after it
+//   bytes 8-11  u32 H: the JSON header's length in bytes, a multiple of 4 (padded with spaces)
+//   bytes 12..  the JSON header (UTF-8): the answer's scalars and "sections": [{"name", "type" ("f32" or
+//               "u32"), "offset" (bytes from the start of the body, a multiple of 4), "count" (elements)}]
+//   then        the sections, little-endian 32-bit elements, in the order listed
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace ctess::cli {
+
+// The model answer: header {"name", "vertex_count", "triangle_count", "quad_count", "has_normals", "has_uvs",
+// "dropped_degenerate_faces", "open_edges", "displacement" (the file's KHR_materials_displacement: {"factor",
+// "offset", "embedded_image"} or null), "sections"}; sections "vertices" (f32, 8 per vertex: position,
+// normal, uv), "triangles" (u32, 3 per triangle), "quads" (u32, 4 per quad), "position_ids" (u32, 1 per
+// vertex), "adjacency" (u32, 12 per face triangle: the triangles, then each quad's two halves), "directions"
+// (f32, 3 per vertex: rt::welded_directions). `name` picks the loader by its extension (.gltf, .glb, .obj)
+// and names the model in errors. Throws std::runtime_error with a message for the user (the loader's, which
+// names the problem) when the name or the bytes are not a model the library reads.
+std::string model_answer(std::span<const std::uint8_t> bytes, const std::string& name);
+
+// The height-map answer: header {"name", "width", "height", "texel_min", "texel_max", "sections"}; section
+// "texels" (f32, width * height, row-major, row 0 at v = 0). Throws std::runtime_error as above.
+std::string height_map_answer(std::span<const std::uint8_t> bytes, const std::string& name);
+
+} // namespace ctess::cli
