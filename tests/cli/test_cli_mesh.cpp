@@ -227,3 +227,29 @@ TEST_CASE("ctess mesh --stats: the gpu block is the unwelded pipeline's, for the
     CHECK_FALSE(stats("--in " + in + " --factor 4").contains("gpu"));
     CHECK_FALSE(stats("--in " + in + " --edge-length 0.1").contains("gpu"));
 }
+
+TEST_CASE("ctess mesh --stats: the gpu block's checksums are FNV-1a over the words, checked by hand",
+          "[cli][mesh]") {
+    // One triangle far from the camera: every factor clamps to 1, so the output is the triangle itself (Type
+    // 0: v0, v1, v2 and the triangle (0, 1, 2), docs/algorithm.md §2.11). Its edges E0 = 1, E1 = sqrt 2, E2 =
+    // 1: the smallest, E0 (the tie to the lower index), goes on the pattern's e2, so the rotation is 1 and
+    // v0, v1, v2 are base corners w1, w2, w0 (§2.13), base weights (u, v) = (2^24, 0), (0, 2^24), (0, 0).
+    const std::string in = scratch("one_triangle_gpu.obj");
+    write_file(in, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const nlohmann::json s = stats("--in " + in + " --dice-rate 64 --camera 0,0,1000");
+    REQUIRE(s.contains("gpu"));
+    CHECK(s["gpu"]["vertices"] == 3);
+    CHECK(s["gpu"]["triangles"] == 1);
+    // FNV-1a 32 (offset basis 2166136261, prime 16777619) over the little-endian bytes of the words.
+    const auto fnv1a = [](std::initializer_list<std::uint32_t> words) {
+        std::uint32_t h = 2166136261u;
+        for (const std::uint32_t w : words)
+            for (int b = 0; b < 32; b += 8) h = (h ^ ((w >> b) & 0xFFu)) * 16777619u;
+        char hex[9];
+        std::snprintf(hex, sizeof hex, "%08x", h);
+        return std::string(hex);
+    };
+    constexpr std::uint32_t one = 1u << 24;
+    CHECK(s["gpu"]["checksum"]["barycentrics"] == fnv1a({one, 0, 0, one, 0, 0}));
+    CHECK(s["gpu"]["checksum"]["indices"] == fnv1a({0, 1, 2}));
+}

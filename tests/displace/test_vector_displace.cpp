@@ -356,6 +356,15 @@ TEST_CASE("vector displacement: the map's bound and RGB sampling (§8.7)") {
     d.scale = 0.5f;
     d.offset = 1.0f; // 0.5 * (t + 1): (2, 2.5, 0.5) and (0.5, 0.5, -2.5)
     CHECK(rt::displacement_bound(d) == std::sqrt(2.0f * 2.0f + 2.5f * 2.5f + 0.5f * 0.5f));
+    // Components whose squares overflow float (an EXR texel can be this large): texel (3e20, 4e20, 0) at
+    // scale 0.5 is (1.5e20, 2e20, 0), of length 2.5e20, which a float dot product would make inf.
+    const float large[3] = {3e20f, 4e20f, 0.0f};
+    rt::Displacement big = d;
+    big.offset = 0.0f;
+    big.map = {large, 1, 1, rt::AddressMode::clamp, 3};
+    CHECK(rt::displacement_bound(big) ==
+          static_cast<float>(std::sqrt(double{1.5e20f} * 1.5e20f + double{2e20f} * 2e20f)));
+    CHECK(std::isfinite(rt::displacement_bound(big)));
     d.vector_function = &constant_vector; // a function's bound is the caller's
     CHECK(rt::displacement_bound(d) == 0.0f);
     // Channels: each of R, G, B samples as a one-channel map of it would (the same operations).

@@ -273,15 +273,17 @@ float displacement_bound(const Displacement& d) {
         const HeightMap& m = d.map;
         if (d.vector_function != nullptr || m.texels == nullptr || m.channels < 3) return 0.0f;
         const std::size_t n = std::size_t{m.width} * m.height;
-        float bound = 0.0f;
+        // The length in double, rounded to float once: a float dot product overflows once a component passes
+        // about 1.8e19 (an EXR texel can), where the length itself is still a float.
+        double bound = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             const float* t = m.texels + i * m.channels;
             const Vec3 v{d.scale * (t[0] * d.factor + d.offset), d.scale * (t[1] * d.factor + d.offset),
                          d.scale * (t[2] * d.factor + d.offset)};
-            const float length = std::sqrt(dot(v, v));
+            const double length = std::sqrt(double{v.x} * v.x + double{v.y} * v.y + double{v.z} * v.z);
             if (length > bound) bound = length; // NaN compares false: skipped
         }
-        return bound;
+        return static_cast<float>(bound);
     }
     if (d.function != nullptr) return 0.0f;
     const TexelRange r = texel_range(d.map);

@@ -93,12 +93,9 @@ MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsig
         pl.setLayoutCount = 1;
         pl.pSetLayouts = &set_layout_;
         check(vkCreatePipelineLayout(device_, &pl, nullptr, &pipeline_layout_), "vkCreatePipelineLayout");
-        // Every SPIR-V file is read now, so a missing one is an error of the constructor either way.
-        for (unsigned k = 0; k < passes; ++k) {
-            const std::string path = shader_file(shader_dir, max_factor, pass_suffix[k]);
-            if (!std::ifstream(path, std::ios::binary))
-                throw Error("cannot read " + path + " (are the shaders generated and installed?)");
-        }
+        // Every SPIR-V file is read now (whole u32 words), so a missing or damaged one is an error of the
+        // constructor in either mode.
+        for (unsigned k = 0; k < passes; ++k) read_words(shader_file(shader_dir, max_factor, pass_suffix[k]));
         if (creation == Creation::all_now)
             for (unsigned k = 0; k < passes; ++k) pipeline(k);
         else
@@ -111,11 +108,14 @@ MeshPipeline::MeshPipeline(VkDevice device, const std::string& shader_dir, unsig
 
 VkPipeline MeshPipeline::pipeline(unsigned k) const {
     if (pipelines_[k] != VK_NULL_HANDLE) return pipelines_[k];
-    const std::vector<std::uint32_t> code = read_words(shader_file(shader_dir_, max_factor_, pass_suffix[k]));
-    auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    smci.codeSize = code.size() * 4;
-    smci.pCode = code.data();
-    check(vkCreateShaderModule(device_, &smci, nullptr, &modules_[k]), "vkCreateShaderModule");
+    if (modules_[k] == VK_NULL_HANDLE) { // kept from an earlier call whose pipeline creation failed
+        const std::vector<std::uint32_t> code =
+            read_words(shader_file(shader_dir_, max_factor_, pass_suffix[k]));
+        auto smci = vk_struct<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+        smci.codeSize = code.size() * 4;
+        smci.pCode = code.data();
+        check(vkCreateShaderModule(device_, &smci, nullptr, &modules_[k]), "vkCreateShaderModule");
+    }
     auto cpci = vk_struct<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
     cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

@@ -1,6 +1,6 @@
-// Height maps through Debian's stb_image and, for OpenEXR files, Debian's OpenEXR (height_map.hpp,
-// docs/models.md "Height maps"): the header is read first (stbi_info_from_memory; for EXR, a bounds-checked
-// walk of the header) and the size limits checked before any texel is decoded.
+// Height maps through Debian's stb_image and, for OpenEXR files, the C core of Debian's OpenEXR
+// (height_map.hpp, docs/models.md "Height maps"): the header is read first (stbi_info_from_memory,
+// exr_start_read) and the size limits checked before any texel is decoded.
 #include <ctess/runtime/models/height_map.hpp>
 
 #include "load_common.hpp"
@@ -75,11 +75,15 @@ std::int64_t exr_size(exr_const_context_t, void* user) {
 }
 
 // The core reports through this callback; the user data is reached through the context.
-void exr_error(exr_const_context_t ctxt, exr_result_t code, const char* message) {
+// Called from C frames, so nothing may escape it: a failed copy of the message leaves the previous one.
+void exr_error(exr_const_context_t ctxt, exr_result_t code, const char* message) noexcept {
     void* user = nullptr;
-    if (exr_get_user_data(ctxt, &user) == EXR_ERR_SUCCESS && user != nullptr)
+    if (exr_get_user_data(ctxt, &user) != EXR_ERR_SUCCESS || user == nullptr) return;
+    try {
         static_cast<ExrInput*>(user)->last_error =
             message != nullptr ? message : exr_get_default_error_message(code);
+    } catch (...) {
+    }
 }
 
 // wanted = 1: the R channel, else Y (luminance), else the file's first channel (alphabetical); wanted = 3 (a
@@ -120,6 +124,14 @@ HeightMapResult decode_exr(std::span<const std::uint8_t> bytes, const std::strin
     if (exr_get_storage(ctxt, 0, &storage) != EXR_ERR_SUCCESS ||
         (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED))
         return fail("a deep OpenEXR image (only flat scan-line or tiled images are read)");
+    // OpenEXR 3.1's core cannot decode DWA (openexr issues #1384, #1591): refused by name, not as damage.
+    exr_compression_t compression = EXR_COMPRESSION_LAST_TYPE;
+    if (const exr_result_t r = exr_get_compression(ctxt, 0, &compression); r != EXR_ERR_SUCCESS)
+        return core_fail("read the compression", r);
+    if (compression == EXR_COMPRESSION_DWAA || compression == EXR_COMPRESSION_DWAB)
+        return fail(std::string(compression == EXR_COMPRESSION_DWAA ? "DWAA" : "DWAB") +
+                    "-compressed OpenEXR images are not read (the OpenEXR 3.1 core cannot decode them); save "
+                    "it with ZIP, PIZ or no compression");
     if (const exr_result_t r = exr_get_data_window(ctxt, 0, &window); r != EXR_ERR_SUCCESS)
         return core_fail("read the data window", r);
     if (const exr_result_t r = exr_get_channels(ctxt, 0, &channels);

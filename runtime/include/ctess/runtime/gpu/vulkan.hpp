@@ -60,8 +60,9 @@ std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsign
 // device. Creation::all_now (the default) creates every pipeline in the constructor; on_first_use creates the
 // two counting passes there and each emit pass when a record_emit first needs it, so a host that never
 // displaces or never sees a quad never compiles those passes (the driver's compile of a displaced pass is the
-// slow one), at the price of a compile inside that record_emit; either way every SPIR-V file must exist when
-// the constructor runs. Not for use from two threads at once.
+// slow one), at the price of a compile inside that record_emit; either way every SPIR-V file is read by the
+// constructor. With on_first_use, record_emit throws Error if the driver fails to create a pass; the command
+// buffer then holds the passes recorded before it (reset it). Not for use from two threads at once.
 class MeshPipeline {
   public:
     enum class Creation { all_now, on_first_use };

@@ -19,7 +19,10 @@
 namespace ctess::models {
 
 // The largest image side and texel count a height map may have (16384 x 16384 = 2^28 texels, 1 GiB of floats
-// is past the texel limit: at most 2^26 texels, 256 MiB).
+// is past the texel limit: at most 2^26 texels, 256 MiB; a vector map's three channels 768 MiB). Decoding
+// needs more at its peak: stb_image's own buffer (up to 1 GiB of floats for a 4-channel .hdr), or for OpenEXR
+// one chunk of the unused channels. An OpenEXR file's channels count together (2^26 samples in all), so an
+// RGBA EXR has at most 2^24 texels.
 inline constexpr std::uint32_t max_height_map_side = 16384;
 inline constexpr std::uint64_t max_height_map_texels = std::uint64_t{1} << 26;
 
