@@ -3,6 +3,7 @@
 // same operations on the same values from both faces, so the two give the same bits.
 #include <ctess/runtime/displace/displace.hpp>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -116,19 +117,28 @@ Vec3 vector_difference(Vec3 plus, Vec3 minus, float step) {
     return (1.0f / (2.0f * step)) * (plus - minus);
 }
 
-Vec3 tri_uv_vector(const DisplacementPatch& patch, float a, float b) {
+// The own uv at triangle parameter (a, b) = (w1, w2), and at quad parameter (s, t) (bilinear).
+std::array<float, 2> tri_own_uv(const DisplacementPatch& patch, float a, float b) {
     const float(&u)[4][2] = patch.own_uv;
     const float c = 1.0f - a - b;
-    return displacement_vector(*patch.source, c * u[0][0] + a * u[1][0] + b * u[2][0],
-                               c * u[0][1] + a * u[1][1] + b * u[2][1]);
+    return {c * u[0][0] + a * u[1][0] + b * u[2][0], c * u[0][1] + a * u[1][1] + b * u[2][1]};
+}
+
+std::array<float, 2> quad_own_uv(const DisplacementPatch& patch, float s, float t) {
+    const float(&u)[4][2] = patch.own_uv;
+    const float w[4] = {(1.0f - s) * (1.0f - t), s * (1.0f - t), s * t, (1.0f - s) * t};
+    return {w[0] * u[0][0] + w[1] * u[1][0] + w[2] * u[2][0] + w[3] * u[3][0],
+            w[0] * u[0][1] + w[1] * u[1][1] + w[2] * u[2][1] + w[3] * u[3][1]};
+}
+
+Vec3 tri_uv_vector(const DisplacementPatch& patch, float a, float b) {
+    const std::array<float, 2> uv = tri_own_uv(patch, a, b);
+    return displacement_vector(*patch.source, uv[0], uv[1]);
 }
 
 Vec3 quad_uv_vector(const DisplacementPatch& patch, float s, float t) {
-    const float(&u)[4][2] = patch.own_uv;
-    const float w[4] = {(1.0f - s) * (1.0f - t), s * (1.0f - t), s * t, (1.0f - s) * t};
-    return displacement_vector(*patch.source,
-                               w[0] * u[0][0] + w[1] * u[1][0] + w[2] * u[2][0] + w[3] * u[3][0],
-                               w[0] * u[0][1] + w[1] * u[1][1] + w[2] * u[2][1] + w[3] * u[3][1]);
+    const std::array<float, 2> uv = quad_own_uv(patch, s, t);
+    return displacement_vector(*patch.source, uv[0], uv[1]);
 }
 
 // Bends p.normal by the height's gradient (§8.3): tangents tu, tv of the patch parameter, the height's
@@ -146,20 +156,14 @@ void bend_normal(SurfacePoint& p, Vec3 tu, Vec3 tv, float hu, float hv) {
     if (dot(bent, bent) > 0.0f) p.normal = bent;
 }
 
-// The own uv at triangle parameter (a, b) = (w1, w2).
 float tri_uv_height(const DisplacementPatch& patch, float a, float b) {
-    const float(&u)[4][2] = patch.own_uv;
-    const float c = 1.0f - a - b;
-    return displacement_height(*patch.source, c * u[0][0] + a * u[1][0] + b * u[2][0],
-                               c * u[0][1] + a * u[1][1] + b * u[2][1]);
+    const std::array<float, 2> uv = tri_own_uv(patch, a, b);
+    return displacement_height(*patch.source, uv[0], uv[1]);
 }
 
 float quad_uv_height(const DisplacementPatch& patch, float s, float t) {
-    const float(&u)[4][2] = patch.own_uv;
-    const float w[4] = {(1.0f - s) * (1.0f - t), s * (1.0f - t), s * t, (1.0f - s) * t};
-    return displacement_height(*patch.source,
-                               w[0] * u[0][0] + w[1] * u[1][0] + w[2] * u[2][0] + w[3] * u[3][0],
-                               w[0] * u[0][1] + w[1] * u[1][1] + w[2] * u[2][1] + w[3] * u[3][1]);
+    const std::array<float, 2> uv = quad_own_uv(patch, s, t);
+    return displacement_height(*patch.source, uv[0], uv[1]);
 }
 
 // A point on patch edge k (corner k -> k + 1) with weights wa at corner k and wb at corner k + 1: the
