@@ -152,6 +152,32 @@ inline rt::PipelineOptions constant_factor(float f, rt::Surface surface) {
 }
 
 // The right triangle (0,0,0), (1,0,0), (0,1,0) in z = 0, normal +z, uv = xy.
+// Every surface x factor (30: a split uniform patch) x pattern on `mesh` with displacement d: every pair of
+// output vertices at one undisplaced position stays bit-identical, and the welded output is closed. `label`
+// names the mesh in failures; also(base, moved) adds the caller's checks.
+template <class Also>
+void check_displaced_seams(const rt::MeshView& mesh, const rt::Displacement& d, int label, Also&& also) {
+    for (const rt::Surface surface :
+         {rt::Surface::flat, rt::Surface::pn_triangles, rt::Surface::pn_aen, rt::Surface::phong})
+        for (const float factor : {1.0f, 2.5f, 9.3f, 30.0f})
+            for (const rt::Pattern pattern :
+                 {rt::Pattern::cp, rt::Pattern::uniform, rt::Pattern::uniform_split,
+                  rt::Pattern::d3d11_fractional_even}) {
+                INFO("faces " << label << " surface " << static_cast<int>(surface) << " factor " << factor
+                              << " pattern " << static_cast<int>(pattern));
+                rt::PipelineOptions options = constant_factor(factor, surface);
+                options.pattern = pattern;
+                const Output base = unwelded(mesh, options);
+                options.displacement = &d;
+                const Output moved = unwelded(mesh, options);
+                const PairCheck pairs = check_pairs(base, moved);
+                CHECK(pairs.shared > 0);
+                CHECK(pairs.mismatched == 0);
+                CHECK(open_edges_by_position(welded(mesh, options)) == 0);
+                also(base, moved);
+            }
+}
+
 inline rt::MeshView unit_triangle() {
     static const float vertices[3 * 8] = {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0,
                                           0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1};
