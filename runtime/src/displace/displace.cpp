@@ -226,6 +226,26 @@ void displace_triangle_vector(const DisplacementPatch& patch, const std::uint32_
     move_vector(p, displacement_vector(*patch.source, p.uv[0], p.uv[1]), frame);
 }
 
+// A quad point on the boundary goes through displace_edge: a corner (both coordinates at a bound), else edge
+// k from q_k with parameter r measured from q_k (the quad_vertex convention: t = 0, s = 1, t = 1, s = 0).
+// False for an interior point, which the caller moves.
+bool displace_quad_boundary(const DisplacementPatch& patch, std::uint32_t s, std::uint32_t t,
+                            SurfacePoint& p) {
+    if ((s == 0 || s == one) && (t == 0 || t == one)) {
+        const unsigned c = t == 0 ? (s == 0 ? 0 : 1) : (s == one ? 2 : 3);
+        displace_edge(patch, c, one, 0, p);
+        return true;
+    }
+    const bool on_edge[4] = {t == 0, s == one, t == one, s == 0};
+    const std::uint32_t r[4] = {s, t, one - s, one - t};
+    for (unsigned k = 0; k < 4; ++k)
+        if (on_edge[k]) {
+            displace_edge(patch, k, one - r[k], r[k], p);
+            return true;
+        }
+    return false;
+}
+
 void displace_quad_vector(const DisplacementPatch& patch, std::uint32_t s, std::uint32_t t, float fs,
                           float ft, SurfacePoint& p) {
     const float step = patch.source->normal_step;
@@ -240,15 +260,7 @@ void displace_quad_vector(const DisplacementPatch& patch, std::uint32_t s, std::
     const Vec3 ts = (1.0f - ft) * (q[1] - q[0]) + ft * (q[2] - q[3]);
     const Vec3 tt = (1.0f - fs) * (q[3] - q[0]) + fs * (q[2] - q[1]);
     bend_normal_vector(p, ts, tt, vu, vv, frame);
-    const bool at_corner = (s == 0 || s == one) && (t == 0 || t == one);
-    if (at_corner) {
-        const unsigned c = t == 0 ? (s == 0 ? 0 : 1) : (s == one ? 2 : 3);
-        return displace_edge(patch, c, one, 0, p);
-    }
-    const bool on_edge[4] = {t == 0, s == one, t == one, s == 0};
-    const std::uint32_t r[4] = {s, t, one - s, one - t};
-    for (unsigned k = 0; k < 4; ++k)
-        if (on_edge[k]) return displace_edge(patch, k, one - r[k], r[k], p);
+    if (displace_quad_boundary(patch, s, t, p)) return;
     move_vector(p, displacement_vector(*patch.source, p.uv[0], p.uv[1]), frame);
 }
 
@@ -476,17 +488,7 @@ void displace_quad_point(const DisplacementPatch& patch, std::uint32_t s, std::u
     const Vec3 ts = (1.0f - ft) * (q[1] - q[0]) + ft * (q[2] - q[3]);
     const Vec3 tt = (1.0f - fs) * (q[3] - q[0]) + fs * (q[2] - q[1]);
     bend_normal(p, ts, tt, hu, hv);
-    // Corners (both coordinates at a bound), then edge k from q_k with parameter r measured from q_k (the
-    // quad_vertex convention: t = 0, s = 1, t = 1, s = 0), then the interior.
-    const bool corner = (s == 0 || s == one) && (t == 0 || t == one);
-    if (corner) {
-        const unsigned c = t == 0 ? (s == 0 ? 0 : 1) : (s == one ? 2 : 3);
-        return displace_edge(patch, c, one, 0, p);
-    }
-    const bool on_edge[4] = {t == 0, s == one, t == one, s == 0};
-    const std::uint32_t r[4] = {s, t, one - s, one - t};
-    for (unsigned k = 0; k < 4; ++k)
-        if (on_edge[k]) return displace_edge(patch, k, one - r[k], r[k], p);
+    if (displace_quad_boundary(patch, s, t, p)) return;
     const float w[4] = {(1.0f - fs) * (1.0f - ft), fs * (1.0f - ft), fs * ft, (1.0f - fs) * ft};
     const Vec3 dir = normalize_or_zero(w[0] * patch.direction[0] + w[1] * patch.direction[1] +
                                        w[2] * patch.direction[2] + w[3] * patch.direction[3]);
