@@ -392,10 +392,28 @@ TEST_CASE("serve upload: a foreign Host or Origin gets 403 before the body and t
     CHECK(server.alive());
 }
 
-TEST_CASE("serve upload: a glTF instanced past the viewer's limit gets 400", "[cli][serve][upload]") {
+// A .glb of a JSON chunk and a BIN chunk, each padded to 4 bytes.
+std::string glb_of(std::string json, std::string bin) {
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    bin.resize((bin.size() + 3) / 4 * 4, '\0');
+    std::string glb;
+    const auto word = [&](std::size_t w) {
+        for (unsigned b = 0; b < 4; ++b) glb.push_back(static_cast<char>((w >> (8 * b)) & 0xFFu));
+    };
+    glb += "glTF";
+    word(2);
+    word(12 + 8 + json.size() + 8 + bin.size());
+    word(json.size());
+    glb += "JSON" + json;
+    word(bin.size());
+    return glb + std::string("BIN\0", 4) + bin;
+}
+
+TEST_CASE("serve upload: a glTF past the viewer's vertex or face limit gets 400", "[cli][serve][upload]") {
     const ServeProcess server;
     REQUIRE(server.port > 0);
-    // A .glb of one 65536-vertex mesh under 65 nodes: 768 KiB of file, 2^22 + 2^16 vertices once instanced.
+    const int port = server.port;
+    // One 65536-vertex mesh under 65 nodes: 768 KiB of file, 2^22 + 2^16 vertices once instanced.
     const std::size_t vertices = 65536, nodes = 65, bin = vertices * 12;
     std::string json = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [)";
     for (std::size_t n = 0; n < nodes; ++n) json += (n ? ", " : "") + std::to_string(n);
@@ -406,21 +424,27 @@ TEST_CASE("serve upload: a glTF instanced past the viewer's limit gets 400", "[c
         std::to_string(bin) + R"(}], "bufferViews": [{"buffer": 0, "byteLength": )" + std::to_string(bin) +
         R"(}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" + std::to_string(vertices) +
         R"(, "type": "VEC3", "min": [0, 0, 0], "max": [0, 0, 0]}]})";
-    json.resize((json.size() + 3) / 4 * 4, ' ');
-    std::string glb;
-    const auto word = [&](std::size_t w) {
-        for (unsigned b = 0; b < 4; ++b) glb.push_back(static_cast<char>((w >> (8 * b)) & 0xFFu));
-    };
-    glb += "glTF";
-    word(2);
-    word(12 + 8 + json.size() + 8 + bin);
-    word(json.size());
-    glb += "JSON" + json;
-    word(bin);
-    glb += std::string("BIN\0", 4) + std::string(bin, '\0');
-    const Reply r = http(server.port, post("/api/model?name=many.glb", server.port, glb));
-    CHECK(r.status == 400);
-    CHECK(is_json_error(r, "many.glb: more than 4194304 vertices, past the viewer's limit of 2^22 vertices"));
+    const Reply many =
+        http(port, post("/api/model?name=many.glb", port, glb_of(json, std::string(bin, '\0'))));
+    CHECK(many.status == 400);
+    CHECK(is_json_error(many,
+                        "many.glb: more than 4194304 vertices, past the viewer's limit of 2^22 vertices"));
+
+    // A strip of 2^23 + 3 byte indices over 3 vertices: 2^23 + 1 triangles, refused from the accessor's
+    // count.
+    const std::size_t corners = (std::size_t{1} << 23) + 3;
+    const std::string strip =
+        R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes": {"POSITION": 0},
+  "indices": 1, "mode": 5}]}], "buffers": [{"byteLength": )" +
+        std::to_string(36 + corners) + R"(}], "bufferViews": [{"buffer": 0, "byteLength": 36},
+  {"buffer": 0, "byteOffset": 36, "byteLength": )" +
+        std::to_string(corners) + R"(}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3,
+  "type": "VEC3", "min": [0, 0, 0], "max": [0, 0, 0]}, {"bufferView": 1, "componentType": 5121, "count": )" +
+        std::to_string(corners) + R"(, "type": "SCALAR"}]})";
+    const Reply faces =
+        http(port, post("/api/model?name=strip.glb", port, glb_of(strip, std::string(36 + corners, '\0'))));
+    CHECK(faces.status == 400);
+    CHECK(is_json_error(faces, "strip.glb: more than 8388608 faces, past the viewer's limit"));
     CHECK(server.alive());
 }
 
