@@ -80,8 +80,16 @@ export function parseContainer(buffer) {
     return { header, sections };
 }
 
+// The server's upload limit: ServeLimits::max_upload_body in tools/ctess/serve_loop.hpp (docs/cli.md). A
+// larger body is refused from its head and the connection closed, which fetch reports as a network error.
+const MAX_UPLOAD_BYTES = 64 * 1024 * 1024;
+
 // POSTs a file to /api/model or /api/height-map; the server's {"error": ...} becomes the thrown message.
 async function upload(endpoint, file) {
+    if (file.size > MAX_UPLOAD_BYTES) {
+        const mib = (file.size / (1024 * 1024)).toFixed(1);
+        throw new Error(`${file.name}: ${mib} MiB, past ctess serve's upload limit of 64 MiB`);
+    }
     let r;
     try {
         r = await fetch(`api/${endpoint}?name=${encodeURIComponent(file.name)}`, { method: 'POST', body: file });

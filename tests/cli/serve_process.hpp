@@ -77,11 +77,15 @@ struct ServeProcess {
     bool alive() const { return pid > 0 && ::waitpid(pid, nullptr, WNOHANG) == 0; }
 
     // The server's peak resident set (VmHWM), in KiB; 0 if unreadable.
-    long peak_rss_kib() const {
+    long peak_rss_kib() const { return status_kib("VmHWM:"); }
+    // Its resident set now (VmRSS), in KiB.
+    long rss_kib() const { return status_kib("VmRSS:"); }
+
+    long status_kib(const std::string& field) const {
         std::ifstream status("/proc/" + std::to_string(pid) + "/status");
         std::string key;
         while (status >> key) {
-            if (key == "VmHWM:") {
+            if (key == field) {
                 long kib = 0;
                 status >> kib;
                 return kib;
@@ -141,6 +145,23 @@ inline Reply parse_reply(const std::string& all) {
     if (end != std::string::npos) r.body = all.substr(end + 4);
     if (all.rfind("HTTP/1.1 ", 0) == 0) r.status = std::atoi(all.c_str() + 9);
     return r;
+}
+
+// One reply on a kept-alive connection: its head, then Content-Length bytes of body.
+inline Reply recv_reply(int s) {
+    std::string all;
+    char buf[65536];
+    for (;;) {
+        const std::size_t end = all.find("\r\n\r\n");
+        if (end != std::string::npos) {
+            const std::size_t at = all.find("Content-Length: ");
+            const std::size_t length = at < end ? std::strtoul(all.c_str() + at + 16, nullptr, 10) : 0;
+            if (all.size() >= end + 4 + length) return parse_reply(all);
+        }
+        const ssize_t n = ::recv(s, buf, sizeof buf, 0);
+        if (n <= 0) return parse_reply(all);
+        all.append(buf, static_cast<std::size_t>(n));
+    }
 }
 
 // One request on its own connection (the request should say Connection: close).

@@ -42,8 +42,6 @@ std::string pattern_json(const httplib::Request& req) {
     return mesh_to_json(tessellate(r), r);
 }
 
-// A loopback name with an optional port: `127.0.0.1`, `localhost` or `[::1]`. Any other Host (or Origin) is
-// refused, so a DNS-rebound page on another name cannot read the server's answers.
 // An installed ctess (cmake --install) finds the viewer and the shaders in <prefix>/share/ctess/, beside its
 // own bin/; a ctess run from its build tree uses the source's viewer/ and the build's shaders/.
 std::string installed_or_build_dir(const std::string& name, const std::string& build_dir) {
@@ -54,22 +52,6 @@ std::string installed_or_build_dir(const std::string& name, const std::string& b
         if (std::filesystem::is_directory(installed, ec)) return installed.string();
     }
     return build_dir;
-}
-
-bool is_loopback_authority(std::string_view a) {
-    for (const std::string_view name : {"127.0.0.1", "localhost", "[::1]"}) {
-        if (a.substr(0, name.size()) != name) continue;
-        const std::string_view rest = a.substr(name.size());
-        if (rest.empty()) return true;
-        if (rest[0] != ':' || rest.size() < 2 || rest.size() > 6) return false;
-        return rest.substr(1).find_first_not_of("0123456789") == std::string_view::npos;
-    }
-    return false;
-}
-
-bool is_loopback_origin(std::string_view origin) {
-    constexpr std::string_view scheme = "http://";
-    return origin.substr(0, scheme.size()) == scheme && is_loopback_authority(origin.substr(scheme.size()));
 }
 
 // A decoded path with NUL (the file would be found by the name before it, its type taken from the name after
@@ -149,7 +131,7 @@ void answer_upload(const httplib::Request& req, httplib::Response& res, Answer a
     bound_compression(req, res);
 }
 
-httplib::Server::HandlerResponse refuse(httplib::Response& res, int status, const char* why) {
+httplib::Server::HandlerResponse refuse(httplib::Response& res, int status, const std::string& why) {
     res.status = status;
     res.set_content(why, "text/plain");
     return httplib::Server::HandlerResponse::Handled;
@@ -178,14 +160,12 @@ int run_serve(int argc, char** argv) {
         set_accepted_coding(req, accepts_gzip(req.get_header_value("Accept-Encoding")));
         auto& ranges = const_cast<httplib::Request&>(req).ranges;
         const bool many_ranges = ranges.size() > 1 && req.path.rfind("/api/", 0) != 0;
-        if (many_ranges || req.path.rfind("/api/", 0) == 0 ||
-            !is_loopback_authority(req.get_header_value("Host")))
-            ranges.clear();
-        if (!is_loopback_authority(req.get_header_value("Host")))
-            return refuse(res, 403, "ctess serve: Host must be 127.0.0.1, localhost or [::1]\n");
-        if (req.method != "GET" && req.method != "HEAD" && req.has_header("Origin") &&
-            !is_loopback_origin(req.get_header_value("Origin")))
-            return refuse(res, 403, "ctess serve: Origin must be a loopback http origin\n");
+        const std::string origin = req.get_header_value("Origin");
+        const std::string_view origin_view = origin;
+        const char* foreign = foreign_request(req.method, req.get_header_value("Host"),
+                                              req.has_header("Origin") ? &origin_view : nullptr);
+        if (many_ranges || req.path.rfind("/api/", 0) == 0 || foreign) ranges.clear();
+        if (foreign) return refuse(res, 403, fmt::format("ctess serve: {}\n", foreign));
         if (!is_safe_path(req.path)) return refuse(res, 400, "ctess serve: bad path\n");
         if (many_ranges) return refuse(res, 416, "ctess serve: at most one byte range\n");
         // An upload's body is the file's bytes whatever Content-Type the client sent: httplib would parse a

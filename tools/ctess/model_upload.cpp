@@ -76,7 +76,9 @@ std::string json_number(float f) {
 std::string model_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
     const std::optional<models::ModelKind> kind = model_kind_of(name);
     if (!kind) throw std::runtime_error(name + ": the name must end in .glb, .gltf or .obj");
-    models::LoadResult loaded = models::load_model_from_memory(bytes, *kind, name);
+    const models::LoadLimits limits{max_upload_vertices, max_upload_faces,
+                                    "the viewer's limit of 2^22 vertices and 2^23 faces"};
+    models::LoadResult loaded = models::load_model_from_memory(bytes, *kind, name, limits);
     if (!loaded) {
         // One upload holds one file: a .gltf whose buffers are separate files cannot come with it.
         std::string message = loaded.error.message;

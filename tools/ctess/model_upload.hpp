@@ -10,11 +10,18 @@
 //               "u32"), "offset" (bytes from the start of the body, a multiple of 4), "count" (elements)}]
 //   then        the sections, little-endian 32-bit elements, in the order listed
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
 
 namespace ctess::cli {
+
+// An uploaded model's bounds (docs/cli.md, "Viewer server"), checked by the loader as it builds the model
+// (node instancing can turn a small glTF into the loader's own 2^26 vertices, about 12 GiB with what
+// follows): at these, one upload's arrays and answer stay near 2 GiB.
+inline constexpr std::size_t max_upload_vertices = std::size_t{1} << 22;
+inline constexpr std::size_t max_upload_faces = std::size_t{1} << 23;
 
 // The model answer: header {"name", "vertex_count", "triangle_count", "quad_count", "has_normals", "has_uvs",
 // "dropped_degenerate_faces", "open_edges", "displacement" (the file's KHR_materials_displacement: {"factor",
@@ -23,7 +30,8 @@ namespace ctess::cli {
 // vertex), "adjacency" (u32, 12 per face triangle: the triangles, then each quad's two halves), "directions"
 // (f32, 3 per vertex: rt::welded_directions). `name` picks the loader by its extension (.gltf, .glb, .obj)
 // and names the model in errors. Throws std::runtime_error with a message for the user (the loader's, which
-// names the problem) when the name or the bytes are not a model the library reads.
+// names the problem) when the name or the bytes are not a model the library reads, or the model is past
+// max_upload_vertices or max_upload_faces.
 std::string model_answer(std::span<const std::uint8_t> bytes, const std::string& name);
 
 // The height-map answer: header {"name", "width", "height", "texel_min", "texel_max", "sections"}; section

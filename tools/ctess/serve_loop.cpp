@@ -33,16 +33,17 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // One request as httplib reads it: exactly the buffered bytes of this request (a pipelined next request stays
-// with the loop), and writes that give up at the response's deadline.
+// with the loop), and writes that give up at the response's deadline. The deadline starts at the first write,
+// so a model that takes longer than it to prepare is still sent.
 class RequestStream final : public httplib::Stream {
   public:
     RequestStream(int fd, const std::string& request, std::string peer_ip, int peer_port, int local_port,
-                  Clock::time_point deadline)
+                  std::chrono::milliseconds write_deadline)
         : fd_(fd), request_(request), peer_ip_(std::move(peer_ip)), peer_port_(peer_port),
-          local_port_(local_port), deadline_(deadline) {}
+          local_port_(local_port), write_deadline_(write_deadline) {}
 
     bool is_readable() const override { return read_at_ < request_.size(); }
-    bool is_writable() const override { return !failed_ && Clock::now() < deadline_; }
+    bool is_writable() const override { return !failed_ && Clock::now() < deadline(); }
 
     ssize_t read(char* ptr, size_t size) override {
         const std::size_t n = std::min(size, request_.size() - read_at_);
@@ -60,7 +61,7 @@ class RequestStream final : public httplib::Stream {
             }
             if (n < 0 && errno == EINTR) continue;
             const auto left =
-                std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
+                std::chrono::duration_cast<std::chrono::milliseconds>(deadline() - Clock::now()).count();
             pollfd p{fd_, POLLOUT, 0};
             if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK) && left > 0 &&
                 ::poll(&p, 1, static_cast<int>(left)) > 0)
@@ -89,7 +90,15 @@ class RequestStream final : public httplib::Stream {
     std::string peer_ip_;
     int peer_port_;
     int local_port_;
-    Clock::time_point deadline_;
+    Clock::time_point deadline() const {
+        if (!writing_) deadline_ = Clock::now() + write_deadline_;
+        writing_ = true;
+        return deadline_;
+    }
+
+    std::chrono::milliseconds write_deadline_;
+    mutable Clock::time_point deadline_;
+    mutable bool writing_ = false;
     bool failed_ = false;
 };
 
@@ -143,15 +152,19 @@ bool costly_target(std::string_view target) {
 // What the loop learns from a buffered request before a worker sees it.
 struct Framing {
     enum class Kind { incomplete, whole, refuse } kind = Kind::incomplete;
-    std::size_t size = 0; // head and body bytes, when whole
-    int status = 0;       // when refused
-    bool api = false;     // costly_target: the /api/ lane
-    bool json = false;    // an /api/ target: a refusal is {"error": ...}
-    bool upload = false;  // upload_target: the larger body bound, one of the upload slots
+    std::size_t size = 0;         // head and body bytes, when whole
+    int status = 0;               // when refused
+    bool api = false;             // costly_target: the /api/ lane
+    bool json = false;            // an /api/ target: a refusal is {"error": ...}
+    bool upload = false;          // upload_target: the larger body bound, one of the upload slots
+    const char* why = "";         // when refused for a reason the status does not say
+    bool expect_continue = false; // Expect: 100-continue
 };
 
 // Finds where the first buffered request ends (RFC 9112 §6: Content-Length frames a request body; a request
-// with Transfer-Encoding is refused, as nothing here takes a body that large).
+// with Transfer-Encoding is refused, as nothing here takes a body that large). A Content-Encoding is refused
+// too: httplib would decompress the body into memory without a bound (203 bytes of brotli became 268 MB). An
+// upload's Host and Origin are checked here, before its body is buffered or it takes a slot.
 Framing frame_request(std::string_view in, const ServeLimits& limits) {
     Framing f;
     const std::size_t head_end = in.find("\r\n\r\n");
@@ -166,18 +179,21 @@ Framing frame_request(std::string_view in, const ServeLimits& limits) {
     if (sp != std::string_view::npos) {
         std::string_view target = line.substr(sp + 1);
         target = target.substr(0, target.find(' '));
-        f.api = costly_target(target);
-        f.json = target.substr(0, 5) == "/api/";
         f.upload = upload_target(line.substr(0, sp), target);
+        f.api = costly_target(target) || f.upload; // an upload's factors= query does not make it cheap
+        f.json = target.substr(0, 5) == "/api/";
     }
-    const auto refused = [&](int status) {
+    const auto refused = [&](int status, const char* why = "") {
         Framing r = f;
         r.kind = Framing::Kind::refuse;
         r.status = status;
+        r.why = why;
         return r;
     };
     std::size_t body = 0;
     bool has_length = false;
+    std::string_view host, origin;
+    bool has_host = false, has_origin = false;
     for (std::size_t at = line_end + 2; at < head.size();) {
         const std::size_t end = head.find("\r\n", at);
         const std::string_view field = head.substr(at, end - at);
@@ -187,6 +203,17 @@ Framing frame_request(std::string_view in, const ServeLimits& limits) {
         const std::string_view name = field.substr(0, colon);
         const std::string_view value = trim(field.substr(colon + 1));
         if (iequals(name, "Transfer-Encoding")) return refused(501);
+        if (iequals(name, "Content-Encoding")) return refused(415, "request bodies are taken uncompressed");
+        if (iequals(name, "Expect") && iequals(value, "100-continue")) f.expect_continue = true;
+        // The first of each, as httplib's get_header_value reads them.
+        if (iequals(name, "Host") && !has_host) {
+            has_host = true;
+            host = value;
+        }
+        if (iequals(name, "Origin") && !has_origin) {
+            has_origin = true;
+            origin = value;
+        }
         if (!iequals(name, "Content-Length")) continue;
         if (has_length || value.empty() || value.size() > 9 ||
             value.find_first_not_of("0123456789") != std::string_view::npos)
@@ -194,6 +221,9 @@ Framing frame_request(std::string_view in, const ServeLimits& limits) {
         has_length = true;
         body = static_cast<std::size_t>(std::stoul(std::string(value)));
     }
+    if (f.upload)
+        if (const char* why = foreign_request(line.substr(0, sp), host, has_origin ? &origin : nullptr))
+            return refused(403, why);
     if (body > (f.upload ? limits.max_upload_body : limits.max_request_body)) return refused(413);
     f.size = head_end + 4 + body;
     f.kind = in.size() >= f.size ? Framing::Kind::whole : Framing::Kind::incomplete;
@@ -206,8 +236,12 @@ const char* reason(int status) {
         return "Bad Request";
     case 408:
         return "Request Timeout";
+    case 403:
+        return "Forbidden";
     case 413:
         return "Content Too Large";
+    case 415:
+        return "Unsupported Media Type";
     case 431:
         return "Request Header Fields Too Large";
     case 501:
@@ -242,6 +276,33 @@ void refuse_and_close(int fd, int status, bool json = false, const std::string& 
 bool api_request(std::string_view in) {
     const std::size_t sp = in.find(' ');
     return sp != std::string_view::npos && in.substr(sp + 1, 5) == "/api/";
+}
+
+namespace {
+
+bool is_loopback_authority(std::string_view a) {
+    for (const std::string_view name : {"127.0.0.1", "localhost", "[::1]"}) {
+        if (a.substr(0, name.size()) != name) continue;
+        const std::string_view rest = a.substr(name.size());
+        if (rest.empty()) return true;
+        if (rest[0] != ':' || rest.size() < 2 || rest.size() > 6) return false;
+        return rest.substr(1).find_first_not_of("0123456789") == std::string_view::npos;
+    }
+    return false;
+}
+
+bool is_loopback_origin(std::string_view origin) {
+    constexpr std::string_view scheme = "http://";
+    return origin.substr(0, scheme.size()) == scheme && is_loopback_authority(origin.substr(scheme.size()));
+}
+
+} // namespace
+
+const char* foreign_request(std::string_view method, std::string_view host, const std::string_view* origin) {
+    if (!is_loopback_authority(host)) return "Host must be 127.0.0.1, localhost or [::1]";
+    if (method != "GET" && method != "HEAD" && origin && !is_loopback_origin(*origin))
+        return "Origin must be a loopback http origin";
+    return nullptr;
 }
 
 bool upload_target(std::string_view method, std::string_view target) {
@@ -311,7 +372,7 @@ struct ServeWorker {
 
 bool BoundedServer::answer(int fd, const std::string& request, bool last, const std::string& peer_ip,
                            int peer_port) {
-    RequestStream stream(fd, request, peer_ip, peer_port, port_, Clock::now() + limits_.write_deadline);
+    RequestStream stream(fd, request, peer_ip, peer_port, port_, limits_.write_deadline);
     bool closed = false;
     const bool ok = process_request(stream, last, closed, nullptr);
     return ok && !closed && !last && !stream.failed();
@@ -376,7 +437,8 @@ bool BoundedServer::serve_forever() {
         std::size_t answered = 0;
         std::string peer_ip;
         int peer_port = 0;
-        bool upload = false; // holds an upload slot: its request is being buffered or answered
+        bool upload = false;    // holds an upload slot: its request is being buffered or answered
+        bool continued = false; // 100 Continue sent for the request being buffered
     };
     std::unordered_map<int, Connection> connections;
     std::size_t uploads = 0; // upload slots held
@@ -409,7 +471,7 @@ bool BoundedServer::serve_forever() {
             const std::size_t limit = f.upload ? limits_.max_upload_body : limits_.max_request_body;
             return close_connection(
                 fd, f.status, f.json,
-                f.status == 413 ? "the body is larger than " + std::to_string(limit) + " bytes" : "");
+                f.status == 413 ? "the body is larger than " + std::to_string(limit) + " bytes" : f.why);
         }
         // An upload takes a slot as soon as its head says so, before its body is buffered.
         if (f.upload && !c.upload) {
@@ -419,11 +481,34 @@ bool BoundedServer::serve_forever() {
             c.upload = true;
             ++uploads;
         }
-        if (f.kind == Framing::Kind::incomplete) return;
+        if (f.kind == Framing::Kind::incomplete) {
+            // The body's size is known: one allocation of it, where growing by doubling could reach twice.
+            if (f.size > c.in.capacity()) c.in.reserve(f.size);
+            // The head passed every check here (an upload holds its slot): a client waiting for 100 Continue
+            // (curl does, a second, for bodies over 1 MiB) may send the body now. httplib writes its own 100
+            // once the request is whole; clients skip a second interim answer.
+            if (f.expect_continue && !c.continued && f.size > 0 && c.in.find("\r\n\r\n") + 4 == c.in.size()) {
+                constexpr std::string_view go = "HTTP/1.1 100 Continue\r\n\r\n";
+                [[maybe_unused]] const ssize_t n =
+                    ::send(fd, go.data(), go.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+                c.continued = true;
+            }
+            return;
+        }
+        c.continued = false;
         const bool last = c.answered + 1 >= limits_.max_requests_per_connection;
-        ServeWorker::Job job{fd, c.in.substr(0, f.size), last, c.peer_ip, c.peer_port};
+        ServeWorker::Job job{fd, {}, last, c.peer_ip, c.peer_port};
+        if (c.in.size() == f.size) {
+            job.request = std::move(c.in); // no copy of an upload; its buffer goes with the job
+            c.in = std::string();
+        } else {
+            job.request = c.in.substr(0, f.size);
+            c.in.erase(0, f.size);
+            // A kept-alive connection must not keep an upload's buffer: only the next request's bytes stay.
+            if (c.in.capacity() > 2 * limits_.max_request_head + limits_.max_request_body)
+                c.in = std::string(c.in);
+        }
         if (!(f.api ? api : files).push(std::move(job))) return close_connection(fd, 503);
-        c.in.erase(0, f.size);
         ++c.answered;
         order.erase(c.waiting);
         c.busy = true;

@@ -36,6 +36,13 @@ struct ServeLimits {
 // Whether a request line's method and target are an upload (POST /api/model or /api/height-map, any query).
 bool upload_target(std::string_view method, std::string_view target);
 
+// The server's Host and Origin rule (docs/cli.md, "Viewer server"), shared by the loop (uploads, before
+// their bodies are buffered) and cmd_serve.cpp's pre-routing handler (every request): Host must be a loopback
+// name with an optional port, and a request other than GET or HEAD that carries an Origin must come from a
+// loopback http origin, so a DNS-rebound page on another name cannot read or post. `origin` is nullptr when
+// the request has none. Returns nullptr when allowed, else why it is refused (ASCII, no quotes).
+const char* foreign_request(std::string_view method, std::string_view host, const std::string_view* origin);
+
 // Whether a buffered request (its request line may still be partial) is for an /api/ target, whose refusals
 // are JSON.
 bool api_request(std::string_view in);

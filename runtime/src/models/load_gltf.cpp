@@ -1,6 +1,7 @@
 // glTF 2.0 (.gltf with embedded or external buffers, .glb) through tinygltf (Debian's shared libtinygltf,
 // with nlohmann-json; docs/models.md). tinygltf parses the JSON and the buffers; everything read from them
 // here is bounds-checked first, because tinygltf 2.7 does not check accessors against their buffer views.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -216,7 +217,8 @@ std::uint32_t read_index(const AccessorView& v, std::size_t i) {
 
 class GltfReader {
   public:
-    GltfReader(const tinygltf::Model& gltf, Model& model) : g_(gltf), model_(model) {}
+    GltfReader(const tinygltf::Model& gltf, Model& model, const LoadLimits& limits)
+        : g_(gltf), model_(model), limits_(limits) {}
 
     void read_scene() {
         // The default scene, else the first; with no scenes at all (a dangling "scene" included), every mesh
@@ -313,6 +315,22 @@ class GltfReader {
                          : (model_.has_normals &= has_normals, model_.has_uvs &= has_uvs);
         model_.has_tangents = (first_primitive_ || model_.has_tangents) && has_tangents;
         first_primitive_ = false;
+
+        // The caller's limits, from the accessors' counts before anything of this instance is allocated: the
+        // faces are at most those of an all-distinct corner list.
+        const std::size_t base_vertices = model_.vertex_count();
+        if (positions.count > limits_.max_vertices - std::min(base_vertices, limits_.max_vertices))
+            past_limit(limits_, limits_.max_vertices, "vertices");
+        const std::size_t corner_count =
+            prim.indices >= 0 && static_cast<std::size_t>(prim.indices) < g_.accessors.size()
+                ? g_.accessors[static_cast<std::size_t>(prim.indices)].count
+                : positions.count;
+        const std::size_t most_faces = prim.mode == TINYGLTF_MODE_TRIANGLES ? corner_count / 3
+                                       : corner_count >= 3                  ? corner_count - 2
+                                                                            : 0;
+        const std::size_t faces = model_.triangle_count() + model_.quad_count();
+        if (most_faces > limits_.max_faces - std::min(faces, limits_.max_faces))
+            past_limit(limits_, limits_.max_faces, "faces");
 
         // Corner list: the index accessor's values, or 0..count-1 for a non-indexed primitive.
         std::vector<std::uint32_t> corners;
@@ -449,6 +467,7 @@ class GltfReader {
 
     const tinygltf::Model& g_;
     Model& model_;
+    const LoadLimits& limits_;
     bool first_primitive_ = true;
 };
 
@@ -507,7 +526,8 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
 
 } // namespace
 
-Model load_gltf(std::span<const std::uint8_t> bytes, ModelKind kind, const std::string* base_dir) {
+Model load_gltf(std::span<const std::uint8_t> bytes, ModelKind kind, const std::string* base_dir,
+                const LoadLimits& limits) {
     if (bytes.size() > std::numeric_limits<std::uint32_t>::max()) throw LoadFailure{"larger than 4 GiB"};
     FileAccess access{base_dir};
     tinygltf::TinyGLTF loader;
@@ -540,7 +560,7 @@ Model load_gltf(std::span<const std::uint8_t> bytes, ModelKind kind, const std::
                                    ? " (compressed geometry is not decoded)"
                                    : "")};
     Model model;
-    GltfReader(gltf, model).read_scene();
+    GltfReader(gltf, model, limits).read_scene();
     return model;
 }
 

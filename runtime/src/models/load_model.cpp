@@ -86,12 +86,12 @@ std::string content_problem(std::span<const std::uint8_t> bytes, ModelKind kind)
 }
 
 LoadResult load_checked(std::span<const std::uint8_t> bytes, ModelKind kind, const std::string& name,
-                        const std::string* base_dir) {
+                        const std::string* base_dir, const LoadLimits& limits = {}) {
     return detail::guarded_load<LoadResult>(name, [&] {
         if (std::string problem = content_problem(bytes, kind); !problem.empty())
             throw detail::LoadFailure{problem};
-        Model model =
-            kind == ModelKind::obj ? detail::load_obj(bytes) : detail::load_gltf(bytes, kind, base_dir);
+        Model model = kind == ModelKind::obj ? detail::load_obj(bytes, limits)
+                                             : detail::load_gltf(bytes, kind, base_dir, limits);
         detail::check_model(model);
         LoadResult result;
         result.model = std::move(model);
@@ -102,9 +102,17 @@ LoadResult load_checked(std::span<const std::uint8_t> bytes, ModelKind kind, con
 } // namespace
 
 LoadResult load_model_from_memory(std::span<const std::uint8_t> bytes, ModelKind kind,
-                                  const std::string& name) {
-    return load_checked(bytes, kind, name, nullptr);
+                                  const std::string& name, const LoadLimits& limits) {
+    return load_checked(bytes, kind, name, nullptr, limits);
 }
+
+namespace detail {
+
+void past_limit(const LoadLimits& limits, std::size_t bound, const char* of) {
+    throw LoadFailure{"more than " + std::to_string(bound) + " " + of + ", past " + limits.what};
+}
+
+} // namespace detail
 
 LoadResult load_model(const std::string& path) {
     return detail::guarded_load<LoadResult>(path, [&] {

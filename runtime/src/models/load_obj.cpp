@@ -71,7 +71,7 @@ void check_attribute_numbers(std::string_view text) {
 
 } // namespace
 
-Model load_obj(std::span<const std::uint8_t> bytes) {
+Model load_obj(std::span<const std::uint8_t> bytes, const LoadLimits& limits) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = false; // quads stay quads; n-gons are fanned below
     config.vertex_color = false;
@@ -118,6 +118,8 @@ Model load_obj(std::span<const std::uint8_t> bytes) {
                 if (inserted) {
                     if (model.vertex_count() >= std::numeric_limits<std::uint32_t>::max())
                         throw LoadFailure{"more than 2^32 - 1 vertices"};
+                    if (model.vertex_count() >= limits.max_vertices)
+                        past_limit(limits, limits.max_vertices, "vertices");
                     const auto p = static_cast<std::size_t>(idx.vertex_index);
                     float v[model_vertex_floats] = {canonical_zero(attrib.vertices[3 * p]),
                                                     canonical_zero(attrib.vertices[3 * p + 1]),
@@ -133,6 +135,10 @@ Model load_obj(std::span<const std::uint8_t> bytes) {
                 face.push_back(it->second);
             }
             first += corner_count;
+            if (corner_count >= 3 &&
+                model.triangle_count() + model.quad_count() + (corner_count <= 4 ? 1 : corner_count - 2) >
+                    limits.max_faces)
+                past_limit(limits, limits.max_faces, "faces");
             if (corner_count < 3) {
                 ++model.dropped_degenerate_faces;
             } else if (corner_count <= 4) {

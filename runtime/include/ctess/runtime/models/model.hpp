@@ -58,6 +58,16 @@ struct LoadResult {
 
 enum class ModelKind { gltf_text, gltf_binary, obj };
 
+// Bounds a caller puts on a loaded model, checked as it is built, before each primitive's (glTF) or vertex's
+// (OBJ) memory is taken: glTF node instancing can multiply a small file's geometry. The defaults add none to
+// the loaders' own (glTF: 2^26 vertices, 2^27 indices; docs/models.md). `what` names the bound in the error:
+// "more than N vertices, past <what>".
+struct LoadLimits {
+    std::size_t max_vertices = SIZE_MAX;
+    std::size_t max_faces = SIZE_MAX; // triangles and quads
+    std::string what = "the caller's limit";
+};
+
 // Reads .gltf, .glb or .obj (the extension, case-insensitive, picks the loader; the content is then checked:
 // a .glb must start with the binary glTF magic, a .gltf with a JSON object, an .obj must be text). External
 // buffers and images of a .gltf are looked up next to it.
@@ -66,6 +76,6 @@ LoadResult load_model(const std::string& path);
 // The same from bytes in memory, for fuzzers and embedded assets. No file is ever opened: a glTF that refers
 // to an external buffer is an error. `name` is what error messages call the input.
 LoadResult load_model_from_memory(std::span<const std::uint8_t> bytes, ModelKind kind,
-                                  const std::string& name = "<memory>");
+                                  const std::string& name = "<memory>", const LoadLimits& limits = {});
 
 } // namespace ctess::models
