@@ -178,6 +178,24 @@ void check_displaced_seams(const rt::MeshView& mesh, const rt::Displacement& d, 
             }
 }
 
+// Factors grown by d.factor_bound (§8.4): d with grown factors against `zero`, the
+// same displacement at scale 0 (the undisplaced surface at the same factors): more vertices than plain factor
+// 3.5, every pair at one position bit-identical, and the welded output as open as without displacement.
+inline void check_grown_seams(const rt::MeshView& mesh, const rt::Displacement& d,
+                              const rt::Displacement& zero) {
+    rt::PipelineOptions options = constant_factor(3.5f, rt::Surface::pn_aen);
+    options.displacement = &zero;
+    const Output base = unwelded(mesh, options);
+    const std::size_t open_before = open_edges_by_position(welded(mesh, options));
+    options.displacement = &d;
+    const Output grown = unwelded(mesh, options);
+    CHECK(grown.vertices.size() > unwelded(mesh, constant_factor(3.5f, rt::Surface::pn_aen)).vertices.size());
+    const PairCheck pairs = check_pairs(base, grown);
+    CHECK(pairs.shared > 0);
+    CHECK(pairs.mismatched == 0);
+    CHECK(open_edges_by_position(welded(mesh, options)) == open_before);
+}
+
 inline rt::MeshView unit_triangle() {
     static const float vertices[3 * 8] = {0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0,
                                           0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1};

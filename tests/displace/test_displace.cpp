@@ -223,17 +223,7 @@ TEST_CASE("watertight on a real model with seams and split normals: spider.obj, 
     const rt::TexelRange range = rt::texel_range(d.map);
     REQUIRE(d.factor_bound == std::fabs(2.0f * (range.min - 0.5f)));
     REQUIRE(d.factor_bound > 0.99f);
-    rt::PipelineOptions options = constant_factor(3.5f, rt::Surface::pn_aen);
-    options.displacement = &zero;
-    const Output base = unwelded(mesh, options);
-    const std::size_t open_before = open_edges_by_position(welded(mesh, options));
-    options.displacement = &d;
-    const Output grown = unwelded(mesh, options);
-    CHECK(grown.vertices.size() > unwelded(mesh, constant_factor(3.5f, rt::Surface::pn_aen)).vertices.size());
-    const PairCheck pairs = check_pairs(base, grown);
-    CHECK(pairs.shared > 0);
-    CHECK(pairs.mismatched == 0);
-    CHECK(open_edges_by_position(welded(mesh, options)) == open_before);
+    check_grown_seams(mesh, d, zero);
 }
 
 TEST_CASE("a .glb's displacement image in a buffer view reaches the height map loader (docs/models.md)") {

@@ -313,19 +313,9 @@ TEST_CASE("vector displacement is watertight on spider.obj: an RGB noise map, gr
     d.factor_bound = rt::displacement_bound(d);
     CHECK(d.factor_bound > 1.5f);
     CHECK(d.factor_bound <= std::sqrt(3.0f) * (1.0f + 1e-6f));
-    rt::PipelineOptions options = constant_factor(3.5f, rt::Surface::pn_aen);
     rt::Displacement zero = d;
     zero.scale = 0.0f;
-    options.displacement = &zero;
-    const Output base = unwelded(mesh, options);
-    const std::size_t open_before = open_edges_by_position(welded(mesh, options));
-    options.displacement = &d;
-    const Output grown = unwelded(mesh, options);
-    CHECK(grown.vertices.size() > unwelded(mesh, constant_factor(3.5f, rt::Surface::pn_aen)).vertices.size());
-    const PairCheck pairs = check_pairs(base, grown);
-    CHECK(pairs.shared > 0);
-    CHECK(pairs.mismatched == 0);
-    CHECK(open_edges_by_position(welded(mesh, options)) == open_before);
+    check_grown_seams(mesh, d, zero);
 }
 
 TEST_CASE("vector displacement: the map's bound and RGB sampling (§8.7)") {
