@@ -105,6 +105,18 @@ async function upload(endpoint, file) {
     return parseContainer(await r.arrayBuffer());
 }
 
+// `ctess mesh --displace-grow`'s bound, rt::displacement_bound for a height map (docs/algorithm.md §8.4): the
+// larger |scale · (texel · factor + offset)| at the map's smallest and largest texel, in float32 operation by
+// operation as the runtime computes it (no contraction), so that the grown factors are the CLI's.
+function heightBound(map, scale, offset) {
+    if (!Number.isFinite(map.texelMin) || !Number.isFinite(map.texelMax))
+        throw new Error(`${map.name}: no finite texel range, so no displacement bound to grow factors by`);
+    const f = Math.fround;
+    const at = (texel) => Math.abs(f(scale * f(f(texel * map.factor) + offset)));
+    const lo = at(map.texelMin), hi = at(map.texelMax);
+    return lo > hi ? lo : hi;
+}
+
 // The model as the pipeline takes it, and the box the camera frames.
 function withBounds(mesh) {
     const v = mesh.vertices, n = v.length / MESH_VERTEX_FLOATS;
@@ -206,7 +218,7 @@ export class MeshView {
         Object.assign(this, { ui, pipelineFor, requestRedraw: redraw, setStatus });
         this.targets = [new Target(ui.canvas), new Target(ui.canvasB)];
         this.model = null; // the uploaded model (withBounds), once loaded
-        this.heightMap = null; // {name, width, height, texels}
+        this.heightMap = null; // {name, width, height, texels, texelMin, texelMax, factor, fromModel}
         this.camera = null; // {eye, target}: set from the mesh's bounds when null
         this.cameraFor = null; // the mesh the camera was framed for
         this.passSetsSeen = new Set(); // max factor, patterns, displaced, quads: the pass sets drawn so far
@@ -215,7 +227,7 @@ export class MeshView {
         this.meshCache = new Map();
         for (const canvas of [ui.canvas, ui.canvasB]) this.listenCamera(canvas);
         for (const el of [ui.kind, ui.surface, ui.dice, ui.pattern, ui.compare, ui.comparePattern, ui.wireframe, ui.displace,
-                          ui.displaceScale, ui.displaceOffset, ui.displaceAddress])
+                          ui.displaceScale, ui.displaceOffset, ui.displaceAddress, ui.displaceGrow])
             el.addEventListener('input', () => redraw());
         ui.modelFile.addEventListener('change', () => ui.modelFile.files[0] && this.loadModel(ui.modelFile.files[0]));
         ui.heightFile.addEventListener('change', () => ui.heightFile.files[0] && this.loadHeightMap(ui.heightFile.files[0]));
@@ -226,7 +238,7 @@ export class MeshView {
                 e.preventDefault();
                 zone.classList.remove('dragging');
                 for (const file of e.dataTransfer.files) {
-                    if (/\.png$/i.test(file.name) || file.type === 'image/png') this.loadHeightMap(file);
+                    if (/\.(png|exr)$/i.test(file.name) || file.type === 'image/png') this.loadHeightMap(file);
                     else this.loadModel(file);
                 }
             });
@@ -295,6 +307,7 @@ export class MeshView {
                 `${header.quad_count} quads, ${header.open_edges} open edges` +
                 (header.dropped_degenerate_faces ? `, ${header.dropped_degenerate_faces} degenerate faces dropped` : '') +
                 (header.has_normals ? '' : ' (no normals in the file: zeros, so PN and Phong are flat)');
+            this.useModelDisplacement(header, sections.displacement_texels);
             this.ui.kind.value = 'model';
             if (!this.cameraPinned) this.camera = null; // frame the new model
             this.ui.kind.dispatchEvent(new Event('change'));
@@ -309,14 +322,38 @@ export class MeshView {
         try {
             this.setStatus(`Loading ${file.name} through ctess serve…`);
             const { header, sections } = await upload('height-map', file);
-            this.heightMap = { name: header.name, width: header.width, height: header.height, texels: sections.texels };
-            this.ui.displace.disabled = false;
-            this.ui.displace.checked = true;
+            this.setHeightMap({ name: header.name, width: header.width, height: header.height, texels: sections.texels,
+                                texelMin: header.texel_min, texelMax: header.texel_max, factor: 1, fromModel: false });
             this.requestRedraw();
         } catch (e) {
             this.setStatus(`Height map: ${e.message}`, true);
             window.ctessViewer = { ...(window.ctessViewer ?? {}), uploadError: e.message };
         }
+    }
+
+    setHeightMap(map) {
+        this.heightMap = map;
+        this.ui.displace.disabled = !map;
+        this.ui.displace.checked = !!map;
+        this.ui.displaceInfo.textContent = map ? `${map.name}: ${map.width} × ${map.height}` +
+            (map.fromModel ? `, the model's KHR_materials_displacement (factor ${map.factor})` : '') : '';
+    }
+
+    // The model's own KHR_materials_displacement image, as `ctess mesh --displace-gltf` takes it: its factor,
+    // and its offset typed into the offset field (the CLI's default for --displace-offset). A model without
+    // one leaves an uploaded height map in place and drops the previous model's.
+    useModelDisplacement(header, texels) {
+        const d = header.displacement;
+        if (d && d.width > 0 && texels) {
+            this.setHeightMap({ name: `${header.name} (embedded displacement image)`, width: d.width, height: d.height, texels,
+                                texelMin: d.texel_min, texelMax: d.texel_max, factor: Math.fround(d.factor), fromModel: true });
+            this.ui.displaceOffset.value = String(d.offset);
+        } else if (this.heightMap?.fromModel) {
+            this.setHeightMap(null);
+        }
+        if (d?.image_error) this.setStatus(`Displacement image: ${d.image_error}`, true);
+        else if (d && !d.embedded_image)
+            this.setStatus(`${header.name}: the displacement image${d.image_uri ? ` ${d.image_uri}` : ''} is not in the file; upload it as a height map`, true);
     }
 
     mesh(kind) {
@@ -414,13 +451,16 @@ export class MeshView {
                 depthStencil: { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' },
             });
         }
-        // Displacement (docs/shaders.md, "Displacement"): an uploaded height map, factor 1 as `ctess mesh
-        // --displace FILE`, the scale and offset typed (float32, as the CLI parses them).
+        // Displacement (docs/shaders.md, "Displacement"): an uploaded height map (factor 1, as `ctess mesh
+        // --displace FILE`) or the model's own image (its factor, as --displace-gltf), the scale and offset
+        // typed (float32, as the CLI parses them).
         const h = this.heightMap, displaced = !!(h && this.ui.displace.checked);
         const [scale, offset] = [this.ui.displaceScale.value, this.ui.displaceOffset.value].map((x) => Math.fround(Number(x)));
         if (displaced && !(Number.isFinite(scale) && Number.isFinite(offset))) throw new Error('displacement: scale and offset must be finite numbers');
-        const displacement = displaced ? { texels: h.texels, params: { scale, factor: 1, offset, width: h.width, height: h.height,
-                                                                       address: this.ui.displaceAddress.value } } : null;
+        const grow = displaced && this.ui.displaceGrow.checked;
+        const factorBound = grow ? heightBound(h, scale, offset) : 0;
+        const displacement = displaced ? { texels: h.texels, params: { scale, factor: h.factor, offset, factorBound, width: h.width,
+                                                                       height: h.height, address: this.ui.displaceAddress.value } } : null;
         const near = Math.max(1e-4 * mesh.radius, Math.hypot(...sub(eye, target)) - 4 * mesh.radius);
         const far = Math.hypot(...sub(eye, target)) + 8 * mesh.radius;
         const canvas = this.targets[0].canvas;
@@ -462,7 +502,8 @@ export class MeshView {
             view: 'mesh', mode: patterns[0], uniformMax, max: maxFactor, mesh: kind, model: kind === 'model' ? this.model.header : null,
             patches: mesh.patches, quads: mesh.quads.length / 4, surface, diceRate: dice, camera: { eye: [...eye], target: [...target], fov: this.fovDegrees },
             resolution: [canvas.width, canvas.height], factorScaleBits: sides[0].factorScaleBits,
-            displacement: displaced ? { scale, offset, address: this.ui.displaceAddress.value, width: h.width, height: h.height, name: h.name } : null,
+            displacement: displaced ? { scale, factor: h.factor, offset, factorBound, address: this.ui.displaceAddress.value,
+                                        width: h.width, height: h.height, name: h.name, fromModel: h.fromModel } : null,
             wireframe: settings.wireframe, vertices: sides[0].vertices, triangles: sides[0].triangles, checksum: sides[0].checksum,
             compare: compare ? { mode: patterns[1], vertices: sides[1].vertices, triangles: sides[1].triangles, checksum: sides[1].checksum } : null,
             ms: { frame: frameMs, compute: sides.map((s) => s.computeMs) }, readback,

@@ -395,7 +395,8 @@ const meshView = new MeshView({
     captionB: $('caption-b'), kind: $('mesh-kind'), kindModel: $('mesh-kind-model'), pattern: $('mesh-pattern'),
     compare: $('compare'), comparePattern: $('compare-pattern'), surface: $('surface'), dice: $('dice'),
     diceValue: $('dice-value'), wireframe: $('wireframe'), displace: $('displace'), displaceScale: $('displace-scale'),
-    displaceOffset: $('displace-offset'), displaceAddress: $('displace-address'), modelFile: $('model-file'),
+    displaceOffset: $('displace-offset'), displaceAddress: $('displace-address'), displaceGrow: $('displace-grow'),
+    displaceInfo: $('displace-info'), modelFile: $('model-file'),
     heightFile: $('height-file'), dropZone: $('drop-zone'), modelInfo: $('model-info'), patches: $('mesh-patches'),
     vertices: $('mesh-vertices'), triangles: $('mesh-triangles'), frameTime: $('frame-time'),
 }, () => pipelineFor(state.max), redraw, setStatus);

@@ -141,6 +141,7 @@ TEST_CASE("serve upload: a mixed OBJ comes back as ctess mesh prepares it", "[cl
     CHECK(h.at("has_uvs") == true);
     CHECK(h.at("open_edges") == 0);
     CHECK(h.at("displacement").is_null());
+    CHECK(c.section<float>("displacement_texels").empty());
     const auto vertices = c.section<float>("vertices");
     const auto triangles = c.section<std::uint32_t>("triangles");
     const auto quads = c.section<std::uint32_t>("quads");
@@ -408,6 +409,76 @@ std::string glb_of(std::string json, std::string bin) {
     glb += "JSON" + json;
     word(bin.size());
     return glb + std::string("BIN\0", 4) + bin;
+}
+
+// One triangle whose material has KHR_materials_displacement (factor 0.5, offset -0.25) with texture 0's
+// image either in the .glb's buffer (`image` its bytes) or the file `uri` beside it.
+std::string displaced_triangle_glb(const std::string& image, const std::string& uri = "") {
+    const std::string source =
+        uri.empty() ? R"({"bufferView": 1, "mimeType": "image/png"})" : R"({"uri": ")" + uri + R"("})";
+    const std::string json =
+        R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+  "materials": [{"extensions": {"KHR_materials_displacement": {"displacementTexture": {"index": 0},
+    "displacementFactor": 0.5, "displacementOffset": -0.25}}}],
+  "extensionsUsed": ["KHR_materials_displacement"],
+  "textures": [{"source": 0}], "images": [)" +
+        source + R"(], "buffers": [{"byteLength": )" + std::to_string(36 + image.size()) +
+        R"(}], "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": )" +
+        std::to_string(image.size()) + R"(}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}]})";
+    std::string bin(36, '\0');
+    const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::memcpy(bin.data(), corners, 36);
+    return glb_of(json, bin + image);
+}
+
+TEST_CASE("serve upload: a glTF's own displacement image comes with the model, a bad one is named",
+          "[cli][serve][upload]") {
+    const ServeProcess server;
+    REQUIRE(server.port > 0);
+    const int port = server.port;
+    const auto value = [](int x, int y) { return static_cast<std::uint8_t>(40 + x * 60 + y * 10); };
+    const Reply r = http(port, post("/api/model?name=d.glb", port, displaced_triangle_glb(png(3, 2, value))));
+    REQUIRE(r.status == 200);
+    const Container c = parse_container(r.body);
+    const nlohmann::json& d = c.header.at("displacement");
+    CHECK(d.at("factor") == 0.5);
+    CHECK(d.at("offset") == -0.25);
+    CHECK(d.at("embedded_image") == true);
+    CHECK(d.at("width") == 3);
+    CHECK(d.at("height") == 2);
+    CHECK(d.at("texel_min").get<double>() == Approx(40 / 255.0).epsilon(1e-7));
+    CHECK(d.at("texel_max").get<double>() == Approx(170 / 255.0).epsilon(1e-7));
+    const auto texels = c.section<float>("displacement_texels");
+    REQUIRE(texels.size() == 6);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x)
+            CHECK(texels[static_cast<std::size_t>(y * 3 + x)] == Approx(value(x, y) / 255.0).epsilon(1e-7));
+
+    // An embedded image that does not decode: the model still loads, the header names the problem.
+    const Reply broken =
+        http(port, post("/api/model?name=b.glb", port, displaced_triangle_glb("not a png!!!")));
+    REQUIRE(broken.status == 200);
+    const Container b = parse_container(broken.body);
+    CHECK(b.header.at("displacement").at("embedded_image") == true);
+    CHECK(b.header.at("displacement")
+              .at("image_error")
+              .get<std::string>()
+              .find("b.glb (embedded displacement image)") != std::string::npos);
+    CHECK_FALSE(b.header.at("displacement").contains("width"));
+    CHECK(b.section<float>("displacement_texels").empty());
+
+    // An image in a separate file cannot come with one upload: named, no texels.
+    const Reply external =
+        http(port, post("/api/model?name=e.glb", port, displaced_triangle_glb("", "h.png")));
+    REQUIRE(external.status == 200);
+    const Container e = parse_container(external.body);
+    CHECK(e.header.at("displacement").at("embedded_image") == false);
+    CHECK(e.header.at("displacement").at("image_uri") == "h.png");
+    CHECK(e.section<float>("displacement_texels").empty());
+    CHECK(server.alive());
 }
 
 TEST_CASE("serve upload: a glTF past the viewer's vertex or face limit gets 400", "[cli][serve][upload]") {

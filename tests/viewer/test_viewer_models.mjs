@@ -4,12 +4,14 @@
 // (glTF2/BoxTextured-glTF-Binary/BoxTextured.glb: 24 vertices at 8 positions) by drag and drop, plus a height
 // map, sets the camera exactly (URL and JS hook) and the DiceRate, and compares the page's counts and the
 // checksums of its output buffers (window.ctessViewer, and window.ctessViewerChecksum on request) with `ctess mesh --stats`'s
-// `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement. The built-in
+// `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement, and the seamed
+// model given its own KHR_materials_displacement image with factors grown by its bound. The built-in
 // quad torus displaced by the map stays closed and moves by at most the height bound. A .gltf whose buffer is a
 // separate file is refused with the server's message on the page.
 //   node tests/viewer/test_viewer_models.mjs path/to/ctess    exit 0 pass, 1 fail, 77 skipped (no chromium/models)
 import { spawn, execFileSync } from 'node:child_process';
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { chromium } from 'playwright-core';
 
 const ctess = process.argv[2];
@@ -46,7 +48,9 @@ process.on('exit', () => server.kill());
 const cliStats = (file, { pattern, surface, dice, eye, displace }) => JSON.parse(execFileSync(ctess, [
     'mesh', '--in', file, '--stats', '--pattern', pattern, '--surface', surface, '--dice-rate', String(dice),
     '--camera', eye.join(','), '--fov', '45', '--resolution', '640,600',
-    ...(displace ? ['--displace', displace.file, '--displace-scale', String(displace.scale), '--displace-offset', String(displace.offset)] : []),
+    ...(displace ? [...(displace.gltf ? ['--displace-gltf'] : ['--displace', displace.file]), '--displace-scale', String(displace.scale),
+                    ...(displace.offset !== undefined ? ['--displace-offset', String(displace.offset)] : []),
+                    ...(displace.grow ? ['--displace-grow'] : [])] : []),
 ], { encoding: 'utf8' }));
 
 const flags = ['--no-sandbox', '--disable-quic', '--disable-background-networking', '--disable-component-update', '--disable-sync',
@@ -170,6 +174,43 @@ state = await viewerState((eye) => window.ctessViewer?.model?.name === 'BoxTextu
 check(state.model.vertex_count === 24 && state.model.open_edges === 0 && state.quads === 0 && page.url().includes('camera=2.2'),
       `seamed model: ${JSON.stringify(state.model)}, URL ${page.url()}`);
 await sameAsCli(state, seams, { surface: 'pn-aen', dice: 20, eye: seamsEye }, [['cp', 0], ['uniform', 1]]);
+
+// ---- the model's own KHR_materials_displacement image, factors grown by its bound (--displace-gltf --displace-grow) ----
+// BoxTextured.glb with the extension added to its material, pointing at its own embedded texture (CesiumLogoFlat,
+// 211 x 211): the GLB's JSON chunk rewritten, its binary chunk kept.
+const withDisplacement = (() => {
+    const glb = readFileSync(seams), jsonLength = glb.readUInt32LE(12);
+    const gltf = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
+    gltf.extensionsUsed = [...(gltf.extensionsUsed ?? []), 'KHR_materials_displacement'];
+    gltf.materials[0].extensions = { ...(gltf.materials[0].extensions ?? {}),
+                                     KHR_materials_displacement: { displacementTexture: { index: 0 }, displacementFactor: 0.5, displacementOffset: -0.25 } };
+    let json = Buffer.from(JSON.stringify(gltf), 'utf8');
+    json = Buffer.concat([json, Buffer.alloc((4 - (json.length % 4)) % 4, 0x20)]);
+    const rest = glb.subarray(20 + jsonLength), header = Buffer.alloc(20);
+    header.write('glTF', 0, 'latin1');
+    header.writeUInt32LE(2, 4);
+    header.writeUInt32LE(20 + json.length + rest.length, 8);
+    header.writeUInt32LE(json.length, 12);
+    header.write('JSON', 16, 'latin1');
+    const dir = mkdtempSync(`${tmpdir()}/ctess-viewer-`), file = `${dir}/BoxDisplaced.glb`;
+    writeFileSync(file, Buffer.concat([header, json, rest]));
+    process.on('exit', () => rmSync(dir, { recursive: true, force: true }));
+    return file;
+})();
+await page.uncheck('#compare');
+await page.fill('#displace-scale', '0.2');
+await page.setInputFiles('#model-file', withDisplacement);
+const ungrown = await viewerState(() => window.ctessViewer?.model?.name === 'BoxDisplaced.glb' && window.ctessViewer.displacement?.fromModel &&
+                                         window.ctessViewer.displacement.factorBound === 0 && !window.ctessViewer.compare);
+check(ungrown.displacement.factor === 0.5 && ungrown.displacement.offset === -0.25 && ungrown.displacement.width === 211 &&
+      ungrown.model.displacement?.embedded_image === true, `glTF displacement: ${JSON.stringify(ungrown.displacement)}, header ${JSON.stringify(ungrown.model.displacement)}`);
+await page.check('#displace-grow');
+state = await viewerState(() => window.ctessViewer?.displacement?.factorBound > 0);
+// The bound: |0.2 · (texel · 0.5 − 0.25)| at the map's extreme texels, as rt::displacement_bound computes it.
+check(state.triangles > ungrown.triangles, `grown factors: ${state.triangles} triangles, ungrown ${ungrown.triangles} (bound ${state.displacement.factorBound})`);
+await sameAsCli(state, withDisplacement, { surface: 'pn-aen', dice: 20, eye: seamsEye, displace: { gltf: true, scale: 0.2, grow: true } }, [['cp', 0]]);
+await page.uncheck('#displace-grow');
+await viewerState(() => window.ctessViewer?.displacement?.factorBound === 0); // the redraw done before the next upload
 
 // ---- a .gltf whose buffer is a separate file cannot come in one upload: the page shows why ----
 await page.setInputFiles('#model-file', external);

@@ -91,12 +91,37 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
     const PreparedModel prepared = prepare_model(std::move(*loaded.model), name);
     const std::vector<float> directions = displacement_directions(prepared, name);
     const models::Model& m = prepared.model;
+    // The file's KHR_materials_displacement: its embedded image decoded as `ctess mesh --displace-gltf`
+    // decodes it, so that the viewer displaces by it. A failed decode is reported in the header, not as a
+    // failed upload: the model itself is fine.
     const models::Model::Displacement& d = m.displacement;
-    const std::string displacement =
-        d.present
-            ? fmt::format("{{\"factor\": {}, \"offset\": {}, \"embedded_image\": {}}}", json_number(d.factor),
-                          json_number(d.offset), d.image_uri.empty() && !d.image_bytes.empty())
-            : std::string("null");
+    std::string displacement = "null";
+    models::HeightImage image;
+    if (d.present) {
+        std::string image_fields;
+        if (!d.image_uri.empty()) {
+            image_fields =
+                fmt::format("\"embedded_image\": false, \"image_uri\": \"{}\"", json_escape(d.image_uri));
+        } else if (!d.image_bytes.empty()) {
+            models::HeightMapResult decoded =
+                models::load_height_map_from_memory(d.image_bytes, name + " (embedded displacement image)");
+            if (decoded) {
+                image = std::move(*decoded.image);
+                const rt::TexelRange range = rt::texel_range(image.view());
+                image_fields =
+                    fmt::format("\"embedded_image\": true, \"width\": {}, \"height\": {}, \"texel_min\": {}, "
+                                "\"texel_max\": {}",
+                                image.width, image.height, json_number(range.min), json_number(range.max));
+            } else {
+                image_fields = fmt::format("\"embedded_image\": true, \"image_error\": \"{}\"",
+                                           json_escape(decoded.error.message));
+            }
+        } else {
+            image_fields = "\"embedded_image\": false";
+        }
+        displacement = fmt::format("{{\"factor\": {}, \"offset\": {}, {}}}", json_number(d.factor),
+                                   json_number(d.offset), image_fields);
+    }
     const std::string scalars = fmt::format(
         "\"name\": \"{}\", \"vertex_count\": {}, \"triangle_count\": {}, \"quad_count\": {}, "
         "\"has_normals\": {}, "
@@ -111,6 +136,7 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
         {"position_ids", "u32", a.position_ids.data(), a.position_ids.size()},
         {"adjacency", "u32", a.tessellation_indices.data(), a.tessellation_indices.size()},
         {"directions", "f32", directions.data(), directions.size()},
+        {"displacement_texels", "f32", image.texels.data(), image.texels.size()},
     };
     return container(scalars, sections);
 }

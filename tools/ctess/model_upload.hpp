@@ -24,14 +24,17 @@ inline constexpr std::size_t max_upload_vertices = std::size_t{1} << 22;
 inline constexpr std::size_t max_upload_faces = std::size_t{1} << 23;
 
 // The model answer: header {"name", "vertex_count", "triangle_count", "quad_count", "has_normals", "has_uvs",
-// "dropped_degenerate_faces", "open_edges", "displacement" (the file's KHR_materials_displacement: {"factor",
-// "offset", "embedded_image"} or null), "sections"}; sections "vertices" (f32, 8 per vertex: position,
-// normal, uv), "triangles" (u32, 3 per triangle), "quads" (u32, 4 per quad), "position_ids" (u32, 1 per
-// vertex), "adjacency" (u32, 12 per face triangle: the triangles, then each quad's two halves), "directions"
-// (f32, 3 per vertex: rt::welded_directions). `name` picks the loader by its extension (.gltf, .glb, .obj)
-// and names the model in errors. Throws std::runtime_error with a message for the user (the loader's, which
-// names the problem) when the name or the bytes are not a model the library reads, or the model is past
-// max_upload_vertices or max_upload_faces.
+// "dropped_degenerate_faces", "open_edges", "displacement", "sections"}; sections "vertices" (f32, 8 per
+// vertex: position, normal, uv), "triangles" (u32, 3 per triangle), "quads" (u32, 4 per quad), "position_ids"
+// (u32, 1 per vertex), "adjacency" (u32, 12 per face triangle: the triangles, then each quad's two halves),
+// "directions" (f32, 3 per vertex: rt::welded_directions), "displacement_texels" (f32, width * height as the
+// height-map answer's "texels"; empty unless the image below decoded). "displacement" is null, or the file's
+// KHR_materials_displacement: {"factor", "offset", "embedded_image" (the image is inside the file), then
+// "width", "height", "texel_min", "texel_max" when that image decoded, "image_error" (the loader's message)
+// when it did not, "image_uri" when the image is a separate file (one upload holds one file)}. `name` picks
+// the loader by its extension (.gltf, .glb, .obj) and names the model in errors. Throws std::runtime_error
+// with a message for the user (the loader's, which names the problem) when the name or the bytes are not a
+// model the library reads, or the model is past max_upload_vertices or max_upload_faces.
 std::string model_answer(std::span<const std::uint8_t> bytes, const std::string& name);
 
 // The height-map answer: header {"name", "width", "height", "texel_min", "texel_max", "sections"}; section
