@@ -171,6 +171,21 @@ TEST_CASE("serve upload: a mixed OBJ comes back as ctess mesh prepares it", "[cl
         for (int k = 0; k < 3; ++k)
             CHECK(directions[3 * v + k] == Approx((p[k] - 0.5f) * 2 / std::sqrt(3.0f)).margin(1e-6));
     }
+    // Vector displacement's tangents from the uvs (docs/algorithm.md §8.7): the first quad's uvs run (0,0),
+    // (1,0), (1,1), (0,1) along +x then +z, so its tangent is +x and cross(N, T) = +z is dP/dv: w = +1.
+    CHECK(h.at("tangent_source") == "uv");
+    const auto tangents = c.section<float>("tangents");
+    REQUIRE(tangents.size() == 24 * 4);
+    for (int k = 0; k < 4; ++k) {
+        const std::size_t v = quads[static_cast<std::size_t>(k)];
+        CHECK(std::vector<float>(tangents.begin() + 4 * v, tangents.begin() + 4 * v + 4) ==
+              std::vector<float>{1, 0, 0, 1});
+    }
+    for (std::size_t v = 0; v < 24; ++v) {
+        const float* t = tangents.data() + 4 * v;
+        CHECK(std::fabs(t[3]) == 1.0f);
+        CHECK(t[0] * t[0] + t[1] * t[1] + t[2] * t[2] == Approx(1.0).margin(1e-6));
+    }
     // The adjacency's corners are the triangles', then each quad's (q0, q1, q2) and (q0, q2, q3).
     for (std::size_t t = 0; t < 4; ++t)
         for (std::size_t k = 0; k < 3; ++k) CHECK(adjacency[12 * t + k] == triangles[3 * t + k]);
@@ -255,6 +270,24 @@ TEST_CASE("serve upload: height maps come back as the library decodes them, bad 
     CHECK(text.status == 400);
     CHECK(is_json_error(text, "t.png"));
     CHECK(http(port, post("/api/height-map?name=e.png", port, "")).status == 400);
+
+    // A vector map (`--displace-vector`): r, g, b per texel; a grey image is refused, as the CLI refuses it.
+    std::vector<std::uint8_t> rgb(2 * 2 * 3);
+    for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<std::uint8_t>(17 * i);
+    std::string rgb_png;
+    REQUIRE(stbi_write_png_to_func(&append_bytes, &rgb_png, 2, 2, 3, rgb.data(), 6) != 0);
+    const Reply v = http(port, post("/api/vector-map?name=v.png", port, rgb_png));
+    REQUIRE(v.status == 200);
+    const Container vc = parse_container(v.body);
+    CHECK(vc.header.at("width") == 2);
+    CHECK(vc.header.at("height") == 2);
+    CHECK(vc.header.at("channels") == 3);
+    const auto vector_texels = vc.section<float>("texels");
+    REQUIRE(vector_texels.size() == 12);
+    for (std::size_t i = 0; i < 12; ++i) CHECK(vector_texels[i] == Approx(17.0 * i / 255.0).epsilon(1e-7));
+    const Reply grey = http(port, post("/api/vector-map?name=g.png", port, png(2, 2, value)));
+    CHECK(grey.status == 400);
+    CHECK(is_json_error(grey, "g.png"));
 }
 
 TEST_CASE("serve upload: the body limit, two uploads at once, Host and Origin", "[cli][serve][upload]") {

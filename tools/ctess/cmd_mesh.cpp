@@ -361,15 +361,9 @@ int run_mesh(int argc, char** argv) {
         if (displace.vector) {
             // One frame per position, from the dominant vertex's tangent (docs/algorithm.md §8.7): the
             // model's own (glTF TANGENT) when every primitive has them, else from the uv gradients.
-            if (model.has_tangents && model.tangents.size() == 4 * model.vertex_count()) {
-                tangents = model.tangents;
-                tangent_source = "model";
-            } else {
-                tangents.resize(4 * model.vertex_count());
-                if (!rt::uv_tangents(view, tangents))
-                    throw std::runtime_error(in + ": cannot compute the displacement tangents");
-                tangent_source = "uv";
-            }
+            DisplacementTangents frame = displacement_tangents(prepared, in);
+            tangents = std::move(frame.tangents);
+            tangent_source = frame.source;
             displacement.mode = rt::DisplacementMode::vector;
             displacement.tangents = tangents.data();
         }

@@ -111,9 +111,9 @@ void bound_compression(const httplib::Request& req, const httplib::Response& res
     if (res.body.size() > kMaxCompressedBody) set_accepted_coding(req, false);
 }
 
-// POST /api/model?name=FILE and /api/height-map?name=FILE: the body is the file's bytes, the answer the
-// library's reading of it in model_upload.hpp's container, or 400 and {"error": "..."} naming the problem.
-// The loop has bounded the body (ServeLimits::max_upload_body) and the number of uploads at once.
+// POST /api/model, /api/height-map and /api/vector-map (?name=FILE): the body is the file's bytes, the answer
+// the library's reading of it in model_upload.hpp's container, or 400 and {"error": "..."} naming the
+// problem. The loop has bounded the body (ServeLimits::max_upload_body) and the number of uploads at once.
 template <class Answer>
 void answer_upload(const httplib::Request& req, httplib::Response& res, Answer answer) {
     try {
@@ -195,6 +195,9 @@ int run_serve(int argc, char** argv) {
     });
     server.Post("/api/height-map", [](const httplib::Request& req, httplib::Response& res) {
         answer_upload(req, res, height_map_answer);
+    });
+    server.Post("/api/vector-map", [](const httplib::Request& req, httplib::Response& res) {
+        answer_upload(req, res, vector_map_answer);
     });
 
     const char* host = "127.0.0.1"; // loopback only: the viewer is a local tool

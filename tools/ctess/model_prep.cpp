@@ -59,4 +59,19 @@ std::vector<float> displacement_directions(const PreparedModel& prepared, const 
     return directions;
 }
 
+DisplacementTangents displacement_tangents(const PreparedModel& prepared, const std::string& name) {
+    const models::Model& model = prepared.model;
+    DisplacementTangents out;
+    if (model.has_tangents && model.tangents.size() == 4 * model.vertex_count()) {
+        out.tangents = model.tangents;
+        out.source = "model";
+        return out;
+    }
+    out.tangents.resize(4 * model.vertex_count());
+    if (!rt::uv_tangents(prepared.view(), out.tangents))
+        throw std::runtime_error(name + ": cannot compute the displacement tangents");
+    out.source = "uv";
+    return out;
+}
+
 } // namespace ctess::cli

@@ -34,6 +34,15 @@ PreparedModel prepare_model(models::Model&& model, const std::string& name);
 // Throws std::runtime_error naming `name` if the library refuses the mesh.
 std::vector<float> displacement_directions(const PreparedModel& prepared, const std::string& name);
 
+// Vector displacement's tangents (docs/algorithm.md §8.7), 4 floats per vertex (glTF TANGENT's layout): the
+// model's own when every vertex has one (`source` "model"), else rt::uv_tangents from the uvs ("uv"). Throws
+// std::runtime_error naming `name` if the library refuses the mesh.
+struct DisplacementTangents {
+    std::vector<float> tangents;
+    const char* source = "none";
+};
+DisplacementTangents displacement_tangents(const PreparedModel& prepared, const std::string& name);
+
 // The loader a file name picks (its extension, case-insensitive: .gltf, .glb, .obj), or none.
 std::optional<models::ModelKind> model_kind_of(const std::string& name);
 

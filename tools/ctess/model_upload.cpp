@@ -91,6 +91,10 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
     const PreparedModel prepared = prepare_model(std::move(*loaded.model), name);
     const std::vector<float> directions = displacement_directions(prepared, name);
     const models::Model& m = prepared.model;
+    // Vector displacement's frame (docs/algorithm.md §8.7), as `ctess mesh --displace-vector` picks it; a
+    // model without uvs has none (the CLI refuses it).
+    const DisplacementTangents tangents =
+        m.has_uvs || m.has_tangents ? displacement_tangents(prepared, name) : DisplacementTangents{};
     // The file's KHR_materials_displacement: its embedded image decoded as `ctess mesh --displace-gltf`
     // decodes it, so that the viewer displaces by it. A failed decode is reported in the header, not as a
     // failed upload: the model itself is fine.
@@ -125,9 +129,10 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
     const std::string scalars = fmt::format(
         "\"name\": \"{}\", \"vertex_count\": {}, \"triangle_count\": {}, \"quad_count\": {}, "
         "\"has_normals\": {}, "
-        "\"has_uvs\": {}, \"dropped_degenerate_faces\": {}, \"open_edges\": {}, \"displacement\": {}, ",
+        "\"has_uvs\": {}, \"dropped_degenerate_faces\": {}, \"open_edges\": {}, \"displacement\": {}, "
+        "\"tangent_source\": \"{}\", ",
         json_escape(name), m.vertex_count(), m.triangle_count(), m.quad_count(), m.has_normals, m.has_uvs,
-        m.dropped_degenerate_faces, prepared.open_edges, displacement);
+        m.dropped_degenerate_faces, prepared.open_edges, displacement, tangents.source);
     const models::Adjacency& a = prepared.adjacency;
     const Section sections[] = {
         {"vertices", "f32", m.vertices.data(), m.vertices.size()},
@@ -137,6 +142,7 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
         {"adjacency", "u32", a.tessellation_indices.data(), a.tessellation_indices.size()},
         {"directions", "f32", directions.data(), directions.size()},
         {"displacement_texels", "f32", image.texels.data(), image.texels.size()},
+        {"tangents", "f32", tangents.tangents.data(), tangents.tangents.size()},
     };
     return container(scalars, sections);
 }
@@ -149,6 +155,17 @@ std::string height_map_answer(std::span<const std::uint8_t> bytes, const std::st
     const std::string scalars = fmt::format(
         "\"name\": \"{}\", \"width\": {}, \"height\": {}, \"texel_min\": {}, \"texel_max\": {}, ",
         json_escape(name), image.width, image.height, json_number(range.min), json_number(range.max));
+    const Section sections[] = {{"texels", "f32", image.texels.data(), image.texels.size()}};
+    return container(scalars, sections);
+}
+
+std::string vector_map_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
+    const models::HeightMapResult loaded = models::load_vector_map_from_memory(bytes, name);
+    if (!loaded) throw std::runtime_error(loaded.error.message);
+    const models::HeightImage& image = *loaded.image;
+    const std::string scalars =
+        fmt::format("\"name\": \"{}\", \"width\": {}, \"height\": {}, \"channels\": {}, ", json_escape(name),
+                    image.width, image.height, image.channels);
     const Section sections[] = {{"texels", "f32", image.texels.data(), image.texels.size()}};
     return container(scalars, sections);
 }

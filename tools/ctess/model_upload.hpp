@@ -31,7 +31,10 @@ inline constexpr std::size_t max_upload_faces = std::size_t{1} << 23;
 // height-map answer's "texels"; empty unless the image below decoded). "displacement" is null, or the file's
 // KHR_materials_displacement: {"factor", "offset", "embedded_image" (the image is inside the file), then
 // "width", "height", "texel_min", "texel_max" when that image decoded, "image_error" (the loader's message)
-// when it did not, "image_uri" when the image is a separate file (one upload holds one file)}. `name` picks
+// when it did not, "image_uri" when the image is a separate file (one upload holds one file)}.
+// "tangent_source" ("model", "uv" or "none") names where section "tangents" (f32, 4 per vertex: vector
+// displacement's frame, docs/algorithm.md §8.7, as `ctess mesh --displace-vector` takes it; empty for "none",
+// a model without uvs) comes from. `name` picks
 // the loader by its extension (.gltf, .glb, .obj) and names the model in errors. Throws std::runtime_error
 // with a message for the user (the loader's, which names the problem) when the name or the bytes are not a
 // model the library reads, or the model is past max_upload_vertices or max_upload_faces.
@@ -40,5 +43,11 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
 // The height-map answer: header {"name", "width", "height", "texel_min", "texel_max", "sections"}; section
 // "texels" (f32, width * height, row-major, row 0 at v = 0). Throws std::runtime_error as above.
 std::string height_map_answer(std::span<const std::uint8_t> bytes, const std::string& name);
+
+// The vector-map answer: header {"name", "width", "height", "channels" (3), "sections"}; section "texels"
+// (f32, 3 * width * height: r, g, b per texel, row-major, row 0 at v = 0), as
+// models::load_vector_map_from_memory decodes them for `ctess mesh --displace-vector FILE`. Throws
+// std::runtime_error as above.
+std::string vector_map_answer(std::span<const std::uint8_t> bytes, const std::string& name);
 
 } // namespace ctess::cli

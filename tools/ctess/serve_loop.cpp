@@ -307,7 +307,8 @@ const char* foreign_request(std::string_view method, std::string_view host, cons
 
 bool upload_target(std::string_view method, std::string_view target) {
     const std::string_view path = target.substr(0, target.find('?'));
-    return method == "POST" && (path == "/api/model" || path == "/api/height-map");
+    return method == "POST" &&
+           (path == "/api/model" || path == "/api/height-map" || path == "/api/vector-map");
 }
 
 // A worker lane: a bounded queue of whole requests and its threads.

@@ -19,9 +19,9 @@ struct ServeLimits {
     std::size_t max_connections = 512;    // open at once; a new one closes the longest-waiting non-busy one
     std::size_t max_request_head = 16384; // request line and headers, bytes (431 beyond)
     std::size_t max_request_body = 65536; // Content-Length bytes (413 beyond; chunked bodies get 501)
-    // POST /api/model and /api/height-map (upload_target): their bodies may be this large (413 beyond), and
-    // at most max_uploads of them are buffered or being answered at once (503 beyond), so uploads bound
-    // memory.
+    // POST /api/model, /api/height-map and /api/vector-map (upload_target): their bodies may be this large
+    // (413 beyond), and at most max_uploads of them are buffered or being answered at once (503 beyond), so
+    // uploads bound memory.
     std::size_t max_upload_body = std::size_t{64} << 20;
     std::size_t max_uploads = 2;
     std::chrono::milliseconds request_deadline{10000}; // a whole request must arrive within this (408/close)
@@ -33,7 +33,8 @@ struct ServeLimits {
     int listen_backlog = 1024; // the kernel caps it at net.core.somaxconn
 };
 
-// Whether a request line's method and target are an upload (POST /api/model or /api/height-map, any query).
+// Whether a request line's method and target are an upload (POST /api/model, /api/height-map or
+// /api/vector-map, any query).
 bool upload_target(std::string_view method, std::string_view target);
 
 // The server's Host and Origin rule (docs/cli.md, "Viewer server"), shared by the loop (uploads, before
