@@ -285,6 +285,15 @@ TEST_CASE("serve upload: height maps come back as the library decodes them, bad 
     const auto vector_texels = vc.section<float>("texels");
     REQUIRE(vector_texels.size() == 12);
     for (std::size_t i = 0; i < 12; ++i) CHECK(vector_texels[i] == Approx(17.0 * i / 255.0).epsilon(1e-7));
+    // Past the 64 KiB of other requests: an upload (ServeLimits::max_upload_body), answered.
+    std::vector<std::uint8_t> noise(160 * 160 * 3);
+    std::uint32_t state = 12345;
+    for (std::uint8_t& b : noise)
+        b = static_cast<std::uint8_t>((state = state * 1664525u + 1013904223u) >> 24);
+    std::string noise_png;
+    REQUIRE(stbi_write_png_to_func(&append_bytes, &noise_png, 160, 160, 3, noise.data(), 480) != 0);
+    REQUIRE(noise_png.size() > 65536);
+    CHECK(http(port, post("/api/vector-map?name=n.png", port, noise_png)).status == 200);
     const Reply grey = http(port, post("/api/vector-map?name=g.png", port, png(2, 2, value)));
     CHECK(grey.status == 400);
     CHECK(is_json_error(grey, "g.png"));
