@@ -5,6 +5,10 @@
 // with its wireframe under an orbit camera, optionally side by side with a second pattern (docs/viewer.md).
 import { PATTERN_NAMES } from './ctess_gpu.js';
 
+// The D3D11 patterns (`ctess mesh --pattern` names): no shader runs them, so `ctess serve`'s /api/tessellate
+// computes them on the CPU for an uploaded model, exactly as `ctess mesh --stats` reports its `gpu` block.
+const D3D11_PATTERNS = ['d3d11-even', 'd3d11-odd', 'd3d11-integer', 'd3d11-pow2'];
+
 const DEFAULT_FOV_DEGREES = 45;
 // The meshes below: position xyz, normal xyz, uv per vertex (checked against the pipeline's MESH_VERTEX_FLOATS).
 const MESH_VERTEX_FLOATS = 8;
@@ -115,6 +119,19 @@ function heightBound(map, scale, offset) {
     const at = (texel) => Math.abs(f(scale * f(f(texel * map.factor) + offset)));
     const lo = at(map.texelMin), hi = at(map.texelMax);
     return lo > hi ? lo : hi;
+}
+
+// The same for a vector map (§8.7): the longest texel vector, each component in float32, the length in double
+// and rounded to float32 once, as rt::displacement_bound computes it.
+function vectorBound(map, scale, offset) {
+    const f = Math.fround, t = map.texels;
+    let bound = 0;
+    for (let i = 0; i + 2 < t.length; i += 3) {
+        const [x, y, z] = [t[i], t[i + 1], t[i + 2]].map((c) => f(scale * f(f(c * map.factor) + offset)));
+        const length = Math.sqrt(x * x + y * y + z * z);
+        if (length > bound) bound = length; // NaN compares false: skipped
+    }
+    return f(bound);
 }
 
 // The model as the pipeline takes it, and the box the camera frames.
@@ -231,6 +248,7 @@ export class MeshView {
             el.addEventListener('input', () => redraw());
         ui.modelFile.addEventListener('change', () => ui.modelFile.files[0] && this.loadModel(ui.modelFile.files[0]));
         ui.heightFile.addEventListener('change', () => ui.heightFile.files[0] && this.loadHeightMap(ui.heightFile.files[0]));
+        ui.vectorFile.addEventListener('change', () => ui.vectorFile.files[0] && this.loadHeightMap(ui.vectorFile.files[0], true));
         for (const zone of [ui.dropZone, ui.canvas, ui.canvasB]) {
             zone.addEventListener('dragover', (e) => { e.preventDefault(); zone.classList.add('dragging'); });
             zone.addEventListener('dragleave', () => zone.classList.remove('dragging'));
@@ -300,6 +318,7 @@ export class MeshView {
             const { header, sections } = await upload('model', file);
             this.model = withBounds({ name: header.name, header, vertices: sections.vertices, triangles: sections.triangles,
                                       quads: sections.quads, adjacency: sections.adjacency, directions: sections.directions,
+                                      tangents: sections.tangents?.length ? sections.tangents : null,
                                       positionIds: sections.position_ids });
             this.ui.kindModel.disabled = false;
             this.ui.kindModel.textContent = `${header.name} (${header.triangle_count} triangles, ${header.quad_count} quads)`;
@@ -318,12 +337,14 @@ export class MeshView {
         }
     }
 
-    async loadHeightMap(file) {
+    // A height map, or with `vector` an RGB vector map in tangent space (`ctess mesh --displace-vector`,
+    // docs/algorithm.md §8.7).
+    async loadHeightMap(file, vector = false) {
         try {
             this.setStatus(`Loading ${file.name} through ctess serve…`);
-            const { header, sections } = await upload('height-map', file);
+            const { header, sections } = await upload(vector ? 'vector-map' : 'height-map', file);
             this.setHeightMap({ name: header.name, width: header.width, height: header.height, texels: sections.texels,
-                                texelMin: header.texel_min, texelMax: header.texel_max, factor: 1, fromModel: false });
+                                texelMin: header.texel_min, texelMax: header.texel_max, factor: 1, fromModel: false, vector, id: header.id });
             this.requestRedraw();
         } catch (e) {
             this.setStatus(`Height map: ${e.message}`, true);
@@ -336,7 +357,8 @@ export class MeshView {
         this.ui.displace.disabled = !map;
         this.ui.displace.checked = !!map;
         this.ui.displaceInfo.textContent = map ? `${map.name}: ${map.width} × ${map.height}` +
-            (map.fromModel ? `, the model's KHR_materials_displacement (factor ${map.factor})` : '') : '';
+            (map.fromModel ? `, the model's KHR_materials_displacement (factor ${map.factor})` : '') +
+            (map.vector ? ', an RGB vector map in the tangent frame' : '') : '';
     }
 
     // The model's own KHR_materials_displacement image, as `ctess mesh --displace-gltf` takes it: its factor,
@@ -363,11 +385,44 @@ export class MeshView {
         return this.meshCache.get(name);
     }
 
-    // One side: the pipeline on the mesh with the pattern, then the draw. Resolves to its counts and timings.
-    async drawSide(target, pipeline, mesh, pattern, settings) {
-        const { surface, dice, eye, viewProj, displacement, wireframe } = settings;
-        const projectionScale = Math.fround(target.canvas.height / (2 * Math.tan((this.fovDegrees * Math.PI) / 360)));
-        const factorScale = Math.fround(projectionScale / Math.fround(dice));
+    // A D3D11 side: `ctess serve` tessellates the held model on the CPU (/api/tessellate, docs/cli.md "Viewer
+    // server") with the page's camera and options, and the output goes into buffers shaped as the GPU's.
+    async serverOutput(pipeline, mesh, pattern, settings, canvas) {
+        if (!mesh.header?.id) throw new Error(`${pattern}: the D3D11 patterns are computed by ctess serve for an uploaded model`);
+        const { surface, dice, eye, displacement: d } = settings;
+        const query = new URLSearchParams({ model: mesh.header.id, pattern, surface, 'dice-rate': String(Math.fround(dice)),
+                                            camera: eye.map(String).join(','), fov: String(this.fovDegrees),
+                                            resolution: `${canvas.width},${canvas.height}` });
+        if (d) {
+            query.set('displace', d.fromModel ? 'model' : 'map');
+            if (!d.fromModel) query.set('map', d.mapId);
+            for (const [key, value] of [['displace-scale', d.params.scale], ['displace-offset', d.params.offset],
+                                        ['displace-address', d.params.address], ['displace-grow', d.grow ? 1 : 0]])
+                query.set(key, String(value));
+        }
+        const started = performance.now();
+        const r = await fetch(`api/tessellate?${query}`);
+        if (!r.ok) {
+            let message = `HTTP ${r.status}`;
+            try { message = (await r.json()).error ?? message; } catch { /* keep the status */ }
+            throw new Error(`${pattern}: ${message}`);
+        }
+        const { header, sections } = parseContainer(await r.arrayBuffer());
+        const buffer = (words) => {
+            const b = this.device.createBuffer({ size: Math.max(16, words.byteLength),
+                                                 usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST });
+            this.device.queue.writeBuffer(b, 0, words);
+            return b;
+        };
+        const patches = new Uint32Array(sections.records.length + pipeline.constants.TOTALS_WORDS);
+        patches.set(sections.records);
+        return { vertices: buffer(sections.vertices), indices: buffer(sections.indices), vertexCount: header.vertices,
+                 triangleCount: header.triangles, patches, milliseconds: performance.now() - started };
+    }
+
+    // A CP or uniform side: the generated WGSL's passes on the mesh (ctess_webgpu.mjs).
+    gpuOutput(pipeline, mesh, pattern, settings, factorScale) {
+        const { surface, eye, displacement } = settings;
         // PN-AEN reads the adjacency after the indices, and displacement its dominant edges and corners; the
         // built-in meshes have none (PN-AEN is then PN with every edge a boundary).
         const adjacency = mesh.adjacency && (surface === 'pn-aen' || displacement) ? mesh.adjacency : null;
@@ -377,9 +432,20 @@ export class MeshView {
         if (adjacency) indices.set(adjacency, mesh.triangles.length + mesh.quads.length);
         const params = pipeline.params({ patchCount: mesh.patches, quadCount: mesh.quads.length / 4, surface, alpha: 1, factorScale, eye,
                                          meshVertexCount: mesh.vertices.length / MESH_VERTEX_FLOATS, pattern,
-                                         displacement: displacement && { ...displacement.params, directions: !!mesh.directions, adjacency: !!adjacency } });
-        const out = await pipeline.run(params, mesh.vertices, indices, false, 0,
-                                       displacement ? { texels: displacement.texels, directions: mesh.directions ?? undefined } : {});
+                                         displacement: displacement && { ...displacement.params, directions: !!mesh.directions, adjacency: !!adjacency,
+                                                                         vector: displacement.vector } });
+        return pipeline.run(params, mesh.vertices, indices, false, 0,
+                            displacement ? { texels: displacement.texels, directions: mesh.directions ?? undefined,
+                                             tangents: displacement.vector ? mesh.tangents : undefined } : {});
+    }
+
+    // One side: the pipeline on the mesh with the pattern, then the draw. Resolves to its counts and timings.
+    async drawSide(target, pipeline, mesh, pattern, settings) {
+        const { dice, eye, viewProj, wireframe } = settings;
+        const projectionScale = Math.fround(target.canvas.height / (2 * Math.tan((this.fovDegrees * Math.PI) / 360)));
+        const factorScale = Math.fround(projectionScale / Math.fround(dice));
+        const out = D3D11_PATTERNS.includes(pattern) ? await this.serverOutput(pipeline, mesh, pattern, settings, target.canvas)
+                                                     : await this.gpuOutput(pipeline, mesh, pattern, settings, factorScale);
         target.replace(out);
         const u = new Float32Array(20);
         u.set(viewProj);
@@ -432,7 +498,8 @@ export class MeshView {
         const { eye, target } = this.camera;
         const dice = Number(this.ui.dice.value);
         const surface = SURFACE_NAMES.includes(this.ui.surface.value) ? this.ui.surface.value : 'pn';
-        const patterns = [this.ui.pattern.value, this.ui.comparePattern.value].map((p) => (PATTERN_NAMES.includes(p) ? p : 'cp'));
+        const patterns = [this.ui.pattern.value, this.ui.comparePattern.value]
+            .map((p) => (PATTERN_NAMES.includes(p) || D3D11_PATTERNS.includes(p) ? p : 'cp'));
         const compare = this.ui.compare.checked;
         this.ui.compareFigure.hidden = !compare;
         const pipeline = await this.pipelineFor();
@@ -457,10 +524,14 @@ export class MeshView {
         const h = this.heightMap, displaced = !!(h && this.ui.displace.checked);
         const [scale, offset] = [this.ui.displaceScale.value, this.ui.displaceOffset.value].map((x) => Math.fround(Number(x)));
         if (displaced && !(Number.isFinite(scale) && Number.isFinite(offset))) throw new Error('displacement: scale and offset must be finite numbers');
+        // Vector mode's frame needs the model's tangents (its TANGENT or its uvs'); the built-in meshes have none.
+        if (displaced && h.vector && !mesh.tangents)
+            throw new Error(`vector displacement needs tangents: ${kind === 'model' ? 'the model has no uvs' : 'upload a model with uvs'}`);
         const grow = displaced && this.ui.displaceGrow.checked;
-        const factorBound = grow ? heightBound(h, scale, offset) : 0;
-        const displacement = displaced ? { texels: h.texels, params: { scale, factor: h.factor, offset, factorBound, width: h.width,
-                                                                       height: h.height, address: this.ui.displaceAddress.value } } : null;
+        const factorBound = grow ? (h.vector ? vectorBound(h, scale, offset) : heightBound(h, scale, offset)) : 0;
+        const displacement = displaced ? { texels: h.texels, vector: !!h.vector, mapId: h.id, fromModel: !!h.fromModel, grow,
+                                           params: { scale, factor: h.factor, offset, factorBound, width: h.width,
+                                                     height: h.height, address: this.ui.displaceAddress.value } } : null;
         const near = Math.max(1e-4 * mesh.radius, Math.hypot(...sub(eye, target)) - 4 * mesh.radius);
         const far = Math.hypot(...sub(eye, target)) + 8 * mesh.radius;
         const canvas = this.targets[0].canvas;
@@ -493,16 +564,18 @@ export class MeshView {
         const passSet = `${maxFactor}|${patterns.slice(0, sides.length).join(',')}|${displaced}|${mesh.quads.length > 0}`;
         const compiled = !this.passSetsSeen.has(passSet);
         this.passSetsSeen.add(passSet);
-        this.ui.frameTime.textContent = `${frameMs.toFixed(1)} ms (GPU passes ${sides.map((s) => s.computeMs.toFixed(1)).join(' + ')} ms)` +
+        const sideMs = (s) => `${D3D11_PATTERNS.includes(s.mode) ? 'ctess serve' : 'GPU passes'} ${s.computeMs.toFixed(1)} ms`;
+        this.ui.frameTime.textContent = `${frameMs.toFixed(1)} ms (${sides.map(sideMs).join(' + ')})` +
             (compiled ? '; first draw with these passes, which compiles them' : '');
-        const caption = (s) => `${s.mode === 'uniform' ? 'uniform density' : 'CP'}: ${s.vertices} vertices, ${s.triangles} triangles`;
+        const caption = (s) => `${s.mode === 'uniform' ? 'uniform density' : D3D11_PATTERNS.includes(s.mode) ? `${s.mode} (ctess serve, CPU)` : 'CP'}: ` +
+                               `${s.vertices} vertices, ${s.triangles} triangles`;
         this.ui.captionA.textContent = caption(sides[0]);
         this.ui.captionB.textContent = compare ? caption(sides[1]) : '';
         window.ctessViewer = {
             view: 'mesh', mode: patterns[0], uniformMax, max: maxFactor, mesh: kind, model: kind === 'model' ? this.model.header : null,
             patches: mesh.patches, quads: mesh.quads.length / 4, surface, diceRate: dice, camera: { eye: [...eye], target: [...target], fov: this.fovDegrees },
             resolution: [canvas.width, canvas.height], factorScaleBits: sides[0].factorScaleBits,
-            displacement: displaced ? { scale, factor: h.factor, offset, factorBound, address: this.ui.displaceAddress.value,
+            displacement: displaced ? { scale, factor: h.factor, offset, factorBound, vector: !!h.vector, address: this.ui.displaceAddress.value,
                                         width: h.width, height: h.height, name: h.name, fromModel: h.fromModel } : null,
             wireframe: settings.wireframe, vertices: sides[0].vertices, triangles: sides[0].triangles, checksum: sides[0].checksum,
             compare: compare ? { mode: patterns[1], vertices: sides[1].vertices, triangles: sides[1].triangles, checksum: sides[1].checksum } : null,

@@ -397,7 +397,7 @@ const meshView = new MeshView({
     diceValue: $('dice-value'), wireframe: $('wireframe'), displace: $('displace'), displaceScale: $('displace-scale'),
     displaceOffset: $('displace-offset'), displaceAddress: $('displace-address'), displaceGrow: $('displace-grow'),
     displaceInfo: $('displace-info'), modelFile: $('model-file'),
-    heightFile: $('height-file'), dropZone: $('drop-zone'), modelInfo: $('model-info'), patches: $('mesh-patches'),
+    heightFile: $('height-file'), vectorFile: $('vector-file'), dropZone: $('drop-zone'), modelInfo: $('model-info'), patches: $('mesh-patches'),
     vertices: $('mesh-vertices'), triangles: $('mesh-triangles'), frameTime: $('frame-time'),
 }, () => pipelineFor(state.max), redraw, setStatus);
 // Automation (docs/viewer.md): the camera exactly (float32 eye and target, world units), and the checksums of a

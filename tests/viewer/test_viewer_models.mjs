@@ -5,7 +5,8 @@
 // map, sets the camera exactly (URL and JS hook) and the DiceRate, and compares the page's counts and the
 // checksums of its output buffers (window.ctessViewer, and window.ctessViewerChecksum on request) with `ctess mesh --stats`'s
 // `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement, and the seamed
-// model given its own KHR_materials_displacement image with factors grown by its bound. The built-in
+// model given its own KHR_materials_displacement image with factors grown by its bound, beside D3D11 fractional_even
+// (computed by ctess serve on the CPU), then an RGB vector map. The built-in
 // quad torus displaced by the map stays closed and moves by at most the height bound. A .gltf whose buffer is a
 // separate file is refused with the server's message on the page.
 //   node tests/viewer/test_viewer_models.mjs path/to/ctess    exit 0 pass, 1 fail, 77 skipped (no chromium/models)
@@ -48,7 +49,8 @@ process.on('exit', () => server.kill());
 const cliStats = (file, { pattern, surface, dice, eye, displace }) => JSON.parse(execFileSync(ctess, [
     'mesh', '--in', file, '--stats', '--pattern', pattern, '--surface', surface, '--dice-rate', String(dice),
     '--camera', eye.join(','), '--fov', '45', '--resolution', '640,600',
-    ...(displace ? [...(displace.gltf ? ['--displace-gltf'] : ['--displace', displace.file]), '--displace-scale', String(displace.scale),
+    ...(displace ? [...(displace.gltf ? ['--displace-gltf'] : [displace.vector ? '--displace-vector' : '--displace', displace.file]),
+                    '--displace-scale', String(displace.scale),
                     ...(displace.offset !== undefined ? ['--displace-offset', String(displace.offset)] : []),
                     ...(displace.grow ? ['--displace-grow'] : [])] : []),
 ], { encoding: 'utf8' }));
@@ -209,6 +211,24 @@ state = await viewerState(() => window.ctessViewer?.displacement?.factorBound > 
 // The bound: |0.2 · (texel · 0.5 − 0.25)| at the map's extreme texels, as rt::displacement_bound computes it.
 check(state.triangles > ungrown.triangles, `grown factors: ${state.triangles} triangles, ungrown ${ungrown.triangles} (bound ${state.displacement.factorBound})`);
 await sameAsCli(state, withDisplacement, { surface: 'pn-aen', dice: 20, eye: seamsEye, displace: { gltf: true, scale: 0.2, grow: true } }, [['cp', 0]]);
+
+// ---- D3D11 fractional_even beside it: no shader runs it, ctess serve's /api/tessellate computes it on the CPU ----
+await page.selectOption('#compare-pattern', 'd3d11-even');
+await page.check('#compare');
+state = await viewerState(() => window.ctessViewer?.compare?.mode === 'd3d11-even' && window.ctessViewer.displacement?.factorBound > 0);
+await sameAsCli(state, withDisplacement, { surface: 'pn-aen', dice: 20, eye: seamsEye, displace: { gltf: true, scale: 0.2, grow: true } },
+                [['d3d11-even', 1]]);
+await page.uncheck('#compare');
+
+// ---- the same map as an RGB vector map in the box's tangent frame (from its uvs), grown: --displace-vector ----
+await page.fill('#displace-offset', '0');
+await page.setInputFiles('#vector-file', heightMap);
+state = await viewerState(() => window.ctessViewer?.displacement?.vector && window.ctessViewer.displacement.offset === 0 &&
+                                window.ctessViewer.displacement.factorBound > 0 && !window.ctessViewer.compare);
+check(state.model.tangent_source === 'uv' && state.displacement.width === 211 && !state.displacement.fromModel,
+      `vector map: ${JSON.stringify(state.displacement)}, tangents from ${state.model.tangent_source}`);
+await sameAsCli(state, withDisplacement, { surface: 'pn-aen', dice: 20, eye: seamsEye,
+                                           displace: { vector: true, file: heightMap, scale: 0.2, offset: 0, grow: true } }, [['cp', 0]]);
 await page.uncheck('#displace-grow');
 await viewerState(() => window.ctessViewer?.displacement?.factorBound === 0); // the redraw done before the next upload
 

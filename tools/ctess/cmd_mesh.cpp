@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "file_output.hpp"
 #include "json_escape.hpp"
+#include "mesh_options.hpp"
 #include "model_formats.hpp"
 #include "model_prep.hpp"
 
@@ -38,58 +39,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-rt::Vec3 parse_vec3(const std::string& text, const std::string& what) {
-    const std::vector<float> v = parse_float_list(text, what, 3, 3);
-    for (const float f : v)
-        if (!std::isfinite(f)) throw UsageError(what + " needs finite numbers");
-    return {v[0], v[1], v[2]};
-}
-
-float positive_finite(const Args& args, const std::string& key) {
-    const float f = parse_float(args.get(key), "--" + key);
-    if (!std::isfinite(f) || f <= 0) throw UsageError("--" + key + " must be a finite number > 0");
-    return f;
-}
-
-// The factor options: exactly one of --factor, --edge-length, --dice-rate (with the camera's options).
-rt::DiceOptions dice_options_from(const Args& args) {
-    const int modes = args.has("factor") + args.has("edge-length") + args.has("dice-rate");
-    if (modes != 1) throw UsageError("give exactly one of --factor, --edge-length and --dice-rate");
-    const bool camera_options = args.has("camera") || args.has("fov") || args.has("resolution");
-    if (camera_options && !args.has("dice-rate"))
-        throw UsageError("--camera, --fov and --resolution go with --dice-rate");
-    rt::DiceOptions dice;
-    if (args.has("factor")) {
-        dice.mode = rt::FactorMode::constant;
-        dice.constant_factor = positive_finite(args, "factor");
-    } else if (args.has("edge-length")) {
-        dice.mode = rt::FactorMode::edge_length;
-        dice.target_edge_length = positive_finite(args, "edge-length");
-    } else {
-        dice.mode = rt::FactorMode::camera;
-        dice.dice_rate = positive_finite(args, "dice-rate");
-        if (!args.has("camera")) throw UsageError("--dice-rate needs --camera X,Y,Z");
-        dice.eye = parse_vec3(args.get("camera"), "--camera");
-        const float fov = args.has("fov") ? positive_finite(args, "fov") : 60.0f;
-        if (fov >= 180) throw UsageError("--fov must be below 180 degrees");
-        const std::vector<float> res =
-            parse_float_list(args.get_or("resolution", "1920,1080"), "--resolution", 2, 2);
-        if (!(res[0] >= 1 && res[1] >= 1 && res[0] <= 65536 && res[1] <= 65536))
-            throw UsageError("--resolution needs W,H between 1 and 65536");
-        // Pixels per world unit at distance 1 (tess_factor.hpp): the vertical resolution over 2 tan(fov / 2).
-        const double half = fov * std::numbers::pi / 360.0;
-        dice.projection_scale = static_cast<float>(res[1] / (2.0 * std::tan(half)));
-    }
-    return dice;
-}
-
-rt::Surface surface_from(const std::string& name) {
-    if (name == "flat") return rt::Surface::flat;
-    if (name == "pn") return rt::Surface::pn_triangles;
-    if (name == "pn-aen") return rt::Surface::pn_aen;
-    return rt::Surface::phong;
 }
 
 float finite_option(const Args& args, const std::string& key, float fallback) {
@@ -227,9 +176,10 @@ constexpr std::uint32_t fnv1a_basis = 2166136261u;
 // pipeline's counts (setup_patches, emit_mesh: every patch's own vertices, docs/shaders.md) and checksums of
 // its exact words, the patch records (48 words each, without the totals), each vertex's base weights (u, v)
 // and the indices. Positions, normals and uvs are left out: they agree with the GPU's within a bound only
-// (docs/shaders.md, "Bit-exactness"). The shaders take the camera factor mode and the cp and uniform
-// patterns; their uniform pattern clamps factors to [1, N] where `ctess mesh --pattern uniform` splits
-// (docs/algorithm.md §7.5), and this block is the clamped one.
+// (docs/shaders.md, "Bit-exactness"). The viewer takes the camera factor mode. The shaders run the cp and
+// uniform patterns; their uniform pattern clamps factors to [1, N] where `ctess mesh --pattern uniform`
+// splits (docs/algorithm.md §7.5), and this block is the clamped one. The D3D11 patterns have no shader: the
+// viewer draws them from `ctess serve`'s /api/tessellate, which returns this same output.
 struct GpuReference {
     bool present = false;
     std::uint64_t patches = 0;
@@ -242,30 +192,22 @@ struct GpuReference {
 GpuReference gpu_reference(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform,
                            const rt::MeshView& view, rt::PipelineOptions options, const std::string& in) {
     GpuReference g;
-    if (options.dice.mode != rt::FactorMode::camera ||
-        (options.pattern != rt::Pattern::cp && options.pattern != rt::Pattern::uniform_split))
-        return g;
+    if (options.dice.mode != rt::FactorMode::camera) return g;
     // No shader runs vector displacement yet (docs/shaders.md, "Displacement").
     if (options.displacement != nullptr && options.displacement->mode == rt::DisplacementMode::vector)
         return g;
     const auto start = Clock::now();
     if (options.pattern == rt::Pattern::uniform_split) options.pattern = rt::Pattern::uniform;
-    std::vector<rt::PatchRecord> records(view.patch_count());
-    rt::PipelineStatus status = rt::setup_patches(cp, uniform, view, options, records, g.totals);
-    if (status == rt::PipelineStatus::ok) {
-        std::vector<rt::TessVertex> vertices(g.totals.vertices);
-        std::vector<std::uint32_t> indices(3 * std::size_t{g.totals.triangles});
-        status = rt::emit_mesh(cp, uniform, view, options, records, vertices, indices);
-        for (const rt::PatchRecord& r : records) {
-            std::uint32_t words[sizeof(rt::PatchRecord) / 4];
-            std::memcpy(words, &r, sizeof words);
-            g.records = fnv1a_words(g.records, words);
-        }
-        for (const rt::TessVertex& v : vertices) g.barycentrics = fnv1a_words(g.barycentrics, {{v.u, v.v}});
-        g.indices = fnv1a_words(g.indices, indices);
+    const UnweldedOutput output = unwelded_output(cp, uniform, view, options, in, 0xFFFFFFFFu / 3);
+    g.totals = output.totals;
+    for (const rt::PatchRecord& r : output.records) {
+        std::uint32_t words[sizeof(rt::PatchRecord) / 4];
+        std::memcpy(words, &r, sizeof words);
+        g.records = fnv1a_words(g.records, words);
     }
-    if (status != rt::PipelineStatus::ok)
-        throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+    for (const rt::TessVertex& v : output.vertices)
+        g.barycentrics = fnv1a_words(g.barycentrics, {{v.u, v.v}});
+    g.indices = fnv1a_words(g.indices, output.indices);
     g.present = true;
     g.patches = view.patch_count();
     const float scale = options.dice.factor_scale();
@@ -297,26 +239,10 @@ int run_mesh(int argc, char** argv) {
     const std::string format = out.empty() ? "" : extension_of(out);
     if (!out.empty() && format != "obj" && format != "ply" && format != "glb")
         throw UsageError("--out must end in .obj, .ply or .glb");
-    const std::string pattern =
-        choice(args.get_or("pattern", "cp"),
-               {"cp", "uniform", "d3d11-integer", "d3d11-pow2", "d3d11-odd", "d3d11-even"}, "--pattern");
+    const std::string pattern = args.get_or("pattern", "cp");
+    rt::PipelineOptions options = pipeline_options_from(args);
     if (pattern != "cp" && args.has("max")) throw UsageError("--max applies to --pattern cp only");
     const unsigned max = max_factor_from(args);
-    rt::PipelineOptions options;
-    options.dice = dice_options_from(args);
-    // Uniform density at any factor: patches above the table's N split (docs/algorithm.md §7.5).
-    options.pattern = pattern == "cp"              ? rt::Pattern::cp
-                      : pattern == "uniform"       ? rt::Pattern::uniform_split
-                      : pattern == "d3d11-integer" ? rt::Pattern::d3d11_integer
-                      : pattern == "d3d11-pow2"    ? rt::Pattern::d3d11_pow2
-                      : pattern == "d3d11-odd"     ? rt::Pattern::d3d11_fractional_odd
-                                                   : rt::Pattern::d3d11_fractional_even;
-    options.surface.surface =
-        surface_from(choice(args.get_or("surface", "flat"), {"flat", "pn", "pn-aen", "phong"}, "--surface"));
-    options.quad_rule = choice(args.get_or("quad-rule", "longer-pair"), {"longer-pair", "as-labelled"},
-                               "--quad-rule") == "longer-pair"
-                            ? rt::QuadRule::longer_pair
-                            : rt::QuadRule::as_labelled;
     options.weld.keep_degenerate = args.has("keep-degenerate");
     // The output is held in memory (about 32 bytes per triangle) before it is written: a bound the user can
     // raise, so that a factor typed too large is an error, not an allocation the machine cannot give.

@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <string_view>
 
@@ -26,18 +28,28 @@ namespace ctess::cli {
 
 namespace {
 
-// The query's keys become `pattern` options, so the endpoint validates exactly as the CLI does.
-std::string pattern_json(const httplib::Request& req) {
-    std::vector<std::string> words = {"ctess", "pattern"};
-    for (const char* key : {"mode", "domain", "factors", "winding", "max", "layout", "column-rule"})
+// A request's query as a command's arguments (`ctess COMMAND --key value` for each of `keys` present), so
+// that an endpoint validates exactly as the CLI does.
+Args query_args(const httplib::Request& req, const char* command, const std::vector<std::string>& keys) {
+    std::vector<std::string> words = {"ctess", command};
+    for (const std::string& key : keys)
         if (req.has_param(key)) {
-            words.push_back(std::string("--") + key);
+            words.push_back("--" + key);
             words.push_back(req.get_param_value(key));
         }
     std::vector<char*> argv;
     for (auto& w : words) argv.push_back(w.data());
-    const Args args(static_cast<int>(argv.size()), argv.data(), 2,
-                    {"mode", "domain", "factors", "winding", "max", "layout", "column-rule"});
+    return Args(static_cast<int>(argv.size()), argv.data(), 2, keys);
+}
+
+// /api/tessellate's options: `ctess mesh`'s, with displace naming the map (none, map, model).
+const std::vector<std::string> tessellate_keys = {
+    "pattern",    "surface",  "quad-rule",      "dice-rate",       "camera",           "fov",
+    "resolution", "displace", "displace-scale", "displace-offset", "displace-address", "displace-grow"};
+
+std::string pattern_json(const httplib::Request& req) {
+    const Args args =
+        query_args(req, "pattern", {"mode", "domain", "factors", "winding", "max", "layout", "column-rule"});
     const PatternRequest r = pattern_request_from(args, "factors");
     return mesh_to_json(tessellate(r), r);
 }
@@ -190,14 +202,72 @@ int run_serve(int argc, char** argv) {
         bound_compression(req, res);
     });
 
-    server.Post("/api/model", [](const httplib::Request& req, httplib::Response& res) {
-        answer_upload(req, res, model_answer);
+    // The last model and the last map uploaded, for /api/tessellate: one of each (a new upload replaces it,
+    // bounding memory), numbered so that a page whose upload was replaced is told to upload again.
+    struct Held {
+        std::mutex mutex;
+        std::uint64_t next_id = 1;
+        std::uint64_t model_id = 0, map_id = 0;
+        std::shared_ptr<const HeldModel> model;
+        std::shared_ptr<const HeldMap> map;
+    };
+    Held held;
+    server.Post("/api/model", [&held](const httplib::Request& req, httplib::Response& res) {
+        answer_upload(req, res, [&held](std::span<const std::uint8_t> bytes, const std::string& name) {
+            std::shared_ptr<const HeldModel> model = load_uploaded_model(bytes, name);
+            std::uint64_t id = 0;
+            {
+                const std::lock_guard lock(held.mutex);
+                id = held.model_id = held.next_id++;
+                held.model = model;
+            }
+            return model_answer(*model, id);
+        });
     });
-    server.Post("/api/height-map", [](const httplib::Request& req, httplib::Response& res) {
-        answer_upload(req, res, height_map_answer);
-    });
-    server.Post("/api/vector-map", [](const httplib::Request& req, httplib::Response& res) {
-        answer_upload(req, res, vector_map_answer);
+    for (const bool vector : {false, true})
+        server.Post(vector ? "/api/vector-map" : "/api/height-map",
+                    [&held, vector](const httplib::Request& req, httplib::Response& res) {
+                        answer_upload(
+                            req, res, [&](std::span<const std::uint8_t> bytes, const std::string& name) {
+                                std::shared_ptr<const HeldMap> map = load_uploaded_map(bytes, name, vector);
+                                std::uint64_t id = 0;
+                                {
+                                    const std::lock_guard lock(held.mutex);
+                                    id = held.map_id = held.next_id++;
+                                    held.map = map;
+                                }
+                                return map_answer(*map, id);
+                            });
+                    });
+    server.Get("/api/tessellate", [&held](const httplib::Request& req, httplib::Response& res) {
+        try {
+            const auto id_of = [&](const char* key) {
+                return req.has_param(key)
+                           ? std::uint64_t{parse_unsigned(req.get_param_value(key), key, 1, 0xFFFFFFFFu)}
+                           : std::uint64_t{0};
+            };
+            const std::uint64_t model_id = id_of("model"), map_id = id_of("map");
+            std::shared_ptr<const HeldModel> model;
+            std::shared_ptr<const HeldMap> map;
+            {
+                const std::lock_guard lock(held.mutex);
+                if (model_id != 0 && model_id == held.model_id) model = held.model;
+                if (map_id != 0 && map_id == held.map_id) map = held.map;
+            }
+            if (!model)
+                throw std::runtime_error(
+                    "the model is no longer held (another upload replaced it): upload it again");
+            if (map_id != 0 && !map)
+                throw std::runtime_error(
+                    "the map is no longer held (another upload replaced it): upload it again");
+            res.body = tessellate_answer(*model, map.get(), query_args(req, "mesh", tessellate_keys));
+            res.set_header("Content-Type", "application/octet-stream");
+        } catch (const std::exception& e) {
+            res.status = 400;
+            res.set_content(fmt::format("{{\"error\": \"{}\"}}\n", json_escape(e.what())),
+                            "application/json");
+        }
+        bound_compression(req, res);
     });
 
     const char* host = "127.0.0.1"; // loopback only: the viewer is a local tool

@@ -3,8 +3,10 @@
 #include "model_upload.hpp"
 
 #include "json_escape.hpp"
+#include "mesh_options.hpp"
 #include "model_prep.hpp"
 
+#include <ctess/runtime/displace/displace.hpp>
 #include <ctess/runtime/displace/height_map.hpp>
 #include <ctess/runtime/models/height_map.hpp>
 
@@ -73,7 +75,8 @@ std::string json_number(float f) {
 
 } // namespace
 
-std::string model_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
+std::shared_ptr<const HeldModel> load_uploaded_model(std::span<const std::uint8_t> bytes,
+                                                     const std::string& name) {
     const std::optional<models::ModelKind> kind = model_kind_of(name);
     if (!kind) throw std::runtime_error(name + ": the name must end in .glb, .gltf or .obj");
     const models::LoadLimits limits{max_upload_vertices, max_upload_faces,
@@ -88,29 +91,45 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
                 " (an upload is one file: a .gltf must embed its buffers as data: URIs; or upload the .glb)";
         throw std::runtime_error(message);
     }
-    const PreparedModel prepared = prepare_model(std::move(*loaded.model), name);
-    const std::vector<float> directions = displacement_directions(prepared, name);
-    const models::Model& m = prepared.model;
+    auto held = std::make_shared<HeldModel>();
+    held->name = name;
+    held->prepared = prepare_model(std::move(*loaded.model), name);
+    held->directions = displacement_directions(held->prepared, name);
+    const models::Model& m = held->prepared.model;
     // Vector displacement's frame (docs/algorithm.md §8.7), as `ctess mesh --displace-vector` picks it; a
     // model without uvs has none (the CLI refuses it).
-    const DisplacementTangents tangents =
-        m.has_uvs || m.has_tangents ? displacement_tangents(prepared, name) : DisplacementTangents{};
-    // The file's KHR_materials_displacement: its embedded image decoded as `ctess mesh --displace-gltf`
-    // decodes it, so that the viewer displaces by it. A failed decode is reported in the header, not as a
-    // failed upload: the model itself is fine.
+    if (m.has_uvs || m.has_tangents) held->tangents = displacement_tangents(held->prepared, name);
+    // The file's KHR_materials_displacement image, decoded as `ctess mesh --displace-gltf` decodes it, so
+    // that the viewer displaces by it. A failed decode is reported in the answer, not as a failed upload: the
+    // model itself is fine.
+    const models::Model::Displacement& d = m.displacement;
+    if (d.present && d.image_uri.empty() && !d.image_bytes.empty()) {
+        models::HeightMapResult decoded =
+            models::load_height_map_from_memory(d.image_bytes, name + " (embedded displacement image)");
+        if (decoded)
+            held->image = std::move(*decoded.image);
+        else
+            held->image_error = decoded.error.message;
+    }
+    return held;
+}
+
+std::string model_answer(const HeldModel& held, std::uint64_t id) {
+    const std::string& name = held.name;
+    const PreparedModel& prepared = held.prepared;
+    const std::vector<float>& directions = held.directions;
+    const DisplacementTangents& tangents = held.tangents;
+    const models::HeightImage& image = held.image;
+    const models::Model& m = prepared.model;
     const models::Model::Displacement& d = m.displacement;
     std::string displacement = "null";
-    models::HeightImage image;
     if (d.present) {
         std::string image_fields;
         if (!d.image_uri.empty()) {
             image_fields =
                 fmt::format("\"embedded_image\": false, \"image_uri\": \"{}\"", json_escape(d.image_uri));
         } else if (!d.image_bytes.empty()) {
-            models::HeightMapResult decoded =
-                models::load_height_map_from_memory(d.image_bytes, name + " (embedded displacement image)");
-            if (decoded) {
-                image = std::move(*decoded.image);
+            if (held.image_error.empty()) {
                 const rt::TexelRange range = rt::texel_range(image.view());
                 image_fields =
                     fmt::format("\"embedded_image\": true, \"width\": {}, \"height\": {}, \"texel_min\": {}, "
@@ -118,7 +137,7 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
                                 image.width, image.height, json_number(range.min), json_number(range.max));
             } else {
                 image_fields = fmt::format("\"embedded_image\": true, \"image_error\": \"{}\"",
-                                           json_escape(decoded.error.message));
+                                           json_escape(held.image_error));
             }
         } else {
             image_fields = "\"embedded_image\": false";
@@ -127,11 +146,11 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
                                    json_number(d.offset), image_fields);
     }
     const std::string scalars = fmt::format(
-        "\"name\": \"{}\", \"vertex_count\": {}, \"triangle_count\": {}, \"quad_count\": {}, "
+        "\"id\": {}, \"name\": \"{}\", \"vertex_count\": {}, \"triangle_count\": {}, \"quad_count\": {}, "
         "\"has_normals\": {}, "
         "\"has_uvs\": {}, \"dropped_degenerate_faces\": {}, \"open_edges\": {}, \"displacement\": {}, "
         "\"tangent_source\": \"{}\", ",
-        json_escape(name), m.vertex_count(), m.triangle_count(), m.quad_count(), m.has_normals, m.has_uvs,
+        id, json_escape(name), m.vertex_count(), m.triangle_count(), m.quad_count(), m.has_normals, m.has_uvs,
         m.dropped_degenerate_faces, prepared.open_edges, displacement, tangents.source);
     const models::Adjacency& a = prepared.adjacency;
     const Section sections[] = {
@@ -147,26 +166,85 @@ std::string model_answer(std::span<const std::uint8_t> bytes, const std::string&
     return container(scalars, sections);
 }
 
-std::string height_map_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
-    const models::HeightMapResult loaded = models::load_height_map_from_memory(bytes, name);
+std::shared_ptr<const HeldMap> load_uploaded_map(std::span<const std::uint8_t> bytes, const std::string& name,
+                                                 bool vector) {
+    models::HeightMapResult loaded = vector ? models::load_vector_map_from_memory(bytes, name)
+                                            : models::load_height_map_from_memory(bytes, name);
     if (!loaded) throw std::runtime_error(loaded.error.message);
-    const models::HeightImage& image = *loaded.image;
-    const rt::TexelRange range = rt::texel_range(image.view());
-    const std::string scalars = fmt::format(
-        "\"name\": \"{}\", \"width\": {}, \"height\": {}, \"texel_min\": {}, \"texel_max\": {}, ",
-        json_escape(name), image.width, image.height, json_number(range.min), json_number(range.max));
+    auto held = std::make_shared<HeldMap>();
+    held->name = name;
+    held->image = std::move(*loaded.image);
+    return held;
+}
+
+std::string map_answer(const HeldMap& held, std::uint64_t id) {
+    const models::HeightImage& image = held.image;
+    std::string scalars =
+        fmt::format("\"id\": {}, \"name\": \"{}\", \"width\": {}, \"height\": {}, \"channels\": {}, ", id,
+                    json_escape(held.name), image.width, image.height, image.channels);
+    if (image.channels == 1) {
+        const rt::TexelRange range = rt::texel_range(image.view());
+        scalars += fmt::format("\"texel_min\": {}, \"texel_max\": {}, ", json_number(range.min),
+                               json_number(range.max));
+    }
     const Section sections[] = {{"texels", "f32", image.texels.data(), image.texels.size()}};
     return container(scalars, sections);
 }
 
-std::string vector_map_answer(std::span<const std::uint8_t> bytes, const std::string& name) {
-    const models::HeightMapResult loaded = models::load_vector_map_from_memory(bytes, name);
-    if (!loaded) throw std::runtime_error(loaded.error.message);
-    const models::HeightImage& image = *loaded.image;
+std::string tessellate_answer(const HeldModel& model, const HeldMap* map, const Args& args) {
+    rt::PipelineOptions options = pipeline_options_from(args);
+    if (options.dice.mode != rt::FactorMode::camera)
+        throw UsageError("give dice-rate, camera, fov and resolution (the viewer's camera)");
+    if (options.pattern == rt::Pattern::cp || options.pattern == rt::Pattern::uniform_split)
+        throw UsageError(
+            "cp and uniform run on the GPU (the generated WGSL); this answers the D3D11 patterns");
+    // Displacement as `ctess mesh` builds it (docs/algorithm.md §8): `map` is the uploaded map, or the
+    // model's own image (null with displace=model), with the model's factor then.
+    const std::string source = args.get_or("displace", "none");
+    rt::Displacement displacement;
+    if (source != "none") {
+        const bool own = source == "model";
+        if (!own && source != "map") throw UsageError("displace must be none, map or model");
+        if (own && model.image.texels.empty())
+            throw std::runtime_error(model.name + ": no embedded displacement image to displace by");
+        if (!own && map == nullptr)
+            throw std::runtime_error("no height or vector map is held: upload it again");
+        const models::HeightImage& image = own ? model.image : map->image;
+        const std::string address =
+            choice(args.get_or("displace-address", "repeat"), {"repeat", "clamp"}, "displace-address");
+        displacement.map = image.view(address == "repeat" ? rt::AddressMode::repeat : rt::AddressMode::clamp);
+        const auto number = [&](const char* key, float fallback) {
+            const float f = args.has(key) ? parse_float(args.get(key), key) : fallback;
+            if (!std::isfinite(f)) throw UsageError(std::string(key) + " must be a finite number");
+            return f;
+        };
+        displacement.scale = number("displace-scale", 1.0f);
+        displacement.factor = own ? model.prepared.model.displacement.factor : 1.0f;
+        displacement.offset =
+            number("displace-offset", own ? model.prepared.model.displacement.offset : 0.0f);
+        displacement.directions = model.directions.data();
+        if (image.channels == 3) {
+            if (model.tangents.tangents.empty())
+                throw std::runtime_error(model.name +
+                                         ": vector displacement needs tangents (the model has no uvs)");
+            displacement.mode = rt::DisplacementMode::vector;
+            displacement.tangents = model.tangents.tangents.data();
+        }
+        if (args.get_or("displace-grow", "0") == "1")
+            displacement.factor_bound = rt::displacement_bound(displacement);
+        options.displacement = &displacement;
+    }
+    const UnweldedOutput out = unwelded_output(rt::cp_tables_64, rt::uniform_tables, model.prepared.view(),
+                                               options, model.name, max_tessellate_triangles);
+    static_assert(sizeof(rt::PatchRecord) % 4 == 0 && sizeof(rt::TessVertex) % 4 == 0);
     const std::string scalars =
-        fmt::format("\"name\": \"{}\", \"width\": {}, \"height\": {}, \"channels\": {}, ", json_escape(name),
-                    image.width, image.height, image.channels);
-    const Section sections[] = {{"texels", "f32", image.texels.data(), image.texels.size()}};
+        fmt::format("\"vertices\": {}, \"triangles\": {}, \"clamped_edges\": {}, ", out.totals.vertices,
+                    out.totals.triangles, out.totals.clamped_edges);
+    const Section sections[] = {
+        {"records", "u32", out.records.data(), out.records.size() * sizeof(rt::PatchRecord) / 4},
+        {"vertices", "u32", out.vertices.data(), out.vertices.size() * sizeof(rt::TessVertex) / 4},
+        {"indices", "u32", out.indices.data(), out.indices.size()},
+    };
     return container(scalars, sections);
 }
 
