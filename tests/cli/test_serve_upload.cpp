@@ -523,6 +523,79 @@ TEST_CASE("serve upload: a glTF's own displacement image comes with the model, a
     CHECK(server.alive());
 }
 
+// FNV-1a over 32-bit words' little-endian bytes, as docs/cli.md defines `ctess mesh --stats`'s `gpu`
+// checksums.
+std::string fnv1a_hex(const std::vector<std::uint32_t>& words) {
+    std::uint32_t h = 2166136261u;
+    for (const std::uint32_t w : words)
+        for (unsigned b = 0; b < 4; ++b) h = (h ^ ((w >> (8 * b)) & 0xFFu)) * 16777619u;
+    char text[9];
+    std::snprintf(text, sizeof text, "%08x", h);
+    return text;
+}
+
+TEST_CASE("serve tessellate: a D3D11 pattern over the held model is ctess mesh --stats's gpu block",
+          "[cli][serve][upload]") {
+    const ServeProcess server;
+    REQUIRE(server.port > 0);
+    const int port = server.port;
+    const std::string cube = mixed_cube_obj();
+    const std::string file = scratch_path("ctess_serve_upload", "cube.obj");
+    write_file(file, cube);
+    const Reply up = http(port, post("/api/model?name=cube.obj", port, cube));
+    REQUIRE(up.status == 200);
+    const std::uint64_t id = parse_container(up.body).header.at("id");
+    const std::string options = "surface=pn-aen&dice-rate=6&camera=2.5,1.75,3&fov=45&resolution=640,600";
+    for (const char* pattern : {"d3d11-even", "d3d11-odd", "d3d11-integer", "d3d11-pow2"}) {
+        INFO(pattern);
+        const Reply r = http(
+            port,
+            get("/api/tessellate?model=" + std::to_string(id) + "&pattern=" + pattern + "&" + options, port));
+        REQUIRE(r.status == 200);
+        const Container c = parse_container(r.body);
+        const nlohmann::json cli = mesh_stats("--in " + file + " --pattern " + pattern +
+                                              " --surface pn-aen --dice-rate 6 --camera 2.5,1.75,3 --fov 45 "
+                                              "--resolution 640,600")
+                                       .at("gpu");
+        CHECK(c.header.at("vertices") == cli.at("vertices"));
+        CHECK(c.header.at("triangles") == cli.at("triangles"));
+        const auto records = c.section<std::uint32_t>("records");
+        const auto vertices = c.section<std::uint32_t>("vertices");
+        const auto indices = c.section<std::uint32_t>("indices");
+        REQUIRE(records.size() == 48 * 8);
+        REQUIRE(vertices.size() == 10 * std::size_t{cli.at("vertices")});
+        REQUIRE(indices.size() == 3 * std::size_t{cli.at("triangles")});
+        std::vector<std::uint32_t> barycentrics;
+        for (std::size_t v = 0; v < vertices.size(); v += 10)
+            barycentrics.insert(barycentrics.end(), {vertices[v], vertices[v + 1]});
+        CHECK(fnv1a_hex(records) == cli.at("checksum").at("records"));
+        CHECK(fnv1a_hex(barycentrics) == cli.at("checksum").at("barycentrics"));
+        CHECK(fnv1a_hex(indices) == cli.at("checksum").at("indices"));
+    }
+    const auto refused = [&](const std::string& query, const std::string& part) {
+        INFO(query);
+        const Reply r = http(port, get("/api/tessellate?" + query, port));
+        CHECK(r.status == 400);
+        CHECK(is_json_error(r, part));
+    };
+    const std::string held = "model=" + std::to_string(id) + "&";
+    refused(held + "pattern=cp&" + options, "cp and uniform run on the GPU");
+    refused(held + "pattern=d3d11-even&surface=pn-aen", "dice-rate");
+    refused(held + "pattern=d3d11-even&surface=bumpy&dice-rate=6&camera=1,1,1", "--surface");
+    refused(held + "pattern=d3d11-even&displace=model&" + options, "no embedded displacement image");
+    refused(held + "pattern=d3d11-even&displace=map&" + options, "no height or vector map is held");
+    // A 20 x 20 quad grid seen from 0.5 above at DiceRate 1: every factor clamps to 64, past 2^22 triangles.
+    const Reply grid = http(port, post("/api/model?name=grid.obj", port, grid_obj(20)));
+    REQUIRE(grid.status == 200);
+    const std::uint64_t grid_id = parse_container(grid.body).header.at("id");
+    refused("model=" + std::to_string(grid_id) + "&pattern=d3d11-integer&dice-rate=1&camera=10,10,0.5",
+            "above the limit of 4194304");
+    // The cube's upload was replaced by the grid's.
+    refused(held + "pattern=d3d11-even&" + options, "upload it again");
+    refused("pattern=d3d11-even&" + options, "upload it again");
+    CHECK(server.alive());
+}
+
 TEST_CASE("serve upload: a glTF past the viewer's vertex or face limit gets 400", "[cli][serve][upload]") {
     const ServeProcess server;
     REQUIRE(server.port > 0);
