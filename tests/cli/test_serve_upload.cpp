@@ -40,7 +40,8 @@ struct Container {
                 const std::size_t offset = s.at("offset"), count = s.at("count");
                 REQUIRE(offset + 4 * count <= body.size());
                 std::vector<T> out(count);
-                std::memcpy(out.data(), body.data() + offset, 4 * count);
+                if (count != 0)
+                    std::memcpy(out.data(), body.data() + offset, 4 * count); // data() may be null
                 return out;
             }
         FAIL("no section " << name);
