@@ -52,8 +52,8 @@ CTESS_ALWAYS_INLINE void even_lanes(V& m) noexcept {
 // or its copy, a = C_i, b = C_{i+1}. Both are constants, so a vector of lanes is one shuffle of x and one
 // add (pshufd on SSE2, vpermd on AVX2), per winding.
 constexpr unsigned cell_source(unsigned k, bool clockwise) {
-    // One cell, counter-clockwise: F B A+1 | B B+1 A+1 (0 = first, 1 = a, 2 = b); clockwise swaps the last two
-    // lanes of each triangle.
+    // One cell, counter-clockwise: F B A+1 | B B+1 A+1 (0 = first, 1 = a, 2 = b); clockwise swaps the last
+    // two lanes of each triangle.
     constexpr unsigned ccw[6] = {0, 2, 1, 2, 2, 1}, cw[6] = {0, 1, 2, 2, 1, 2};
     return clockwise ? cw[k % 6] : ccw[k % 6];
 }
@@ -95,8 +95,8 @@ CTESS_ALWAYS_INLINE void edge_positions(V& out, const std::uint16_t* packed, con
 // tokens in order and the larger ones last: checked where the tables are defined) and writes up to
 // out[W - 1]. Returns nothing past out[n - 2] that the caller may use.
 template <class V>
-CTESS_ALWAYS_INLINE void edge_interior(std::uint32_t* out, const std::uint16_t* points, std::uint32_t segments,
-                                       std::uint32_t slide_offset) noexcept {
+CTESS_ALWAYS_INLINE void edge_interior(std::uint32_t* out, const std::uint16_t* points,
+                                       std::uint32_t segments, std::uint32_t slide_offset) noexcept {
     constexpr unsigned W = sizeof(V) / sizeof(std::uint32_t);
     const std::uint32_t m = segments - 1;
     const V slide = V{} + slide_offset;
@@ -228,7 +228,8 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
             if (copies) {
                 for (std::uint32_t j = 0; j + 1 < rows; ++j) {
                     const std::uint32_t v = column0[2 * j + 1];
-                    out_v[copy + j] = {u, v < top ? v : top}; // not re-read from col: a store-forwarding stall
+                    out_v[copy + j] = {u,
+                                       v < top ? v : top}; // not re-read from col: a store-forwarding stall
                 }
             }
         }
@@ -238,8 +239,7 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
     {
         const std::uint32_t from = head > 1 ? head : 1u;
         DomainPoint* const tail = out_v + c[head] - head;
-        for (std::uint32_t i = from; i < n0; ++i)
-            tail[i] = {u0[i], 0u};
+        for (std::uint32_t i = from; i < n0; ++i) tail[i] = {u0[i], 0u};
     }
     // e1's points: its two corners, then the interior points.
     {
