@@ -21,6 +21,9 @@
 #else
 #define CTESS_EMIT_AVX2 0
 #endif
+#if CTESS_EMIT_AVX2
+#include <immintrin.h>
+#endif
 
 namespace ctess::rt {
 
@@ -107,6 +110,80 @@ CTESS_ALWAYS_INLINE void edge_interior(std::uint32_t* out, const std::uint16_t* 
         store(out + at, pos);
     }
 }
+
+#if CTESS_EMIT_AVX2
+// The zipper (docs/algorithm.md §2.6) eight triangles at a time, for a zipper of 8 or more: triangle k of a
+// group is (L_{a+1} on a step on L, else R_{b+1}; L_a; R_b) with a = a0 + (the steps on L before it), the
+// gap bits' exclusive prefix count. The counts come from one multiply (each bit spread to a byte, then a
+// byte-wise prefix sum), L_a and L_{a+1} from a window of the column tops by one vpermd each, and the three
+// vectors are interleaved into 24 indices by three vpermd and two blends per output vector. The last 1..7
+// triangles are the group that ends on the zipper's last triangle (rewriting the ones before it with the
+// same values), so nothing is written past the zipper. tops needs 8 readable entries past n0.
+#define CTESS_AVX2_INLINE [[gnu::always_inline]] inline __attribute__((target("avx2")))
+
+// Output vector `triangle` (lane l: triangle (8 m + l) / 3 of the group), its component 1 lanes (mask1) from
+// second and its component 2 lanes (mask2) from third.
+template <int mask1, int mask2>
+CTESS_AVX2_INLINE void put_triangles(std::uint32_t* at, const __m256i& triangle, const __m256i& first,
+                                     const __m256i& second, const __m256i& third) noexcept {
+    const __m256i v =
+        _mm256_blend_epi32(_mm256_blend_epi32(_mm256_permutevar8x32_epi32(first, triangle),
+                                              _mm256_permutevar8x32_epi32(second, triangle), mask1),
+                           _mm256_permutevar8x32_epi32(third, triangle), mask2);
+    std::memcpy(at, &v, sizeof v);
+}
+
+// Triangles q .. q + 7 of the zipper, a0 steps on L before them, bits8 their gap bits (written at o + 3 q);
+// returns the group's steps on L.
+CTESS_AVX2_INLINE std::uint32_t zipper_group(std::uint32_t* o, const std::uint32_t* tops, std::uint32_t bits8,
+                                             std::uint32_t q, std::uint32_t a0, std::uint32_t e1_offset,
+                                             bool clockwise) noexcept {
+    std::uint64_t y = (bits8 * 0x0101010101010101ull) & 0x8040201008040201ull; // bit k in byte k
+    y = ((y + 0x7F7F7F7F7F7F7F7Full) >> 7) & 0x0101010101010101ull;            // byte k: bit k
+    const std::uint64_t inclusive = y * 0x0101010101010101ull;                 // byte k: steps on L up to k
+    const __m256i step = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(y)));
+    const __m256i before = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(inclusive << 8)));
+    __m256i window;
+    std::memcpy(&window, tops + a0, sizeof window);
+    const __m256i l = _mm256_permutevar8x32_epi32(window, before);
+    std::memcpy(&window, tops + a0 + 1, sizeof window);
+    const __m256i l_next = _mm256_permutevar8x32_epi32(window, before);
+    const __m256i r = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(e1_offset + q - a0)),
+                                       _mm256_sub_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), before));
+    const __m256i first = _mm256_blendv_epi8(_mm256_add_epi32(r, _mm256_set1_epi32(1)), l_next,
+                                             _mm256_sub_epi32(_mm256_setzero_si256(), step));
+    const __m256i second = clockwise ? r : l, third = clockwise ? l : r;
+    std::uint32_t* const out = o + 3 * q;
+    // Lane l of output vector m is index 8 m + l: triangle (8 m + l) / 3, component (8 m + l) % 3.
+    put_triangles<0x92, 0x24>(out, _mm256_setr_epi32(0, 0, 0, 1, 1, 1, 2, 2), first, second, third);
+    put_triangles<0x24, 0x49>(out + 8, _mm256_setr_epi32(2, 3, 3, 3, 4, 4, 4, 5), first, second, third);
+    put_triangles<0x49, 0x92>(out + 16, _mm256_setr_epi32(5, 5, 6, 6, 6, 7, 7, 7), first, second, third);
+    return static_cast<std::uint32_t>(inclusive >> 56);
+}
+
+// The zipper (docs/algorithm.md §2.6) eight triangles at a time, for a zipper of 8 or more: triangle k of a
+// group is (L_{a+1} on a step on L, else R_{b+1}; L_a; R_b) with a = a0 + (the steps on L before it), the
+// gap bits' exclusive prefix count. The counts come from one multiply (each bit spread to a byte, then a
+// byte-wise prefix sum), L_a and L_{a+1} from a window of the column tops by one vpermd each, and the three
+// vectors are interleaved into 24 indices by three vpermd and two blends per output vector. The last 1..7
+// triangles are the group that ends on the zipper's last triangle (rewriting the ones before it with the
+// same values), so nothing is written past the zipper. tops needs 8 readable entries past n0.
+__attribute__((target("avx2"))) void zipper_avx2(std::uint32_t* o, const std::uint32_t* tops,
+                                                 const std::uint32_t* gap, std::uint32_t zipper,
+                                                 std::uint32_t e1_offset, bool clockwise) noexcept {
+    std::uint32_t q = 0, a = 0;
+    for (; q + 8 <= zipper; q += 8)
+        a += zipper_group(o, tops, (gap[q / 16] >> (q % 16)) & 0xFFu, q, a, e1_offset, clockwise);
+    if (q < zipper) {
+        const std::uint32_t start = zipper - 8, shift = start % 16;
+        const std::uint32_t w = gap[start / 16];
+        std::uint32_t bits = (w & 0xFFFFu) >> shift;
+        if (shift > 8) bits |= (gap[start / 16 + 1] & 0xFFFFu) << (16 - shift);
+        zipper_group(o, tops, bits & 0xFFu, start, (w >> 16) + popcount16(w & ((1u << shift) - 1u)),
+                     e1_offset, clockwise);
+    }
+}
+#endif
 
 } // namespace
 
@@ -320,6 +397,14 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
     // on L, else R_{b+1}; L_a; R_b): two loads and a select per triangle, as masks (the bits are a coin toss
     // to a branch predictor, and GCC turns a ternary into a branch).
     const std::uint32_t* const gap = p.gap_;
+#if CTESS_EMIT_AVX2
+    if constexpr (W == 8) {
+        if (p.zipper_ >= 8) {
+            zipper_avx2(o, tops, gap, p.zipper_, e1_offset, clockwise);
+            return;
+        }
+    }
+#endif
     const std::uint32_t* t = tops;
     std::uint32_t rb = e1_offset;
     // One gap word per gap_bits_per_word triangles, its bits shifted out one per triangle.
