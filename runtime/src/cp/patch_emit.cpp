@@ -335,62 +335,64 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
     const std::uint32_t swap = p.cw_mask_ & 1u; // lane of b in (a, b, c): 1, or 2 when clockwise
     std::uint32_t* o = out_i;
     std::uint32_t* const out_end = out_i + 3 * std::size_t{p.triangles_};
-    std::uint32_t next_copy = p.unique_;
     // The zipper's column tops, L_a = top of column n0-1-a = C_{n0-a} - 1, filled on the way.
     std::uint32_t* const tops = scratch;
     typedef std::uint32_t X __attribute__((vector_size(16)));
     constexpr unsigned count = 24 / W; // four cells, 24 lanes
-    for (std::uint32_t i = 0; i < head; ++i) {
-        const std::uint32_t a = c[i], b = c[i + 1];
-        const std::uint32_t na = b - a, nb = c[i + 2] - b;
+    // First vertex of strip i's A_j: a + j in strip 0 (and without copies), else A_j's copy, a + j + bias
+    // with bias = unique_ + 1 - C_1 - i (the copies of columns 1..i-1 come before, docs/algorithm.md §2.11).
+    const std::uint32_t copy_mask = p.copy_mask_, copy_bias = p.unique_ + 1u - c[1];
+    std::uint32_t bias = 0;
+    for (std::uint32_t i = 0, a = c[0], b = c[1]; i < head; ++i) {
+        const std::uint32_t next = c[i + 2];
+        const std::uint32_t na = b - a, nb = next - b;
         tops[n0 - i] = a - 1u;
-        const std::uint32_t first = i >= 1 && copies ? next_copy : a;
+        const std::uint32_t first = a + bias;
+        // At least 3: a column before h has two rows or more (R_i >= 2 > R_{i+1} or cells).
         const std::uint32_t lanes = 6 * (nb - 1) + (na > nb ? 3u : 0u);
-        if (lanes != 0) {
-            // Each lane is first, a or b plus a constant: one shuffle of (first, a, b) and an add, in
-            // registers (a vector loaded right after scalar stores to it would stall on store forwarding).
-            const X x = {first, a, b, 0u};
-            V v[count];
-            if (clockwise)
-                cell_vectors<V, true>(v, x, std::make_index_sequence<count>{});
-            else
-                cell_vectors<V, false>(v, x, std::make_index_sequence<count>{});
-            std::uint32_t* const strip_end = o + lanes;
-            const std::uint32_t groups = (lanes + 23) / 24;
-            if (static_cast<std::size_t>(out_end - o) >= 24 * std::size_t{groups}) {
-                // Whole groups of four cells: up to 21 lanes past the strip, which what follows (the fan,
-                // the next strips, the zipper) rewrites; the check keeps them inside the caller's span.
-                for (std::uint32_t g = 0; g < groups; ++g) {
+        // Each lane is first, a or b plus a constant: one shuffle of (first, a, b) and an add, in registers
+        // (a vector loaded right after scalar stores to it would stall on store forwarding).
+        const X x = {first, a, b, 0u};
+        V v[count];
+        if (clockwise)
+            cell_vectors<V, true>(v, x, std::make_index_sequence<count>{});
+        else
+            cell_vectors<V, false>(v, x, std::make_index_sequence<count>{});
+        std::uint32_t* const strip_end = o + lanes;
+        if (out_end - strip_end >= 24) {
+            // Whole groups of four cells: up to 21 lanes past the strip, which what follows (the fan, the
+            // next strips, the zipper) rewrites; the check keeps them inside the caller's span.
+            do {
 #pragma GCC unroll 8
-                    for (unsigned k = 0; k < count; ++k) {
-                        store(o + W * k, v[k]);
-                        v[k] += 4;
-                    }
-                    o += 24;
+                for (unsigned k = 0; k < count; ++k) {
+                    store(o + W * k, v[k]);
+                    v[k] += 4;
                 }
-            } else {
-                for (; o + 24 <= strip_end; o += 24) {
+                o += 24;
+            } while (o < strip_end);
+        } else {
+            for (; o + 24 <= strip_end; o += 24) {
 #pragma GCC unroll 8
-                    for (unsigned k = 0; k < count; ++k) {
-                        store(o + W * k, v[k]);
-                        v[k] += 4;
-                    }
+                for (unsigned k = 0; k < count; ++k) {
+                    store(o + W * k, v[k]);
+                    v[k] += 4;
                 }
-                // The last lanes in whole vectors: up to W - 1 past them, inside the zipper (at least 5
-                // triangles, 15 indices), which is written after.
-                const std::size_t stores = (static_cast<std::size_t>(strip_end - o) + W - 1) / W;
-#pragma GCC unroll 8
-                for (unsigned k = 0; k < count; ++k) // a fixed trip count keeps v in registers
-                    if (k < stores) store(o + W * k, v[k]);
             }
-            o = strip_end;
+            // The last lanes in whole vectors: up to W - 1 past them, inside the zipper (at least 5
+            // triangles, 15 indices), which is written after.
+            const std::size_t stores = (static_cast<std::size_t>(strip_end - o) + W - 1) / W;
+#pragma GCC unroll 8
+            for (unsigned k = 0; k < count; ++k) // a fixed trip count keeps v in registers
+                if (k < stores) store(o + W * k, v[k]);
         }
+        o = strip_end;
         const std::uint32_t tip = b + nb - 1;
         for (std::uint32_t j = nb; j + 1 < na; ++j) {
             o[0] = first + j, o[1 + swap] = tip, o[2 - swap] = a + j + 1;
             o += 3;
         }
-        if (i >= 1) next_copy += na - 1;
+        bias = (copy_bias - i - 1) & copy_mask;
+        a = b, b = next;
     }
     for (std::uint32_t i = head, ch = c[head]; i <= n0; ++i) tops[n0 - i] = ch + (i - head) - 1u;
     // Zipper (§2.6): L_a, R_b = e1 point b; a gap bit says which side steps. Triangle q is (L_{a+1} on a step
