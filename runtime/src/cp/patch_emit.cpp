@@ -417,8 +417,8 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
         for (std::uint32_t k = 0; k < run; ++k) {
             const std::uint32_t step = bits & 1u;
             bits >>= 1;
-            const std::uint32_t next_r = rb + 1;
-            o[0] = next_r ^ ((t[1] ^ next_r) & (0u - step)), o[1 + swap] = t[0], o[2 - swap] = rb;
+            const std::uint32_t next_r = rb + 1, next_l = t[1]; // both loaded: a cmov, not a branch
+            o[0] = step != 0 ? next_l : next_r, o[1 + swap] = t[0], o[2 - swap] = rb;
             t += step;
             rb = next_r - step;
             o += 3;
