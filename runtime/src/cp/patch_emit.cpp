@@ -258,7 +258,7 @@ CTESS_ALWAYS_INLINE void CpPatchEmitter::plain(const CpPatchSetup& p, DomainPoin
     // (x, y) in every pair of lanes: one 64-bit broadcast where the pair is one little-endian word.
     V even; // all ones in the u lanes
     even_lanes(even);
-    auto set_pairs = [&even](V& out, std::uint32_t x, std::uint32_t y) {
+    auto set_pairs = [&](V& out, std::uint32_t x, std::uint32_t y) {
         if constexpr (std::endian::native == std::endian::little)
             out = (V)(Q{} + (x | std::uint64_t{y} << 32));
         else
