@@ -11,7 +11,9 @@
 #include <ctess/runtime/cp/patch.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -213,5 +215,39 @@ TEST_CASE("runtime: the closed-form line state equals cp::line_state_fixed for e
     for (const float f : {-1.0f, 0.0f, 1.0f, 1.0001f, 2.5f, 63.99f, 64.0f, 1e9f}) {
         CHECK(ctess::rt::line_state(f, 64) == ctess::cp::line_state(f, 64));
         CHECK(ctess::rt::line_state(f, 256) == ctess::cp::line_state(f, 256));
+    }
+}
+
+// The runtime's factor_16_16 reads the float's bits (a shift of the significand); cp::clamp_factor_16_16
+// multiplies and rounds in float arithmetic. Every exponent from 0.5 to 512 with every value of the
+// significand's low 9 bits (the shift's rounding reads at most 8, and the quotient's lowest bit) under 130
+// spread high parts, every float within 4096 steps of 1, 2, 64 and 256, then the special values.
+TEST_CASE("runtime: the 16.16 factor from a float's bits equals cp::clamp_factor_16_16",
+          "[runtime][line_state]") {
+    std::vector<std::uint32_t> floats;
+    for (std::uint32_t exponent = 126; exponent <= 136; ++exponent)
+        for (std::uint32_t high = 0; high < (1u << 14); high += 127)
+            for (std::uint32_t low = 0; low < 512; ++low) floats.push_back(exponent << 23 | high << 9 | low);
+    for (const float centre : {1.0f, 2.0f, 64.0f, 256.0f})
+        for (std::uint32_t k = 0; k < 8192; ++k)
+            floats.push_back(std::bit_cast<std::uint32_t>(centre) - 4096 + k);
+    for (const unsigned max_factor : {64u, 256u}) {
+        std::uint32_t mismatches = 0, first_bad = 0;
+        for (const std::uint32_t bits : floats) {
+            const float f = std::bit_cast<float>(bits);
+            if (ctess::rt::factor_16_16(f, max_factor) != ctess::cp::clamp_factor_16_16(f, max_factor)) {
+                if (mismatches++ == 0) first_bad = bits;
+            }
+        }
+        INFO("max " << max_factor << ", first mismatch at float bits " << first_bad);
+        CHECK(mismatches == 0);
+        const float nan = std::numeric_limits<float>::quiet_NaN(),
+                    inf = std::numeric_limits<float>::infinity();
+        for (const float f : {nan, -nan, inf, -inf, 0.0f, -0.0f, -1.5f, -300.0f, 1e-40f, -1e-40f, 1e30f,
+                              std::numeric_limits<float>::max(), std::numeric_limits<float>::denorm_min()}) {
+            CHECK(ctess::rt::line_state(f, max_factor) == ctess::cp::line_state(f, max_factor));
+            if (f == f)
+                CHECK(ctess::rt::factor_16_16(f, max_factor) == ctess::cp::clamp_factor_16_16(f, max_factor));
+        }
     }
 }

@@ -15,7 +15,7 @@ inline void CpPatchSetup::set_edges(const CpTableSet& tables, const cp::LineStat
     for (unsigned k = 0; k < 3; ++k) {
         shape[k] = s[k].token == 0 ? 1u : s[k].token;
         const cp::tables::TokenRecord& rec = tables.tokens[shape[k] - 1];
-        const std::uint32_t t16 = s[k].token == 0 ? 0u : s[k].t16;
+        const std::uint32_t t16 = s[k].t16; // 0 for T0 (cp::clamp_line_state, line_state)
         e_[k] = {tables.points + rec.first_point, t16, rec.segments,
                  static_cast<std::int32_t>(rec.half_step * (65536u - t16))};
     }
@@ -127,7 +127,7 @@ inline void CpPatchSetup::set_parallelogram(const CpTableSet& tables, const unsi
 }
 
 CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
-                           PatchOptions options, bool counts_only) noexcept
+                           PatchOptions options, unsigned setup) noexcept
     : options_(options) {
     // The two table sets' maxima as constants, so that the token count folds (no log2 loop per call).
     auto clamp = [max = tables.max_factor](cp::LineState state) {
@@ -135,24 +135,26 @@ CpPatchSetup::CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineS
                : max == 256 ? cp::clamp_line_state(state, 256)
                             : cp::clamp_line_state(state, max);
     };
-    const cp::LineState s[3] = {clamp(s0), clamp(s1), clamp(s2)};
+    const bool clamped = (setup & setup_clamped) != 0; // line_state() gives states in range
+    const cp::LineState s[3] = {clamped ? s0 : clamp(s0), clamped ? s1 : clamp(s1), clamped ? s2 : clamp(s2)};
     cw_mask_ = options.winding == Winding::cw ? ~0u : 0u;
     unsigned shape[3];
     set_edges(tables, s, shape);
-    if (c0_ && c1_ && c2_) { // Type 0
+    // Type 2 first: it is what every factor above 2 on e0 or e2 gives (docs/algorithm.md §2.2).
+    if (s[0].token > 1 || s[2].token > 1) {
+        set_parallelogram(tables, shape, (setup & setup_counts_only) != 0);
+    } else if (c0_ && c1_ && c2_) { // Type 0
         type_ = 0;
         vertices_ = 3;
         triangles_ = 1;
-    } else if (s[0].token <= 1 && s[2].token <= 1) {
-        set_fan();
     } else {
-        set_parallelogram(tables, shape, counts_only);
+        set_fan();
     }
 }
 
 Counts cp_counts(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
                  PatchOptions options) noexcept {
-    return CpPatchSetup(tables, s0, s1, s2, options, true).counts();
+    return CpPatchSetup(tables, s0, s1, s2, options, CpPatchSetup::setup_counts_only).counts();
 }
 
 bool CpPatchSetup::dropped(std::uint32_t r) const noexcept {

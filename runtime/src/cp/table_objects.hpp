@@ -30,6 +30,18 @@ extern const std::uint32_t column_chunk_64_0_crc;
 CTESS_FOR_EACH_COLUMN_CHUNK_256(CTESS_DECLARE_COLUMN_CHUNK_CRC_256)
 #undef CTESS_DECLARE_COLUMN_CHUNK_CRC_256
 
+// CpPatchSetup::emit reads an edge's packed points a whole vector (up to 8) at a time; an edge with fewer
+// interior points reads on into the following tokens' points (runtime/src/cp/patch_emit.cpp, edge_interior),
+// which must lie inside the point table.
+template <unsigned MaxFactor>
+constexpr bool small_tokens_readable_as_vectors(const tables::TokenTable<MaxFactor>& table) {
+    constexpr unsigned vector_points = 8;
+    for (const tables::TokenRecord& record : table.records)
+        if (record.segments - 1u < vector_points && record.first_point + vector_points > table.point.size())
+            return false;
+    return true;
+}
+
 static_assert(chunks_64 == 1, "max 64 has one column chunk, defined in cp_tables_64.cpp");
 static_assert(chunks_256 <= max_column_chunks, "CpTableDigest holds at most max_column_chunks chunks");
 

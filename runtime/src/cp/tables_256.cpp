@@ -7,6 +7,7 @@
 namespace ctess::rt {
 namespace detail {
 constexpr tables::TokenTable<256> token_table_256 = tables::build_token_table<256>();
+static_assert(small_tokens_readable_as_vectors(token_table_256));
 constexpr tables::GapTable<256> gap_table_256 = tables::build_gap_table<256>();
 
 #define CTESS_CHUNK_256(k)                                                                                   \

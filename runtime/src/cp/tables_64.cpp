@@ -6,6 +6,7 @@
 namespace ctess::rt {
 namespace detail {
 constexpr tables::TokenTable<64> token_table_64 = tables::build_token_table<64>();
+static_assert(small_tokens_readable_as_vectors(token_table_64));
 constexpr tables::GapTable<64> gap_table_64 = tables::build_gap_table<64>();
 constexpr tables::ColumnChunk<64, chunks_64, 0> column_chunk_64_0 =
     tables::build_column_chunk<64, chunks_64, 0>();

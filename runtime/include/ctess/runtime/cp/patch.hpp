@@ -71,10 +71,10 @@ class CpPatchSetup {
     // Factors are clamped to [1, tables.max_factor] (see the header comment).
     CpPatchSetup(const CpTableSet& tables, float f0, float f1, float f2, PatchOptions options = {}) noexcept
         : CpPatchSetup(tables, line_state(f0, tables.max_factor), line_state(f1, tables.max_factor),
-                       line_state(f2, tables.max_factor), options) {}
+                       line_state(f2, tables.max_factor), options, setup_clamped) {}
     CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
                  PatchOptions options = {}) noexcept
-        : CpPatchSetup(tables, s0, s1, s2, options, false) {}
+        : CpPatchSetup(tables, s0, s1, s2, options, 0u) {}
 
     Counts counts() const noexcept { return {vertices_, triangles_}; }
     std::uint32_t vertex_count() const noexcept { return vertices_; }
@@ -88,9 +88,11 @@ class CpPatchSetup {
   protected:
     friend Counts cp_counts(const CpTableSet&, cp::LineState, cp::LineState, cp::LineState,
                             PatchOptions) noexcept;
-    // counts_only: only what counts() needs (no zipper words, no clamp line: what emit needs).
+    // setup_counts_only: only what counts() needs (no zipper words, no clamp line: what emit needs);
+    // setup_clamped: the line states are line_state()'s, already in range (no cp::clamp_line_state).
+    static constexpr unsigned setup_counts_only = 1, setup_clamped = 2;
     CpPatchSetup(const CpTableSet& tables, cp::LineState s0, cp::LineState s1, cp::LineState s2,
-                 PatchOptions options, bool counts_only) noexcept;
+                 PatchOptions options, unsigned setup) noexcept;
 
     struct Edge {
         const std::uint16_t* points = nullptr; // interior points 1..n-1 of the shape token
