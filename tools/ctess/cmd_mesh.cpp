@@ -245,9 +245,6 @@ GpuReference gpu_reference(const rt::CpTableSet& cp, const rt::UniformTableSet& 
     if (options.dice.mode != rt::FactorMode::camera ||
         (options.pattern != rt::Pattern::cp && options.pattern != rt::Pattern::uniform_split))
         return g;
-    // No shader runs vector displacement yet (docs/shaders.md, "Displacement").
-    if (options.displacement != nullptr && options.displacement->mode == rt::DisplacementMode::vector)
-        return g;
     const auto start = Clock::now();
     if (options.pattern == rt::Pattern::uniform_split) options.pattern = rt::Pattern::uniform;
     std::vector<rt::PatchRecord> records(view.patch_count());
