@@ -791,7 +791,7 @@ TEST_CASE("GPU displacement bad input: a NaN scale is an error") {
 
 TEST_CASE(
     "Vulkan host, displacement: a HeightFunction and texels or data that the params do not describe are "
-    "errors; an empty map is the CPU's output",
+    "errors, and an empty map is the CPU's output",
     "[vulkan]") {
     Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
     const auto data = height_texture(rt::AddressMode::repeat, 0.02f, 0.0f);

@@ -519,7 +519,8 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                  : params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
     const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
     const std::size_t adjacency_bytes = aen ? (std::size_t{n - quads} + 2 * std::size_t{quads}) * 48 : 0;
-    const std::uint64_t texel_bytes = displace ? 4 * std::uint64_t{vector ? 3u : 1u} * texel_count : 0;
+    const std::uint64_t texel_bytes =
+        displace ? 4 * std::uint64_t{rt::gpu::texel_floats(*displacement)} * texel_count : 0;
     const std::uint64_t index_binding = triangle_bytes + quad_bytes + adjacency_bytes + texel_bytes;
     if (index_binding > d.limits.maxStorageBufferRange)
         throw Error("binding 3 (indices, adjacency and " + std::to_string(displace ? texel_count : 0) +
