@@ -973,9 +973,10 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displ
     const DisplacedCase displaced =
         displaced_case(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::AddressMode::repeat, true, 3);
     scenes.emplace_back("one_displaced", displaced.scene);
-    // Vector displacement (§8.7), triangles and quads (both vector-displaced passes).
+    // Vector displacement (§8.7) on triangles: SwiftShader compiles the vector quad pass for about a minute
+    // on this 2-core machine; the other backends run the quads ("GPU vector displacement").
     const DisplacedCase vector = displaced_case(64, rt::Surface::pn_triangles, rt::Pattern::cp,
-                                                rt::AddressMode::repeat, true, 3, true, 8);
+                                                rt::AddressMode::repeat, true, 0, true, 8);
     scenes.emplace_back("one_vector_displaced", vector.scene);
     const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
     REQUIRE(outputs.size() == scenes.size());
