@@ -211,8 +211,9 @@ std::string rgb_png(int w, int h, F texel) {
 
 } // namespace
 
-TEST_CASE("ctess mesh --displace-vector: an RGB tangent-space map keeps the cube closed, and --stats reports it",
-          "[cli][mesh][displace]") {
+TEST_CASE(
+    "ctess mesh --displace-vector: an RGB tangent-space map keeps the cube closed, and --stats reports it",
+    "[cli][mesh][displace]") {
     const std::string in = scratch("cube_vector.obj");
     write_file(in, mixed_cube_obj());
     const std::string map = scratch("vector.png");
