@@ -690,6 +690,8 @@ SurfacePoint evaluate_surface_aen(Corner c[3], vec3 adj_from[3], vec3 adj_to[3],
 // indices and the adjacency in binding 3 (docs/shaders.md, "Displacement").
 bool displacement_on() { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ON) != 0u; }
 bool displacement_adjacency() { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ADJACENCY) != 0u; }
+// Vector displacement (§8.7): RGB texels (3 floats each) and the tangents after the directions in binding 2.
+bool displacement_vector_mode() { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_VECTOR) != 0u; }
 float param_float(uint w) { return uintBitsToFloat(params[w]); }
 bool finite_bits(float f) { return (floatBitsToUint(f) & 0x7FFFFFFFu) < 0x7F800000u; }
 // Binding 3's adjacency starts after the indices; its texels after the adjacency when the host uploaded it.
@@ -715,22 +717,45 @@ uint texel_address(int i, uint n, bool repeat_) {
     if (repeat_) return i < 0 ? n - 1u : uint(i) >= n ? uint(i) - n : uint(i);
     return i < 0 ? 0u : uint(i) >= n ? n - 1u : uint(i);
 }
-// sample_bilinear: texel centres at ((i + 0.5) / width, (j + 0.5) / height); an empty map or a NaN or infinite
-// coordinate gives 0, an address mode other than repeat reads as clamp.
-float sample_bilinear(float u, float v) {
+// height_map.cpp's footprint: the four texels (x0, y0), (x1, y0), (x0, y1), (x1, y1) as texel numbers and the
+// weights' fractions; false for an empty map or a NaN or infinite coordinate. An address mode other than repeat
+// reads as clamp.
+bool texel_footprint(float u, float v, out uvec4 at, out vec2 fraction) {
     uint width = params[PARAM_HEIGHT_MAP_WIDTH], height = params[PARAM_HEIGHT_MAP_HEIGHT];
-    if (width == 0u || height == 0u) return 0.0;
-    if (!finite_bits(u) || !finite_bits(v)) return 0.0;
+    if (width == 0u || height == 0u) return false;
+    if (!finite_bits(u) || !finite_bits(v)) return false;
     bool repeat_ = params[PARAM_HEIGHT_MAP_ADDRESS] == ADDRESS_REPEAT;
     float fx, fy;
     int i0 = texel_coordinate(u, width, repeat_, fx);
     int j0 = texel_coordinate(v, height, repeat_, fy);
     uint x0 = texel_address(i0, width, repeat_), x1 = texel_address(i0 + 1, width, repeat_);
     uint row0 = texel_address(j0, height, repeat_) * width, row1 = texel_address(j0 + 1, height, repeat_) * width;
-    precise float top = (1.0 - fx) * texel(row0 + x0) + fx * texel(row0 + x1);
-    precise float bottom = (1.0 - fx) * texel(row1 + x0) + fx * texel(row1 + x1);
-    precise float h = (1.0 - fy) * top + fy * bottom;
+    at = uvec4(row0 + x0, row0 + x1, row1 + x0, row1 + x1);
+    fraction = vec2(fx, fy);
+    return true;
+}
+// Channel `channel` of texels of `channels` floats (height_map.cpp's blend): the operations of the one-channel sample.
+float texel_blend(uvec4 at, vec2 f, uint channels, uint channel) {
+    precise float top = (1.0 - f.x) * texel(channels * at.x + channel) + f.x * texel(channels * at.y + channel);
+    precise float bottom = (1.0 - f.x) * texel(channels * at.z + channel) + f.x * texel(channels * at.w + channel);
+    precise float h = (1.0 - f.y) * top + f.y * bottom;
     return h;
+}
+// sample_bilinear: texel centres at ((i + 0.5) / width, (j + 0.5) / height); an empty map or a NaN or infinite
+// coordinate gives 0.
+float sample_bilinear(float u, float v) {
+    uvec4 at;
+    vec2 f;
+    if (!texel_footprint(u, v, at, f)) return 0.0;
+    return texel_blend(at, f, 1u, 0u);
+}
+// sample_bilinear_rgb (§8.7): channels 0, 1, 2 of 3-float texels, each by sample_bilinear's operations; an empty
+// map or a NaN or infinite coordinate gives (0, 0, 0).
+vec3 sample_bilinear_rgb(float u, float v) {
+    uvec4 at;
+    vec2 f;
+    if (!texel_footprint(u, v, at, f)) return vec3(0.0);
+    return vec3(texel_blend(at, f, 3u, 0u), texel_blend(at, f, 3u, 1u), texel_blend(at, f, 3u, 2u));
 }
 // scale * (texel * factor + offset)
 float displacement_height(float u, float v) {
@@ -738,6 +763,14 @@ float displacement_height(float u, float v) {
     precise float h = param_float(PARAM_DISPLACEMENT_SCALE) * (t * param_float(PARAM_DISPLACEMENT_FACTOR) +
                                                                param_float(PARAM_DISPLACEMENT_OFFSET));
     return h;
+}
+// Vector mode's displacement_vector (§8.7): scale * (texel * factor + offset) per channel.
+vec3 displacement_vector(float u, float v) {
+    vec3 t = sample_bilinear_rgb(u, v);
+    float scale = param_float(PARAM_DISPLACEMENT_SCALE), factor = param_float(PARAM_DISPLACEMENT_FACTOR);
+    float offset = param_float(PARAM_DISPLACEMENT_OFFSET);
+    precise vec3 r = vec3(scale * (t.x * factor + offset), scale * (t.y * factor + offset), scale * (t.z * factor + offset));
+    return r;
 }
 // displaced_edge_factor (§8.4): the factor of edge a -> b grown by the bound, as if displacement lengthened it
 // at both ends.
@@ -758,12 +791,15 @@ vec3 scaled(float s, vec3 a) {
     precise vec3 r = s * a;
     return r;
 }
-// What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction, per
-// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs; 3 or 4 corners.
+// What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction (and
+// in vector mode its tangent and bitangent), per edge the dominant edge's uvs at both ends (xy, zw), the own
+// corners' positions and uvs; 3 or 4 corners.
 struct DisplacementPatch {
     uint corners;
     vec2 corner_uv[4];
     vec3 direction[4];
+    vec3 tangent[4];
+    vec3 bitangent[4];
     vec4 edge_uv[4];
     vec3 position[4];
     vec2 own_uv[4];
@@ -783,10 +819,18 @@ vec3 vertex_direction(uint v) {
         o = params[PARAM_MESH_VERTEX_COUNT] * MESH_VERTEX_FLOATS + 3u * v;
     return normalize_or_zero(vec3(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]));
 }
+// Displacement::tangents (vector mode, glTF TANGENT's layout): 4 floats per mesh vertex after the mesh vertices and
+// the directions in binding 2. A tangent past the end of binding 2 (a host that uploaded fewer) reads (0, 0, 0, 1).
+vec4 vertex_tangent(uint v) {
+    uint n = params[PARAM_MESH_VERTEX_COUNT];
+    uint o = n * MESH_VERTEX_FLOATS + ((params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_DIRECTIONS) != 0u ? 3u * n : 0u) + 4u * v;
+    if (o + 3u >= uint(mesh_vertices.length())) return vec4(0.0, 0.0, 0.0, 1.0);
+    return vec4(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u], mesh_vertices[o + 3u]);
+}
 // displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
 // corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
 DisplacementPatch displacement_patch(uint corners, uint w[4], uint corner_face[4], uint corner_slot[4], uint edge_face[4],
-                                     uint edge_slot[4]) {
+                                     uint edge_slot[4], bool vector_) {
     DisplacementPatch dp;
     dp.corners = corners;
     uint n = params[PARAM_MESH_VERTEX_COUNT];
@@ -796,6 +840,14 @@ DisplacementPatch displacement_patch(uint corners, uint w[4], uint corner_face[4
         dp.own_uv[k] = mesh_uv(w[k]);
         dp.corner_uv[k] = mesh_uv(dom);
         dp.direction[k] = vertex_direction(dom);
+        if (vector_) {
+            // The dominant vertex's frame (§8.7): T made orthogonal to the direction N, B = cross(N, T) w.
+            vec4 t = vertex_tangent(dom);
+            vec3 nd = dp.direction[k];
+            precise vec3 ortho = t.xyz - scaled(dot3(t.xyz, nd), nd);
+            dp.tangent[k] = normalize_or_zero(ortho);
+            dp.bitangent[k] = scaled(t.w < 0.0 ? -1.0 : 1.0, cross3(nd, dp.tangent[k]));
+        }
     }
     // The dominant edge: of the own edge and the neighbour's (slots 3-8, paired by position), the one whose
     // vertices, taken in position order, are lexicographically smaller; the neighbour picks the same one.
@@ -831,25 +883,93 @@ void bend_normal(inout SurfacePoint p, vec3 tu, vec3 tv, float hu, float hv) {
     vec3 bent = normalize_or_zero(scaled(j < 0.0 ? -1.0 : 1.0, m));
     if (dot3(bent, bent) > 0.0) p.normal = bent;
 }
-// The height at the own uv of triangle parameter (a, b) = (w1, w2).
-float tri_uv_height(DisplacementPatch dp, float a, float b) {
+// The own uv at triangle parameter (a, b) = (w1, w2), and at quad parameter (s, t) (bilinear).
+vec2 tri_own_uv(DisplacementPatch dp, float a, float b) {
     precise float c = (1.0 - a) - b;
     precise float u = (c * dp.own_uv[0].x + a * dp.own_uv[1].x) + b * dp.own_uv[2].x;
     precise float v = (c * dp.own_uv[0].y + a * dp.own_uv[1].y) + b * dp.own_uv[2].y;
-    return displacement_height(u, v);
+    return vec2(u, v);
+}
+vec2 quad_own_uv(DisplacementPatch dp, float s, float t) {
+    precise float w[4] = float[4]((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
+    precise float u = ((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x;
+    precise float v = ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y;
+    return vec2(u, v);
+}
+// The height at the own uv of triangle parameter (a, b) = (w1, w2).
+float tri_uv_height(DisplacementPatch dp, float a, float b) {
+    vec2 uv = tri_own_uv(dp, a, b);
+    return displacement_height(uv.x, uv.y);
 }
 void move_point(inout SurfacePoint p, float height, vec3 direction) {
     precise vec3 moved = p.position + scaled(height, direction);
     p.position = moved;
 }
+// ---- vector displacement (displace.cpp's vector mode, docs/algorithm.md §8.7) ----
+// A tangent frame: t along +u, b, n the displacement direction.
+struct Frame {
+    vec3 t, b, n;
+};
+// Position + x T + y B + z N, the offset summed first (the same operations from every face).
+void move_vector(inout SurfacePoint p, vec3 moved_by, Frame f) {
+    precise vec3 offset = (scaled(moved_by.x, f.t) + scaled(moved_by.y, f.b)) + scaled(moved_by.z, f.n);
+    precise vec3 moved = p.position + offset;
+    p.position = moved;
+}
+// interpolated_frame: the frame field at weights w of corners corner[0..count-1], each axis summed from zero in
+// corner order and normalised as the directions are (zero stays zero).
+Frame interpolated_frame(DisplacementPatch dp, uint corner[4], float w[4], uint count) {
+    precise vec3 t = vec3(0.0), b = vec3(0.0), d = vec3(0.0);
+    for (uint k = 0u; k < count; ++k) {
+        t = t + scaled(w[k], dp.tangent[corner[k]]);
+        b = b + scaled(w[k], dp.bitangent[corner[k]]);
+        d = d + scaled(w[k], dp.direction[corner[k]]);
+    }
+    return Frame(normalize_or_zero(t), normalize_or_zero(b), normalize_or_zero(d));
+}
+// bend_normal_vector: S_u x S_v = (t_u' + D_u) x (t_v' + D_v), D_u = Vu.x T + Vu.y B + Vu.z N from the vector's
+// central differences vu, vv in the point's frame (its derivatives left out, as bend_normal leaves out dN).
+void bend_normal_vector(inout SurfacePoint p, vec3 tu, vec3 tv, vec3 vu, vec3 vv, Frame f) {
+    vec3 n = normalize_or_zero(p.normal);
+    if (!(dot3(n, n) > 0.0)) return;
+    precise vec3 pu = tu - scaled(dot3(tu, n), n);
+    precise vec3 pv = tv - scaled(dot3(tv, n), n);
+    float j = dot3(cross3(pu, pv), n);
+    precise vec3 du = (scaled(vu.x, f.t) + scaled(vu.y, f.b)) + scaled(vu.z, f.n);
+    precise vec3 dv = (scaled(vv.x, f.t) + scaled(vv.y, f.b)) + scaled(vv.z, f.n);
+    if (!(j != 0.0) || !finite_bits(dot3(du, du)) || !finite_bits(dot3(dv, dv))) return;
+    precise vec3 su = pu + du;
+    precise vec3 sv = pv + dv;
+    vec3 bent = normalize_or_zero(scaled(j < 0.0 ? -1.0 : 1.0, cross3(su, sv)));
+    if (dot3(bent, bent) > 0.0) p.normal = bent;
+}
+// (plus - minus) / (2 step), as 1 / (2 step) times the difference.
+vec3 vector_difference(vec3 plus, vec3 minus, float step_) {
+    precise float inv = 1.0 / (2.0 * step_);
+    precise vec3 r = scaled(inv, plus - minus);
+    return r;
+}
+vec3 tri_uv_vector(DisplacementPatch dp, float a, float b) {
+    vec2 uv = tri_own_uv(dp, a, b);
+    return displacement_vector(uv.x, uv.y);
+}
+vec3 quad_uv_vector(DisplacementPatch dp, float s, float t) {
+    vec2 uv = quad_own_uv(dp, s, t);
+    return displacement_vector(uv.x, uv.y);
+}
 // A point on patch edge k with weights wa at corner k and wb at corner k + 1: the dominant edge's uvs and the
 // dominant directions interpolated from the endpoint first in position order (equal positions: the larger weight).
-void displace_edge(DisplacementPatch dp, uint k, uint wa, uint wb, inout SurfacePoint p) {
+// vector_: vector mode (§8.7), a constant of the entry point, so that each pass carries one mode's code.
+void displace_edge(DisplacementPatch dp, uint k, uint wa, uint wb, inout SurfacePoint p, bool vector_) {
     uint a = k, b = (k + 1u) % dp.corners;
     vec2 uv_a = dp.edge_uv[k].xy, uv_b = dp.edge_uv[k].zw;
     if (wa == FIXED_ONE || wb == FIXED_ONE) {
         uint c = wa == FIXED_ONE ? a : b;
-        move_point(p, displacement_height(dp.corner_uv[c].x, dp.corner_uv[c].y), dp.direction[c]);
+        if (vector_)
+            move_vector(p, displacement_vector(dp.corner_uv[c].x, dp.corner_uv[c].y),
+                        Frame(dp.tangent[c], dp.bitangent[c], dp.direction[c]));
+        else
+            move_point(p, displacement_height(dp.corner_uv[c].x, dp.corner_uv[c].y), dp.direction[c]);
         return;
     }
     bool swap_ = position_before(dp.position[b], dp.position[a]) ||
@@ -862,8 +982,65 @@ void displace_edge(DisplacementPatch dp, uint k, uint wa, uint wb, inout Surface
     float ta = fixed_weight(wa), tb = fixed_weight(wb);
     precise float u = ta * uv_a.x + tb * uv_b.x;
     precise float v = ta * uv_a.y + tb * uv_b.y;
+    if (vector_) {
+        move_vector(p, displacement_vector(u, v), interpolated_frame(dp, uint[4](a, b, 0u, 0u), float[4](ta, tb, 0.0, 0.0), 2u));
+        return;
+    }
     precise vec3 dir = scaled(ta, dp.direction[a]) + scaled(tb, dp.direction[b]);
     move_point(p, displacement_height(u, v), normalize_or_zero(dir));
+}
+// Vector mode's triangle point (displace_triangle_vector, §8.7): the normal from the vector's differences in the own
+// parameters, then the position as displace_triangle_point's (corners and edges through displace_edge, the interior
+// in the frame interpolated by the barycentric weights).
+void displace_triangle_vector(DisplacementPatch dp, uint w[3], float a, float b, inout SurfacePoint p) {
+    float step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    Frame frame = interpolated_frame(dp, uint[4](0u, 1u, 2u, 0u), float[4](fixed_weight(w[0]), a, b, 0.0), 3u);
+    precise float a_plus = a + step_, a_minus = a - step_, b_plus = b + step_, b_minus = b - step_;
+    vec3 vu = vector_difference(tri_uv_vector(dp, a_plus, b), tri_uv_vector(dp, a_minus, b), step_);
+    vec3 vv = vector_difference(tri_uv_vector(dp, a, b_plus), tri_uv_vector(dp, a, b_minus), step_);
+    precise vec3 tu = dp.position[1] - dp.position[0];
+    precise vec3 tv = dp.position[2] - dp.position[0];
+    bend_normal_vector(p, tu, tv, vu, vv, frame);
+    for (uint k = 0u; k < 3u; ++k) {
+        if (w[(k + 2u) % 3u] == 0u || w[k] == FIXED_ONE) {
+            if (w[k] == FIXED_ONE) displace_edge(dp, k, FIXED_ONE, 0u, p, true);
+            else displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p, true);
+            return;
+        }
+    }
+    move_vector(p, displacement_vector(p.uv.x, p.uv.y), frame);
+}
+// Vector mode's quad point on the boundary goes through displace_edge: a corner (both coordinates at a bound), else edge k from
+// q_k with parameter r measured from q_k (t = 0, s = 1, t = 1, s = 0). False for an interior point.
+bool displace_quad_boundary(DisplacementPatch dp, uint s, uint t, inout SurfacePoint p) {
+    if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
+        uint c = t == 0u ? (s == 0u ? 0u : 1u) : (s == FIXED_ONE ? 2u : 3u);
+        displace_edge(dp, c, FIXED_ONE, 0u, p, true);
+        return true;
+    }
+    bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (uint k = 0u; k < 4u; ++k) {
+        if (on_edge[k]) {
+            displace_edge(dp, k, FIXED_ONE - r[k], r[k], p, true);
+            return true;
+        }
+    }
+    return false;
+}
+// Vector mode's quad point (displace_quad_vector, §8.7).
+void displace_quad_vector(DisplacementPatch dp, uint s, uint t, float fs, float ft, inout SurfacePoint p) {
+    float step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    precise float w[4] = float[4]((1.0 - fs) * (1.0 - ft), fs * (1.0 - ft), fs * ft, (1.0 - fs) * ft);
+    Frame frame = interpolated_frame(dp, uint[4](0u, 1u, 2u, 3u), w, 4u);
+    precise float s_plus = fs + step_, s_minus = fs - step_, t_plus = ft + step_, t_minus = ft - step_;
+    vec3 vu = vector_difference(quad_uv_vector(dp, s_plus, ft), quad_uv_vector(dp, s_minus, ft), step_);
+    vec3 vv = vector_difference(quad_uv_vector(dp, fs, t_plus), quad_uv_vector(dp, fs, t_minus), step_);
+    precise vec3 ts = scaled(1.0 - ft, dp.position[1] - dp.position[0]) + scaled(ft, dp.position[2] - dp.position[3]);
+    precise vec3 tt = scaled(1.0 - fs, dp.position[3] - dp.position[0]) + scaled(fs, dp.position[2] - dp.position[1]);
+    bend_normal_vector(p, ts, tt, vu, vv, frame);
+    if (displace_quad_boundary(dp, s, t, p)) return;
+    move_vector(p, displacement_vector(p.uv.x, p.uv.y), frame);
 }
 // displace_triangle_point: p is the surface point of base weights w (units of FIXED_ONE).
 void displace_triangle_point(DisplacementPatch dp, uint w[3], inout SurfacePoint p) {
@@ -877,8 +1054,8 @@ void displace_triangle_point(DisplacementPatch dp, uint w[3], inout SurfacePoint
     // A corner, an edge point (edge k has zero weight at corner k + 2) or an interior point.
     for (uint k = 0u; k < 3u; ++k) {
         if (w[(k + 2u) % 3u] == 0u || w[k] == FIXED_ONE) {
-            if (w[k] == FIXED_ONE) displace_edge(dp, k, FIXED_ONE, 0u, p);
-            else displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p);
+            if (w[k] == FIXED_ONE) displace_edge(dp, k, FIXED_ONE, 0u, p, false);
+            else displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p, false);
             return;
         }
     }
@@ -887,10 +1064,8 @@ void displace_triangle_point(DisplacementPatch dp, uint w[3], inout SurfacePoint
 }
 // The height at the own uv of quad parameter (s, t), bilinear.
 float quad_uv_height(DisplacementPatch dp, float s, float t) {
-    precise float w[4] = float[4]((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
-    precise float u = ((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x;
-    precise float v = ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y;
-    return displacement_height(u, v);
+    vec2 uv = quad_own_uv(dp, s, t);
+    return displacement_height(uv.x, uv.y);
 }
 // displace_quad_point: p is the surface point of quad point (s, t) of the unit square (units of FIXED_ONE).
 void displace_quad_point(DisplacementPatch dp, uint s, uint t, inout SurfacePoint p) {
@@ -905,14 +1080,14 @@ void displace_quad_point(DisplacementPatch dp, uint s, uint t, inout SurfacePoin
     // interior.
     if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
         uint c = t == 0u ? (s == 0u ? 0u : 1u) : (s == FIXED_ONE ? 2u : 3u);
-        displace_edge(dp, c, FIXED_ONE, 0u, p);
+        displace_edge(dp, c, FIXED_ONE, 0u, p, false);
         return;
     }
     bool on_edge[4] = bool[4](t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
     uint r[4] = uint[4](s, t, FIXED_ONE - s, FIXED_ONE - t);
     for (uint k = 0u; k < 4u; ++k) {
         if (on_edge[k]) {
-            displace_edge(dp, k, FIXED_ONE - r[k], r[k], p);
+            displace_edge(dp, k, FIXED_ONE - r[k], r[k], p, false);
             return;
         }
     }
@@ -1383,7 +1558,7 @@ void ctess_prefix_sum() {
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
 // adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
 // pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
-void emit_vertices(bool quad_pass, bool displaced) {
+void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     uint first_patch = quad_pass ? max(params[PARAM_FIRST_PATCH], triangle_count()) : params[PARAM_FIRST_PATCH];
     uint end = min(params[PARAM_END_PATCH], quad_pass ? patch_count() : triangle_count());
     float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
@@ -1392,8 +1567,11 @@ void emit_vertices(bool quad_pass, bool displaced) {
     bool uniform_ = uniform_pattern();
     // Displacement runs in its own entry points (a software adapter runs an untaken branch at full cost); the
     // others write no vertex when the params displace, rather than undisplaced ones.
+    // Vector displacement (§8.7) has its own entry points too (vector_); each displaced pass writes no vertex for
+    // the other mode's params.
     bool displace = displaced;
     if (displacement_on() != displaced) return;
+    if (displaced && displacement_vector_mode() != vector_) return;
     for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint rec = t * PATCH_WORDS;
         uint count = patches[rec + REC_VERTEX_COUNT];
@@ -1434,7 +1612,7 @@ void emit_vertices(bool quad_pass, bool displaced) {
                     edge_face[k] = face + (m >= 2u ? 1u : 0u);
                     edge_slot[k] = m >= 2u ? m - 1u : m;
                 }
-                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot);
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot, vector_);
             }
         } else {
             uvec3 w;
@@ -1452,7 +1630,7 @@ void emit_vertices(bool quad_pass, bool displaced) {
             words[0] = uniform_words(rec);
             if (displace)
                 dp = displacement_patch(3u, uint[4](w.x, w.y, w.z, 0u), uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u),
-                                        uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u));
+                                        uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u), vector_);
         }
         uint first = patches[rec + REC_FIRST_VERTEX];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
@@ -1494,17 +1672,21 @@ void emit_vertices(bool quad_pass, bool displaced) {
             else if (aen) sp = evaluate_surface_aen(tri, from3, to3, w3, alpha);
             else sp = evaluate_surface(tri, w3, surface, alpha);
             // §8: after the surface, as mesh_pipeline.cpp (a quad's every point by its square point).
-            if (displace && quad) displace_quad_point(dp, out_uv.x, out_uv.y, sp);
+            if (displace && vector_ && quad) displace_quad_vector(dp, out_uv.x, out_uv.y, fixed_weight(out_uv.x), fixed_weight(out_uv.y), sp);
+            else if (displace && vector_) displace_triangle_vector(dp, w3, fixed_weight(w3[1]), fixed_weight(w3[2]), sp);
+            else if (displace && quad) displace_quad_point(dp, out_uv.x, out_uv.y, sp);
             else if (displace) displace_triangle_point(dp, w3, sp);
             store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
         }
     }
 }
 
-void ctess_emit_vertices() { emit_vertices(false, false); }
-void ctess_emit_quad_vertices() { emit_vertices(true, false); }
-void ctess_emit_displaced_vertices() { emit_vertices(false, true); }
-void ctess_emit_displaced_quad_vertices() { emit_vertices(true, true); }
+void ctess_emit_vertices() { emit_vertices(false, false, false); }
+void ctess_emit_quad_vertices() { emit_vertices(true, false, false); }
+void ctess_emit_displaced_vertices() { emit_vertices(false, true, false); }
+void ctess_emit_displaced_quad_vertices() { emit_vertices(true, true, false); }
+void ctess_emit_vector_displaced_vertices() { emit_vertices(false, true, true); }
+void ctess_emit_vector_displaced_quad_vertices() { emit_vertices(true, true, true); }
 
 // Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices
 // (a quad's half B after A, its indices after A's vertices).

@@ -681,6 +681,8 @@ fn evaluate_surface_aen(corners: array<Corner, 3>, edges: array<EdgeNormals, 3>,
 // row-major, row 0 at v = 0) follow the indices and the adjacency in binding 3.
 fn displacement_on() -> bool { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ON) != 0u; }
 fn displacement_adjacency() -> bool { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_ADJACENCY) != 0u; }
+// Vector displacement (§8.7): RGB texels (3 floats each) and the tangents after the directions in binding 2.
+fn displacement_vector_mode() -> bool { return (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_VECTOR) != 0u; }
 fn param_float(w: u32) -> f32 { return bitcast<f32>(params[w]); }
 fn finite_bits(f: f32) -> bool { return (bitcast<u32>(f) & 0x7FFFFFFFu) < 0x7F800000u; }
 // Binding 3's adjacency starts after the indices; its texels after the adjacency when the host uploaded it.
@@ -714,26 +716,61 @@ fn texel_address(i: i32, n: u32, repeat_: bool) -> u32 {
     if (i < 0) { return 0u; }
     return select(u32(i), n - 1u, u32(i) >= n);
 }
-// sample_bilinear: texel centres at ((i + 0.5) / width, (j + 0.5) / height); an empty map or a NaN or infinite
-// coordinate gives 0, an address mode other than repeat reads as clamp.
-fn sample_bilinear(u: f32, v: f32) -> f32 {
+// height_map.cpp's footprint: the four texels (x0, y0), (x1, y0), (x0, y1), (x1, y1) as texel numbers and the
+// weights' fractions; ok false for an empty map or a NaN or infinite coordinate. An address mode other than repeat
+// reads as clamp.
+struct Footprint {
+    ok: bool,
+    at: vec4<u32>,
+    fraction: vec2<f32>,
+}
+fn texel_footprint(u: f32, v: f32) -> Footprint {
+    var f: Footprint;
     let width = params[PARAM_HEIGHT_MAP_WIDTH]; let height = params[PARAM_HEIGHT_MAP_HEIGHT];
-    if (width == 0u || height == 0u) { return 0.0; }
-    if (!finite_bits(u) || !finite_bits(v)) { return 0.0; }
+    if (width == 0u || height == 0u) { return f; }
+    if (!finite_bits(u) || !finite_bits(v)) { return f; }
     let repeat_ = params[PARAM_HEIGHT_MAP_ADDRESS] == ADDRESS_REPEAT;
     let cx = texel_coordinate(u, width, repeat_);
     let cy = texel_coordinate(v, height, repeat_);
-    let fx = cx.fraction; let fy = cy.fraction;
     let x0 = texel_address(cx.base, width, repeat_); let x1 = texel_address(cx.base + 1, width, repeat_);
     let row0 = texel_address(cy.base, height, repeat_) * width; let row1 = texel_address(cy.base + 1, height, repeat_) * width;
-    let top = (1.0 - fx) * texel(row0 + x0) + fx * texel(row0 + x1);
-    let bottom = (1.0 - fx) * texel(row1 + x0) + fx * texel(row1 + x1);
+    f.ok = true;
+    f.at = vec4<u32>(row0 + x0, row0 + x1, row1 + x0, row1 + x1);
+    f.fraction = vec2<f32>(cx.fraction, cy.fraction);
+    return f;
+}
+// Channel `channel` of texels of `channels` floats (height_map.cpp's blend): the operations of the one-channel sample.
+fn texel_blend(f: Footprint, channels: u32, channel: u32) -> f32 {
+    let fx = f.fraction.x; let fy = f.fraction.y;
+    let top = (1.0 - fx) * texel(channels * f.at.x + channel) + fx * texel(channels * f.at.y + channel);
+    let bottom = (1.0 - fx) * texel(channels * f.at.z + channel) + fx * texel(channels * f.at.w + channel);
     return (1.0 - fy) * top + fy * bottom;
+}
+// sample_bilinear: texel centres at ((i + 0.5) / width, (j + 0.5) / height); an empty map or a NaN or infinite
+// coordinate gives 0.
+fn sample_bilinear(u: f32, v: f32) -> f32 {
+    let f = texel_footprint(u, v);
+    if (!f.ok) { return 0.0; }
+    return texel_blend(f, 1u, 0u);
+}
+// sample_bilinear_rgb (§8.7): channels 0, 1, 2 of 3-float texels, each by sample_bilinear's operations; an empty
+// map or a NaN or infinite coordinate gives (0, 0, 0).
+fn sample_bilinear_rgb(u: f32, v: f32) -> vec3<f32> {
+    let f = texel_footprint(u, v);
+    if (!f.ok) { return vec3<f32>(0.0); }
+    return vec3<f32>(texel_blend(f, 3u, 0u), texel_blend(f, 3u, 1u), texel_blend(f, 3u, 2u));
 }
 // scale * (texel * factor + offset)
 fn displacement_height(u: f32, v: f32) -> f32 {
     let t = sample_bilinear(u, v);
     return param_float(PARAM_DISPLACEMENT_SCALE) * (t * param_float(PARAM_DISPLACEMENT_FACTOR) + param_float(PARAM_DISPLACEMENT_OFFSET));
+}
+// Vector mode's displacement_vector (§8.7): scale * (texel * factor + offset) per channel.
+fn displacement_vector(u: f32, v: f32) -> vec3<f32> {
+    let t = sample_bilinear_rgb(u, v);
+    let scale = param_float(PARAM_DISPLACEMENT_SCALE); let factor = param_float(PARAM_DISPLACEMENT_FACTOR);
+    let offset = param_float(PARAM_DISPLACEMENT_OFFSET);
+    return vec3<f32>(scale * (t.x * factor + offset), scale * (t.y * factor + offset), scale * (t.z * factor + offset));
 }
 // displaced_edge_factor (§8.4): the factor of edge a -> b grown by the bound, as if displacement lengthened it
 // at both ends.
@@ -748,12 +785,15 @@ fn displaced_edge_factor(factor: f32, a: vec3<f32>, b: vec3<f32>) -> f32 {
 fn cross3(a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-// What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction, per
-// edge the dominant edge's uvs at both ends (xy, zw), the own corners' positions and uvs; 3 or 4 corners.
+// What one patch's displacement reads (DisplacementPatch): per corner the dominant vertex's uv and direction (and
+// in vector mode its tangent and bitangent), per edge the dominant edge's uvs at both ends (xy, zw), the own
+// corners' positions and uvs; 3 or 4 corners.
 struct DisplacementPatch {
     corners: u32,
     corner_uv: array<vec2<f32>, 4>,
     direction: array<vec3<f32>, 4>,
+    tangent: array<vec3<f32>, 4>,
+    bitangent: array<vec3<f32>, 4>,
     edge_uv: array<vec4<f32>, 4>,
     position: array<vec3<f32>, 4>,
     own_uv: array<vec2<f32>, 4>,
@@ -775,10 +815,18 @@ fn vertex_direction(v: u32) -> vec3<f32> {
     }
     return normalize_or_zero(vec3<f32>(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u]));
 }
+// Displacement::tangents (vector mode, glTF TANGENT's layout): 4 floats per mesh vertex after the mesh vertices and
+// the directions in binding 2. A tangent past the end of binding 2 (a host that uploaded fewer) reads (0, 0, 0, 1).
+fn vertex_tangent(v: u32) -> vec4<f32> {
+    let n = params[PARAM_MESH_VERTEX_COUNT];
+    let o = n * MESH_VERTEX_FLOATS + select(0u, 3u * n, (params[PARAM_DISPLACEMENT_FLAGS] & DISPLACEMENT_DIRECTIONS) != 0u) + 4u * v;
+    if (o + 3u >= arrayLength(&mesh_vertices)) { return vec4<f32>(0.0, 0.0, 0.0, 1.0); }
+    return vec4<f32>(mesh_vertices[o], mesh_vertices[o + 1u], mesh_vertices[o + 2u], mesh_vertices[o + 3u]);
+}
 // displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
 // corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
 fn displacement_patch(corners: u32, w_in: array<u32, 4>, corner_face_in: array<u32, 4>, corner_slot_in: array<u32, 4>,
-                      edge_face_in: array<u32, 4>, edge_slot_in: array<u32, 4>) -> DisplacementPatch {
+                      edge_face_in: array<u32, 4>, edge_slot_in: array<u32, 4>, vector_: bool) -> DisplacementPatch {
     var dp: DisplacementPatch;
     dp.corners = corners;
     var w = w_in; var corner_face = corner_face_in; var corner_slot = corner_slot_in;
@@ -790,6 +838,13 @@ fn displacement_patch(corners: u32, w_in: array<u32, 4>, corner_face_in: array<u
         dp.own_uv[k] = mesh_uv(w[k]);
         dp.corner_uv[k] = mesh_uv(dom);
         dp.direction[k] = vertex_direction(dom);
+        if (vector_) {
+            // The dominant vertex's frame (§8.7): T made orthogonal to the direction N, B = cross(N, T) w.
+            let t = vertex_tangent(dom);
+            let nd = dp.direction[k];
+            dp.tangent[k] = normalize_or_zero(t.xyz - dot3(t.xyz, nd) * nd);
+            dp.bitangent[k] = select(1.0, -1.0, t.w < 0.0) * cross3(nd, dp.tangent[k]);
+        }
     }
     // The dominant edge: of the own edge and the neighbour's (slots 3-8, paired by position), the one whose
     // vertices, taken in position order, are lexicographically smaller; the neighbour picks the same one.
@@ -826,22 +881,87 @@ fn bend_normal(normal: vec3<f32>, tu: vec3<f32>, tv: vec3<f32>, hu: f32, hv: f32
     if (dot3(bent, bent) > 0.0) { return bent; }
     return normal;
 }
+// The own uv at triangle parameter (a, b) = (w1, w2), and at quad parameter (s, t) (bilinear).
+fn tri_own_uv(dp: DisplacementPatch, a: f32, b: f32) -> vec2<f32> {
+    let c = (1.0 - a) - b;
+    return vec2<f32>((c * dp.own_uv[0].x + a * dp.own_uv[1].x) + b * dp.own_uv[2].x,
+                     (c * dp.own_uv[0].y + a * dp.own_uv[1].y) + b * dp.own_uv[2].y);
+}
+fn quad_own_uv(dp: DisplacementPatch, s: f32, t: f32) -> vec2<f32> {
+    let w = array<f32, 4>((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
+    return vec2<f32>(((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x,
+                     ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y);
+}
 // The height at the own uv of triangle parameter (a, b) = (w1, w2).
 fn tri_uv_height(dp: DisplacementPatch, a: f32, b: f32) -> f32 {
-    let c = (1.0 - a) - b;
-    return displacement_height((c * dp.own_uv[0].x + a * dp.own_uv[1].x) + b * dp.own_uv[2].x,
-                               (c * dp.own_uv[0].y + a * dp.own_uv[1].y) + b * dp.own_uv[2].y);
+    let uv = tri_own_uv(dp, a, b);
+    return displacement_height(uv.x, uv.y);
+}
+// ---- vector displacement (displace.cpp's vector mode, docs/algorithm.md §8.7) ----
+// A tangent frame: t along +u, b, n the displacement direction.
+struct Frame {
+    t: vec3<f32>,
+    b: vec3<f32>,
+    n: vec3<f32>,
+}
+// Position + x T + y B + z N, the offset summed first (the same operations from every face).
+fn move_vector(position: vec3<f32>, moved_by: vec3<f32>, f: Frame) -> vec3<f32> {
+    return position + ((moved_by.x * f.t + moved_by.y * f.b) + moved_by.z * f.n);
+}
+// interpolated_frame: the frame field at weights w of corners corner[0..count-1], each axis summed from zero in
+// corner order and normalised as the directions are (zero stays zero).
+fn interpolated_frame(dp_in: DisplacementPatch, corner_in: array<u32, 4>, w_in: array<f32, 4>, count: u32) -> Frame {
+    var dp = dp_in; var corner = corner_in; var w = w_in;
+    var t = vec3<f32>(0.0); var b = vec3<f32>(0.0); var d = vec3<f32>(0.0);
+    for (var k = 0u; k < count; k++) {
+        t = t + w[k] * dp.tangent[corner[k]];
+        b = b + w[k] * dp.bitangent[corner[k]];
+        d = d + w[k] * dp.direction[corner[k]];
+    }
+    return Frame(normalize_or_zero(t), normalize_or_zero(b), normalize_or_zero(d));
+}
+// bend_normal_vector: S_u x S_v = (t_u' + D_u) x (t_v' + D_v), D_u = Vu.x T + Vu.y B + Vu.z N from the vector's
+// central differences vu, vv in the point's frame (its derivatives left out, as bend_normal leaves out dN).
+fn bend_normal_vector(normal: vec3<f32>, tu: vec3<f32>, tv: vec3<f32>, vu: vec3<f32>, vv: vec3<f32>, f: Frame) -> vec3<f32> {
+    let n = normalize_or_zero(normal);
+    if (!(dot3(n, n) > 0.0)) { return normal; }
+    let pu = tu - dot3(tu, n) * n;
+    let pv = tv - dot3(tv, n) * n;
+    let j = dot3(cross3(pu, pv), n);
+    let du = (vu.x * f.t + vu.y * f.b) + vu.z * f.n;
+    let dv = (vv.x * f.t + vv.y * f.b) + vv.z * f.n;
+    if (!(j != 0.0) || !finite_bits(dot3(du, du)) || !finite_bits(dot3(dv, dv))) { return normal; }
+    let bent = normalize_or_zero(select(1.0, -1.0, j < 0.0) * cross3(pu + du, pv + dv));
+    if (dot3(bent, bent) > 0.0) { return bent; }
+    return normal;
+}
+// (plus - minus) / (2 step), as 1 / (2 step) times the difference.
+fn vector_difference(plus: vec3<f32>, minus: vec3<f32>, step_: f32) -> vec3<f32> {
+    return (1.0 / (2.0 * step_)) * (plus - minus);
+}
+fn tri_uv_vector(dp: DisplacementPatch, a: f32, b: f32) -> vec3<f32> {
+    let uv = tri_own_uv(dp, a, b);
+    return displacement_vector(uv.x, uv.y);
+}
+fn quad_uv_vector(dp: DisplacementPatch, s: f32, t: f32) -> vec3<f32> {
+    let uv = quad_own_uv(dp, s, t);
+    return displacement_vector(uv.x, uv.y);
 }
 // A point on patch edge k with weights wa at corner k and wb at corner k + 1: the dominant edge's uvs and the
 // dominant directions interpolated from the endpoint first in position order (equal positions: the larger weight).
 // Returns the displaced position.
-fn displace_edge(dp_in: DisplacementPatch, k: u32, wa_in: u32, wb_in: u32, position: vec3<f32>) -> vec3<f32> {
+// vector_: vector mode (§8.7), a constant of the entry point, so that each pass carries one mode's code.
+fn displace_edge(dp_in: DisplacementPatch, k: u32, wa_in: u32, wb_in: u32, position: vec3<f32>, vector_: bool) -> vec3<f32> {
     var dp = dp_in;
     var a = k; var b = (k + 1u) % dp.corners;
     var wa = wa_in; var wb = wb_in;
     var uv_a = dp.edge_uv[k].xy; var uv_b = dp.edge_uv[k].zw;
     if (wa == FIXED_ONE || wb == FIXED_ONE) {
         let c = select(b, a, wa == FIXED_ONE);
+        if (vector_) {
+            return move_vector(position, displacement_vector(dp.corner_uv[c].x, dp.corner_uv[c].y),
+                               Frame(dp.tangent[c], dp.bitangent[c], dp.direction[c]));
+        }
         return position + displacement_height(dp.corner_uv[c].x, dp.corner_uv[c].y) * dp.direction[c];
     }
     let swap_ = position_before(dp.position[b], dp.position[a]) ||
@@ -854,8 +974,64 @@ fn displace_edge(dp_in: DisplacementPatch, k: u32, wa_in: u32, wb_in: u32, posit
     let ta = fixed_weight(wa); let tb = fixed_weight(wb);
     let u = ta * uv_a.x + tb * uv_b.x;
     let v = ta * uv_a.y + tb * uv_b.y;
+    if (vector_) {
+        return move_vector(position, displacement_vector(u, v),
+                           interpolated_frame(dp, array<u32, 4>(a, b, 0u, 0u), array<f32, 4>(ta, tb, 0.0, 0.0), 2u));
+    }
     let dir = normalize_or_zero(ta * dp.direction[a] + tb * dp.direction[b]);
     return position + displacement_height(u, v) * dir;
+}
+// Vector mode's triangle point (displace_triangle_vector, §8.7): the normal from the vector's differences in the own
+// parameters, then the position as displace_triangle_point's (corners and edges through displace_edge, the interior
+// in the frame interpolated by the barycentric weights).
+fn displace_triangle_vector(dp: DisplacementPatch, weights: array<u32, 3>, a: f32, b: f32, sp: SurfacePoint) -> SurfacePoint {
+    var w = weights;
+    var p = sp;
+    let step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    let frame = interpolated_frame(dp, array<u32, 4>(0u, 1u, 2u, 0u), array<f32, 4>(fixed_weight(w[0]), a, b, 0.0), 3u);
+    let vu = vector_difference(tri_uv_vector(dp, a + step_, b), tri_uv_vector(dp, a - step_, b), step_);
+    let vv = vector_difference(tri_uv_vector(dp, a, b + step_), tri_uv_vector(dp, a, b - step_), step_);
+    p.normal = bend_normal_vector(p.normal, dp.position[1] - dp.position[0], dp.position[2] - dp.position[0], vu, vv, frame);
+    for (var k = 0u; k < 3u; k++) {
+        if (w[(k + 2u) % 3u] == 0u || w[k] == FIXED_ONE) {
+            if (w[k] == FIXED_ONE) {
+                p.position = displace_edge(dp, k, FIXED_ONE, 0u, p.position, true);
+            } else {
+                p.position = displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p.position, true);
+            }
+            return p;
+        }
+    }
+    p.position = move_vector(p.position, displacement_vector(p.uv.x, p.uv.y), frame);
+    return p;
+}
+// Vector mode's quad point (displace_quad_vector, §8.7): boundary points through displace_edge as
+// displace_quad_point's.
+fn displace_quad_vector(dp: DisplacementPatch, s: u32, t: u32, fs: f32, ft: f32, sp: SurfacePoint) -> SurfacePoint {
+    var p = sp;
+    let step_ = param_float(PARAM_DISPLACEMENT_NORMAL_STEP);
+    let w = array<f32, 4>((1.0 - fs) * (1.0 - ft), fs * (1.0 - ft), fs * ft, (1.0 - fs) * ft);
+    let frame = interpolated_frame(dp, array<u32, 4>(0u, 1u, 2u, 3u), w, 4u);
+    let vu = vector_difference(quad_uv_vector(dp, fs + step_, ft), quad_uv_vector(dp, fs - step_, ft), step_);
+    let vv = vector_difference(quad_uv_vector(dp, fs, ft + step_), quad_uv_vector(dp, fs, ft - step_), step_);
+    let ts = (1.0 - ft) * (dp.position[1] - dp.position[0]) + ft * (dp.position[2] - dp.position[3]);
+    let tt = (1.0 - fs) * (dp.position[3] - dp.position[0]) + fs * (dp.position[2] - dp.position[1]);
+    p.normal = bend_normal_vector(p.normal, ts, tt, vu, vv, frame);
+    if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
+        let c = select(select(3u, 2u, s == FIXED_ONE), select(1u, 0u, s == 0u), t == 0u);
+        p.position = displace_edge(dp, c, FIXED_ONE, 0u, p.position, true);
+        return p;
+    }
+    var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
+    var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
+    for (var k = 0u; k < 4u; k++) {
+        if (on_edge[k]) {
+            p.position = displace_edge(dp, k, FIXED_ONE - r[k], r[k], p.position, true);
+            return p;
+        }
+    }
+    p.position = move_vector(p.position, displacement_vector(p.uv.x, p.uv.y), frame);
+    return p;
 }
 // displace_triangle_point: sp is the surface point of base weights w (units of FIXED_ONE).
 fn displace_triangle_point(dp_in: DisplacementPatch, weights: array<u32, 3>, sp: SurfacePoint) -> SurfacePoint {
@@ -871,9 +1047,9 @@ fn displace_triangle_point(dp_in: DisplacementPatch, weights: array<u32, 3>, sp:
     for (var k = 0u; k < 3u; k++) {
         if (w[(k + 2u) % 3u] == 0u || w[k] == FIXED_ONE) {
             if (w[k] == FIXED_ONE) {
-                p.position = displace_edge(dp, k, FIXED_ONE, 0u, p.position);
+                p.position = displace_edge(dp, k, FIXED_ONE, 0u, p.position, false);
             } else {
-                p.position = displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p.position);
+                p.position = displace_edge(dp, k, w[k], w[(k + 1u) % 3u], p.position, false);
             }
             return p;
         }
@@ -884,9 +1060,8 @@ fn displace_triangle_point(dp_in: DisplacementPatch, weights: array<u32, 3>, sp:
 }
 // The height at the own uv of quad parameter (s, t), bilinear.
 fn quad_uv_height(dp: DisplacementPatch, s: f32, t: f32) -> f32 {
-    let w = array<f32, 4>((1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t);
-    return displacement_height(((w[0] * dp.own_uv[0].x + w[1] * dp.own_uv[1].x) + w[2] * dp.own_uv[2].x) + w[3] * dp.own_uv[3].x,
-                               ((w[0] * dp.own_uv[0].y + w[1] * dp.own_uv[1].y) + w[2] * dp.own_uv[2].y) + w[3] * dp.own_uv[3].y);
+    let uv = quad_own_uv(dp, s, t);
+    return displacement_height(uv.x, uv.y);
 }
 // displace_quad_point: sp is the surface point of quad point (s, t) of the unit square (units of FIXED_ONE).
 fn displace_quad_point(dp_in: DisplacementPatch, s: u32, t: u32, sp: SurfacePoint) -> SurfacePoint {
@@ -903,14 +1078,14 @@ fn displace_quad_point(dp_in: DisplacementPatch, s: u32, t: u32, sp: SurfacePoin
     // interior.
     if ((s == 0u || s == FIXED_ONE) && (t == 0u || t == FIXED_ONE)) {
         let c = select(select(3u, 2u, s == FIXED_ONE), select(1u, 0u, s == 0u), t == 0u);
-        p.position = displace_edge(dp, c, FIXED_ONE, 0u, p.position);
+        p.position = displace_edge(dp, c, FIXED_ONE, 0u, p.position, false);
         return p;
     }
     var on_edge = array<bool, 4>(t == 0u, s == FIXED_ONE, t == FIXED_ONE, s == 0u);
     var r = array<u32, 4>(s, t, FIXED_ONE - s, FIXED_ONE - t);
     for (var k = 0u; k < 4u; k++) {
         if (on_edge[k]) {
-            p.position = displace_edge(dp, k, FIXED_ONE - r[k], r[k], p.position);
+            p.position = displace_edge(dp, k, FIXED_ONE - r[k], r[k], p.position, false);
             return p;
         }
     }
@@ -1393,7 +1568,7 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
 // adapter runs an untaken workgroup-uniform branch at full cost (docs/shaders.md, "Quads"). One call site of each
 // pattern and surface function, so that a compiler that inlines everything keeps one copy of each.
-fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
+fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<u32>) {
     let first_patch = select(params[PARAM_FIRST_PATCH], max(params[PARAM_FIRST_PATCH], triangle_count()), quad_pass);
     let end = min(params[PARAM_END_PATCH], select(triangle_count(), patch_count(), quad_pass));
     let alpha = bitcast<f32>(params[PARAM_ALPHA]);
@@ -1402,8 +1577,11 @@ fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<
     let uniform_ = uniform_pattern();
     // Displacement runs in its own entry points (a software adapter runs an untaken branch at full cost); the
     // others write no vertex when the params displace, rather than undisplaced ones.
+    // Vector displacement (§8.7) has its own entry points too (vector_); each displaced pass writes no vertex for
+    // the other mode's params.
     let displace = displaced;
     if (displacement_on() != displaced) { return; }
+    if (displaced && displacement_vector_mode() != vector_) { return; }
     for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let rec = t * PATCH_WORDS;
         let count = patches[rec + REC_VERTEX_COUNT];
@@ -1445,7 +1623,7 @@ fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<
                     edge_face[k] = face + select(0u, 1u, m >= 2u);
                     edge_slot[k] = select(m, m - 1u, m >= 2u);
                 }
-                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot);
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot, vector_);
             }
         } else {
             let w = base_triangle(t);
@@ -1462,7 +1640,8 @@ fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<
             words[0] = uniform_words(rec);
             if (displace) {
                 dp = displacement_patch(3u, array<u32, 4>(w.x, w.y, w.z, 0u), array<u32, 4>(t, t, t, t),
-                                        array<u32, 4>(0u, 1u, 2u, 0u), array<u32, 4>(t, t, t, t), array<u32, 4>(0u, 1u, 2u, 0u));
+                                        array<u32, 4>(0u, 1u, 2u, 0u), array<u32, 4>(t, t, t, t), array<u32, 4>(0u, 1u, 2u, 0u),
+                                        vector_);
             }
         }
         let first = patches[rec + REC_FIRST_VERTEX];
@@ -1508,7 +1687,11 @@ fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<
                 sp = evaluate_surface(tri, w3, surface, alpha);
             }
             // §8: after the surface, as mesh_pipeline.cpp (a quad's every point by its square point).
-            if (displace && quad) {
+            if (displace && vector_ && quad) {
+                sp = displace_quad_vector(dp, out_uv.x, out_uv.y, fixed_weight(out_uv.x), fixed_weight(out_uv.y), sp);
+            } else if (displace && vector_) {
+                sp = displace_triangle_vector(dp, w3, fixed_weight(w3[1]), fixed_weight(w3[2]), sp);
+            } else if (displace && quad) {
                 sp = displace_quad_point(dp, out_uv.x, out_uv.y, sp);
             } else if (displace) {
                 sp = displace_triangle_point(dp, w3, sp);
@@ -1521,22 +1704,32 @@ fn emit_vertices(quad_pass: bool, displaced: bool, wid: vec3<u32>, groups: vec3<
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                        @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(false, false, wid, groups, lid);
+    emit_vertices(false, false, false, wid, groups, lid);
 }
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                             @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(true, false, wid, groups, lid);
+    emit_vertices(true, false, false, wid, groups, lid);
 }
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_displaced_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                                  @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(false, true, wid, groups, lid);
+    emit_vertices(false, true, false, wid, groups, lid);
 }
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_emit_displaced_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                                       @builtin(local_invocation_id) lid: vec3<u32>) {
-    emit_vertices(true, true, wid, groups, lid);
+    emit_vertices(true, true, false, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_vector_displaced_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                                        @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(false, true, true, wid, groups, lid);
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_emit_vector_displaced_quad_vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                                             @builtin(local_invocation_id) lid: vec3<u32>) {
+    emit_vertices(true, true, true, wid, groups, lid);
 }
 
 // Passes 5 and 6 (triangles), as 3 and 4: every output triangle, in provoking-vertex order, as mesh-wide indices

@@ -147,9 +147,10 @@ export class MeshPipeline {
     // displacement (docs/shaders.md, "Displacement"): {scale, factor, offset, normalStep,
     // factorBound (rt::Displacement's defaults 1, 1, 0, 1/256, 0), width, height (the height map's texels; 0 x 0
     // an empty map), address ('repeat', the default, or 'clamp'), directions (true: run() gets options.directions),
-    // adjacency (true: meshIndices holds the adjacency after the indices)}; run() then needs options.texels.
-    // Values rt::displacement_valid refuses (non-finite numbers, factorBound < 0, normalStep outside (0, 0.5])
-    // throw.
+    // adjacency (true: meshIndices holds the adjacency after the indices), vector (true: vector displacement,
+    // docs/algorithm.md §8.7: RGB texels, 3 floats each, and run() gets options.tangents)}; run() then needs
+    // options.texels. Values rt::displacement_valid refuses (non-finite numbers, factorBound < 0, normalStep
+    // outside (0, 0.5]) throw.
     params(f, extra = 0) {
         const C = this.constants;
         const code = (value, what, names) => {
@@ -178,7 +179,7 @@ export class MeshPipeline {
             if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
                 throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
             p[C.PARAM_DISPLACEMENT_FLAGS] = C.DISPLACEMENT_ON | (d.directions ? C.DISPLACEMENT_DIRECTIONS : 0) |
-                                            (d.adjacency ? C.DISPLACEMENT_ADJACENCY : 0);
+                                            (d.adjacency ? C.DISPLACEMENT_ADJACENCY : 0) | (d.vector ? C.DISPLACEMENT_VECTOR : 0);
             p.set([scale, factor, offset, normalStep, bound].map(f32Bits), C.PARAM_DISPLACEMENT_SCALE);
             p[C.PARAM_HEIGHT_MAP_WIDTH] = d.width ?? 0;
             p[C.PARAM_HEIGHT_MAP_HEIGHT] = d.height ?? 0;
@@ -195,8 +196,10 @@ export class MeshPipeline {
     // with countsOnly), milliseconds}. indexUsage and vertexUsage add usage flags to the output buffers (e.g.
     // GPUBufferUsage.INDEX to draw the indices). Params that do not describe the arrays given, a binding past the
     // device's maxStorageBufferBindingSize and any validation or out-of-memory error of the run throw.
-    // Displacement (params' displacement): options.texels (a Float32Array of exactly width x height texels) and,
-    // when the params name them, options.directions (3 floats per mesh vertex) go after the mesh's own data.
+    // Displacement (params' displacement): options.texels (a Float32Array of exactly width x height texels, 3
+    // floats each in vector mode) and, when the params name them, options.directions (3 floats per mesh vertex)
+    // and in vector mode options.tangents (4 floats per mesh vertex, glTF TANGENT's layout) go after the mesh's
+    // own data.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
@@ -221,9 +224,12 @@ export class MeshPipeline {
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
         // Displaced vertices come from their own entry points (the others write none for such params).
         const triangles = n - quads;
-        const wanted = [first0 < Math.min(end0, triangles) ? (displaced ? 'emit_displaced_vertices' : 'emit_vertices') : null,
+        // Vector displacement (docs/algorithm.md §8.7) has its own two.
+        const vector = displaced && (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_VECTOR) !== 0;
+        const vertexPass = (quad) => `emit_${vector ? 'vector_' : ''}${displaced ? 'displaced_' : ''}${quad ? 'quad_' : ''}vertices`;
+        const wanted = [first0 < Math.min(end0, triangles) ? vertexPass(false) : null,
                         first0 < Math.min(end0, triangles) ? 'emit_triangles' : null,
-                        end0 > Math.max(first0, triangles) ? (displaced ? 'emit_displaced_quad_vertices' : 'emit_quad_vertices') : null,
+                        end0 > Math.max(first0, triangles) ? vertexPass(true) : null,
                         end0 > Math.max(first0, triangles) ? 'emit_quad_triangles' : null];
         const [emitVertices, emitTriangles, emitQuadVertices, emitQuadTriangles] =
             options.countsOnly ? [] : await Promise.all(wanted.map((name) => name && this.pipelineOf(name)));
@@ -307,10 +313,10 @@ export class MeshPipeline {
     }
 
     // Bindings 2 and 3 of a displaced run (docs/shaders.md, "Displacement"): the mesh vertices then the
-    // directions, the indices (and the adjacency when the params' flag says so) then the texels' bits. run()
-    // has checked the arrays against the params; each binding is checked against maxBinding bytes before it is
-    // allocated.
-    displacementData(params, meshVertices, meshIndices, { texels, directions }, maxBinding) {
+    // directions and in vector mode the tangents, the indices (and the adjacency when the params' flag says so)
+    // then the texels' bits. run() has checked the arrays against the params; each binding is checked against
+    // maxBinding bytes before it is allocated.
+    displacementData(params, meshVertices, meshIndices, { texels, directions, tangents }, maxBinding) {
         const C = this.constants;
         const flags = params[C.PARAM_DISPLACEMENT_FLAGS];
         const float = (w) => new Float32Array(Uint32Array.of(params[w]).buffer)[0];
@@ -319,9 +325,11 @@ export class MeshPipeline {
         if (![scale, factor, offset, bound].every(Number.isFinite) || !(bound >= 0) || !(normalStep > 0 && normalStep <= 0.5))
             throw new Error('displacement: scale, factor, offset and factorBound must be finite, factorBound >= 0, normalStep in (0, 0.5]');
         const width = params[C.PARAM_HEIGHT_MAP_WIDTH], height = params[C.PARAM_HEIGHT_MAP_HEIGHT];
-        const count = width * height;
+        const vector = (flags & C.DISPLACEMENT_VECTOR) !== 0;
+        const count = width * height * (vector ? 3 : 1); // texel floats
         if (!(texels instanceof Float32Array) || texels.length !== count)
-            throw new Error(`displacement: ${texels?.length ?? 'no'} texels given for a ${width} x ${height} height map`);
+            throw new Error(`displacement: ${texels?.length ?? 'no'} texel floats given for a ${width} x ${height} ` +
+                            `${vector ? 'RGB vector map (3 floats a texel)' : 'height map'}`);
         const triangles = params[C.PARAM_PATCH_COUNT] - params[C.PARAM_QUAD_COUNT], quads = params[C.PARAM_QUAD_COUNT];
         const indexWords = 3 * triangles + 4 * quads + (flags & C.DISPLACEMENT_ADJACENCY ? 12 * (triangles + 2 * quads) : 0);
         if (meshIndices.length < indexWords) throw new Error('displacement: the adjacency the params name is not in meshIndices');
@@ -330,15 +338,21 @@ export class MeshPipeline {
         const indices = new Uint32Array(indexWords + count);
         indices.set(meshIndices.subarray(0, indexWords));
         indices.set(new Uint32Array(texels.buffer, texels.byteOffset, count), indexWords);
-        if (!(flags & C.DISPLACEMENT_DIRECTIONS)) return [meshVertices, indices];
-        const vertexWords = params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS, n = 3 * params[C.PARAM_MESH_VERTEX_COUNT];
-        if (!(directions instanceof Float32Array) || directions.length < n)
-            throw new Error(`displacement: ${directions?.length ?? 'no'} direction floats given for ${n / 3} mesh vertices`);
-        if ((vertexWords + n) * 4 > maxBinding)
-            throw new Error(`displacement: ${(vertexWords + n) * 4} bytes of mesh vertices and directions in one storage binding, past the device's ${maxBinding}`);
-        const vertices = new Uint32Array(vertexWords + n);
+        const withDirections = (flags & C.DISPLACEMENT_DIRECTIONS) !== 0;
+        if (!withDirections && !vector) return [meshVertices, indices];
+        const meshCount = params[C.PARAM_MESH_VERTEX_COUNT], vertexWords = meshCount * C.MESH_VERTEX_FLOATS;
+        const n = withDirections ? 3 * meshCount : 0, nt = vector ? 4 * meshCount : 0;
+        if (withDirections && (!(directions instanceof Float32Array) || directions.length < n))
+            throw new Error(`displacement: ${directions?.length ?? 'no'} direction floats given for ${meshCount} mesh vertices`);
+        if (vector && (!(tangents instanceof Float32Array) || tangents.length < nt))
+            throw new Error(`displacement: ${tangents?.length ?? 'no'} tangent floats given for ${meshCount} mesh vertices ` +
+                            '(vector displacement needs 4 per vertex)');
+        if ((vertexWords + n + nt) * 4 > maxBinding)
+            throw new Error(`displacement: ${(vertexWords + n + nt) * 4} bytes of mesh vertices, directions and tangents in one storage binding, past the device's ${maxBinding}`);
+        const vertices = new Uint32Array(vertexWords + n + nt);
         vertices.set(new Uint32Array(meshVertices.buffer, meshVertices.byteOffset, vertexWords));
-        vertices.set(new Uint32Array(directions.buffer, directions.byteOffset, n), vertexWords);
+        if (n) vertices.set(new Uint32Array(directions.buffer, directions.byteOffset, n), vertexWords);
+        if (nt) vertices.set(new Uint32Array(tangents.buffer, tangents.byteOffset, nt), vertexWords + n);
         return [vertices, indices];
     }
 

@@ -50,7 +50,10 @@ constexpr Pass passes[] = {
     {"emit_quad_vertices", "ctess_emit_quad_vertices", ctess::gen::emit_workgroup},
     {"emit_quad_triangles", "ctess_emit_quad_triangles", ctess::gen::emit_workgroup},
     {"emit_displaced_vertices", "ctess_emit_displaced_vertices", ctess::gen::emit_workgroup},
-    {"emit_displaced_quad_vertices", "ctess_emit_displaced_quad_vertices", ctess::gen::emit_workgroup}};
+    {"emit_displaced_quad_vertices", "ctess_emit_displaced_quad_vertices", ctess::gen::emit_workgroup},
+    {"emit_vector_displaced_vertices", "ctess_emit_vector_displaced_vertices", ctess::gen::emit_workgroup},
+    {"emit_vector_displaced_quad_vertices", "ctess_emit_vector_displaced_quad_vertices",
+     ctess::gen::emit_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

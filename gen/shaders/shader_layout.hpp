@@ -154,6 +154,8 @@ inline constexpr std::array shader_constants = {
                    "rt::gpu::displacement_flag::directions"},
     ShaderConstant{"DISPLACEMENT_ADJACENCY", rt::gpu::displacement_flag::adjacency,
                    "rt::gpu::displacement_flag::adjacency"},
+    ShaderConstant{"DISPLACEMENT_VECTOR", rt::gpu::displacement_flag::vector,
+                   "rt::gpu::displacement_flag::vector"},
     ShaderConstant{"ADDRESS_REPEAT", static_cast<std::uint32_t>(rt::AddressMode::repeat),
                    "rt::AddressMode::repeat"},
     ShaderConstant{"ADDRESS_CLAMP", static_cast<std::uint32_t>(rt::AddressMode::clamp),

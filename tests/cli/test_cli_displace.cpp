@@ -211,8 +211,9 @@ std::string rgb_png(int w, int h, F texel) {
 
 } // namespace
 
-TEST_CASE("ctess mesh --displace-vector: an RGB tangent-space map keeps the cube closed; --stats reports it",
-          "[cli][mesh][displace]") {
+TEST_CASE(
+    "ctess mesh --displace-vector: an RGB tangent-space map keeps the cube closed, and --stats reports it",
+    "[cli][mesh][displace]") {
     const std::string in = scratch("cube_vector.obj");
     write_file(in, mixed_cube_obj());
     const std::string map = scratch("vector.png");
@@ -239,6 +240,20 @@ TEST_CASE("ctess mesh --displace-vector: an RGB tangent-space map keeps the cube
             CHECK(grown["displacement"]["factor_bound"] == grown["displacement"]["bound"]);
             CHECK(grown["output_triangles"].get<long>() >= s["output_triangles"].get<long>());
         }
+    // The shaders displace by vectors too (docs/shaders.md, "Displacement"): with camera factors the gpu
+    // block is there, and without factor growth its exact words are the undisplaced run's (displacement moves
+    // positions only); grown factors give more triangles.
+    const std::string camera =
+        std::string("--in ") + in + " --dice-rate 30 --camera 2.5,1.7,3.1"; // none clamped
+    const nlohmann::json plain_gpu = stats(camera);
+    const nlohmann::json vector_gpu = stats(camera + " --displace-vector " + map + " --displace-scale 0.1");
+    REQUIRE(plain_gpu.contains("gpu"));
+    REQUIRE(vector_gpu.contains("gpu"));
+    CHECK(vector_gpu["gpu"]["checksum"] == plain_gpu["gpu"]["checksum"]);
+    const nlohmann::json grown_gpu =
+        stats(camera + " --displace-vector " + map + " --displace-scale 0.1 --displace-grow");
+    REQUIRE(grown_gpu.contains("gpu"));
+    CHECK(grown_gpu["gpu"]["triangles"].get<long>() > plain_gpu["gpu"]["triangles"].get<long>());
     // The scalar mode reports its own mode and one channel.
     const std::string grey = scratch("grey_for_mode.png");
     write_file(grey, png(4, 4, [](int x, int) { return static_cast<std::uint8_t>(x * 60); }));

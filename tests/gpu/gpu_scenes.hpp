@@ -37,26 +37,31 @@ struct Scene {
 };
 
 // The words a host uploads as binding 3 (docs/shaders.md, "Passes and bindings"): the triangles' indices, the
-// quads', then the adjacency when the scene has it, then with displacement the height map's texels.
+// quads', then the adjacency when the scene has it, then with displacement the map's texels (3 floats each in
+// vector mode).
 inline std::vector<std::uint32_t> mesh_index_words(const Scene& scene) {
     std::vector<std::uint32_t> words = scene.indices;
     words.insert(words.end(), scene.quads.begin(), scene.quads.end());
     words.insert(words.end(), scene.adjacency.begin(), scene.adjacency.end());
     if (const rt::Displacement* d = scene.options.displacement; d != nullptr && d->map.texels != nullptr) {
-        const std::size_t count = std::size_t{d->map.width} * d->map.height;
+        const std::size_t count =
+            std::size_t{d->map.width} * d->map.height * (d->mode == rt::DisplacementMode::vector ? 3u : 1u);
         const std::size_t at = words.size();
         words.resize(at + count);
         if (count != 0) std::memcpy(&words[at], d->map.texels, count * 4);
     }
     return words;
 }
-// The floats a host uploads as binding 2: the mesh vertices, then with displacement its directions
-// (docs/shaders.md, "Displacement").
+// The floats a host uploads as binding 2: the mesh vertices, then with displacement its directions, then in
+// vector mode its tangents (docs/shaders.md, "Displacement").
 inline std::vector<float> mesh_vertex_data(const Scene& scene) {
     std::vector<float> floats = scene.vertices;
-    if (const rt::Displacement* d = scene.options.displacement; d != nullptr && d->directions != nullptr)
-        floats.insert(floats.end(), d->directions,
-                      d->directions + 3 * (scene.vertices.size() / rt::mesh_vertex_floats));
+    const std::size_t n = scene.vertices.size() / rt::mesh_vertex_floats;
+    if (const rt::Displacement* d = scene.options.displacement; d != nullptr) {
+        if (d->directions != nullptr) floats.insert(floats.end(), d->directions, d->directions + 3 * n);
+        if (d->mode == rt::DisplacementMode::vector && d->tangents != nullptr)
+            floats.insert(floats.end(), d->tangents, d->tangents + 4 * n);
+    }
     return floats;
 }
 

@@ -48,18 +48,20 @@ for (let job = 0; job < files.length; job += 2) {
     const vertexFloats = scene[sizes], indexCount = scene[sizes + 1];
     let meshVertices = scene.slice(sizes + 2, sizes + 2 + vertexFloats);
     let meshIndices = scene.slice(sizes + 2 + vertexFloats, sizes + 2 + vertexFloats + indexCount);
-    // Displacement: the scene's vertex floats end with the directions, its index words with the texels
-    // (gpu_scenes.hpp); the host takes them as run()'s texels and directions.
+    // Displacement: the scene's vertex floats end with the directions and in vector mode the tangents, its index
+    // words with the texels (gpu_scenes.hpp); the host takes them as run()'s texels, directions and tangents.
     const displacement = {};
-    if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON) {
-        const texelCount = params[C.PARAM_HEIGHT_MAP_WIDTH] * params[C.PARAM_HEIGHT_MAP_HEIGHT];
-        displacement.texels = new Float32Array(meshIndices.slice(meshIndices.length - texelCount).buffer);
-        meshIndices = meshIndices.slice(0, meshIndices.length - texelCount);
-        if (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_DIRECTIONS) {
-            const own = params[C.PARAM_MESH_VERTEX_COUNT] * C.MESH_VERTEX_FLOATS;
-            displacement.directions = new Float32Array(meshVertices.slice(own).buffer);
-            meshVertices = meshVertices.slice(0, own);
-        }
+    const flags = params[C.PARAM_DISPLACEMENT_FLAGS];
+    if (flags & C.DISPLACEMENT_ON) {
+        const vector = (flags & C.DISPLACEMENT_VECTOR) !== 0;
+        const texelFloats = params[C.PARAM_HEIGHT_MAP_WIDTH] * params[C.PARAM_HEIGHT_MAP_HEIGHT] * (vector ? 3 : 1);
+        displacement.texels = new Float32Array(meshIndices.slice(meshIndices.length - texelFloats).buffer);
+        meshIndices = meshIndices.slice(0, meshIndices.length - texelFloats);
+        const count = params[C.PARAM_MESH_VERTEX_COUNT], own = count * C.MESH_VERTEX_FLOATS;
+        const directionFloats = flags & C.DISPLACEMENT_DIRECTIONS ? 3 * count : 0;
+        if (directionFloats) displacement.directions = new Float32Array(meshVertices.slice(own, own + directionFloats).buffer);
+        if (vector) displacement.tangents = new Float32Array(meshVertices.slice(own + directionFloats).buffer);
+        meshVertices = meshVertices.slice(0, own);
     }
     const n = params[C.PARAM_PATCH_COUNT];
     // Emit in batches of about 128k vertices, one submit each (the emit passes' patch range), as a host that streams

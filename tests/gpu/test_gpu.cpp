@@ -547,6 +547,7 @@ namespace {
 struct DisplacementData {
     std::vector<float> texels;
     std::vector<float> directions; // 3 per mesh vertex: welded_directions
+    std::vector<float> tangents;   // vector mode: 4 per mesh vertex, uv_tangents
     rt::Displacement d;
 };
 std::unique_ptr<DisplacementData> height_texture(rt::AddressMode address, float scale, float factor_bound) {
@@ -566,8 +567,32 @@ std::unique_ptr<DisplacementData> height_texture(rt::AddressMode address, float 
     data->d.normal_step = 1.0f / 128.0f;
     return data;
 }
-// Binds the texture (and, with directions, welded_directions of the scene) to the scene's options.
+// The same for vector displacement (docs/algorithm.md §8.7): a 64 x 48 RGB texture whose three channels are
+// different uv-dependent waves plus a hash, so that seams matter and every axis of the frame moves points.
+std::unique_ptr<DisplacementData> vector_texture(rt::AddressMode address, float scale, float factor_bound) {
+    auto data = height_texture(address, scale, factor_bound);
+    const std::uint32_t width = data->d.map.width, height = data->d.map.height;
+    data->texels.resize(3 * std::size_t{width} * height);
+    for (std::uint32_t j = 0; j < height; ++j)
+        for (std::uint32_t i = 0; i < width; ++i) {
+            const auto x = static_cast<float>(i), y = static_cast<float>(j);
+            float* t = &data->texels[3 * (std::size_t{j} * width + i)];
+            t[0] = std::sin(0.37f * x + 0.11f * y) + 0.25f * detail::unit(3 * (j * width + i));
+            t[1] = std::cos(0.19f * x - 0.29f * y) + 0.25f * detail::unit(3 * (j * width + i) + 1);
+            t[2] = std::sin(0.31f * x) * std::cos(0.23f * y) + 0.25f * detail::unit(3 * (j * width + i) + 2);
+        }
+    data->d.mode = rt::DisplacementMode::vector;
+    data->d.map = {data->texels.data(), width, height, address, 3};
+    return data;
+}
+// Binds the texture (and, with directions, welded_directions of the scene; in vector mode uv_tangents of the
+// scene) to the scene's options.
 void displace(Scene& scene, DisplacementData& data, bool directions) {
+    if (data.d.mode == rt::DisplacementMode::vector) {
+        data.tangents.resize(4 * (scene.vertices.size() / rt::mesh_vertex_floats));
+        REQUIRE(rt::uv_tangents(scene.view(), data.tangents));
+        data.d.tangents = data.tangents.data();
+    }
     if (directions) {
         data.directions.resize(3 * (scene.vertices.size() / rt::mesh_vertex_floats));
         REQUIRE(rt::welded_directions(scene.view(), data.directions));
@@ -584,11 +609,14 @@ struct DisplacedCase {
     rt::AddressMode address;
     bool directions;
 };
+// vector: an RGB vector map in tangent space (§8.7) instead of the height map, on a smaller grid (cells).
 DisplacedCase displaced_case(unsigned max_factor, rt::Surface surface, rt::Pattern pattern,
-                             rt::AddressMode address, bool directions, unsigned quad_every = 0) {
+                             rt::AddressMode address, bool directions, unsigned quad_every = 0,
+                             bool vector = false, unsigned cells = 12) {
     const unsigned sweep_max = pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : max_factor;
-    DisplacedCase c{factor_sweep_grid(sweep_max, 12, surface, quad_every),
-                    height_texture(address, 0.02f, 0.004f), address, directions};
+    DisplacedCase c{factor_sweep_grid(sweep_max, cells, surface, quad_every),
+                    vector ? vector_texture(address, 0.02f, 0.004f) : height_texture(address, 0.02f, 0.004f),
+                    address, directions};
     c.scene.options.pattern = pattern;
     for (std::size_t v = 0; v < c.scene.vertices.size(); v += rt::mesh_vertex_floats) {
         c.scene.vertices[v + 6] = 2.5f * c.scene.vertices[v + 6] - 0.7f;
@@ -600,33 +628,38 @@ DisplacedCase displaced_case(unsigned max_factor, rt::Surface surface, rt::Patte
 
 // Runs the cases (one Dawn run per maximum factor) and checks each against the CPU: records, counts (grown
 // factors), barycentrics and indices exactly, positions and normals within compare's bound.
-void check_displaced_parity(unsigned max_factor,
-                            const std::vector<std::pair<const char*, DisplacedCase>>& cases) {
-    std::vector<std::pair<const char*, Scene>> scenes;
-    for (const auto& [work, c] : cases) scenes.emplace_back(work, c.scene);
-    const std::vector<PipelineOutput> outputs = run_gpu_batch(max_factor, scenes);
-    REQUIRE(outputs.size() == cases.size());
+// The largest normal component difference (compare bounds it by 1e-5).
+double max_normal_error(const PipelineOutput& cpu, const PipelineOutput& gpu) {
+    double normal_error = 0.0;
+    for (std::size_t v = 0;
+         v + vertex_words <= cpu.vertices.size() && v + vertex_words <= gpu.vertices.size();
+         v += vertex_words)
+        for (std::size_t k = 5; k < 8; ++k)
+            normal_error =
+                std::fmax(normal_error, std::fabs(static_cast<double>(bits_float(cpu.vertices[v + k])) -
+                                                  bits_float(gpu.vertices[v + k])));
+    return normal_error;
+}
+// Checks the GPU outputs of the cases (in order, from one batch) against the CPU.
+void check_displaced_outputs(unsigned max_factor,
+                             const std::vector<std::pair<const char*, DisplacedCase>>& cases,
+                             const std::vector<PipelineOutput>& outputs) {
+    REQUIRE(outputs.size() >= cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
         const Scene& scene = cases[i].second.scene;
         const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
         const PipelineOutput& gpu = outputs[i];
         const Comparison c = compare(cpu, gpu);
-        double normal_error = 0.0; // the largest normal component difference (compare bounds it by 1e-5)
-        for (std::size_t v = 0;
-             v + vertex_words <= cpu.vertices.size() && v + vertex_words <= gpu.vertices.size();
-             v += vertex_words)
-            for (std::size_t k = 5; k < 8; ++k)
-                normal_error =
-                    std::fmax(normal_error, std::fabs(static_cast<double>(bits_float(cpu.vertices[v + k])) -
-                                                      bits_float(gpu.vertices[v + k])));
+        const double normal_error = max_normal_error(cpu, gpu);
         // The growth is real: without it the counts are smaller.
         Scene plain = scene;
         plain.options.displacement = nullptr;
         const PipelineOutput undisplaced = run_cpu(tables_for(max_factor), plain);
-        std::printf("%s, max %u, %s, %s, %s, %s directions: displaced grid of %u patches (%zu quads), %u "
+        std::printf("%s, max %u, %s%s, %s, %s, %s directions: displaced grid of %u patches (%zu quads), %u "
                     "vertices (%u undisplaced); max position error %.2g, normal error %.2g\n",
-                    backend_name(), max_factor, pattern_name(scene.options.pattern),
-                    surface_name(scene.options.surface.surface),
+                    backend_name(), max_factor,
+                    scene.options.displacement->mode == rt::DisplacementMode::vector ? "vector, " : "",
+                    pattern_name(scene.options.pattern), surface_name(scene.options.surface.surface),
                     cases[i].second.address == rt::AddressMode::repeat ? "repeat" : "clamp",
                     cases[i].second.directions ? "welded" : "no", scene.patch_count(), scene.quads.size() / 4,
                     cpu.total_vertices(), undisplaced.total_vertices(), c.max_position_error, normal_error);
@@ -634,6 +667,12 @@ void check_displaced_parity(unsigned max_factor,
         CHECK(c.equal());
         CHECK(cpu.total_vertices() > undisplaced.total_vertices());
     }
+}
+void check_displaced_parity(unsigned max_factor,
+                            const std::vector<std::pair<const char*, DisplacedCase>>& cases) {
+    std::vector<std::pair<const char*, Scene>> scenes;
+    for (const auto& [work, c] : cases) scenes.emplace_back(work, c.scene);
+    check_displaced_outputs(max_factor, cases, run_gpu_batch(max_factor, scenes));
 }
 } // namespace
 
@@ -752,7 +791,7 @@ TEST_CASE("GPU displacement bad input: a NaN scale is an error") {
 
 TEST_CASE(
     "Vulkan host, displacement: a HeightFunction and texels or data that the params do not describe are "
-    "errors; an empty map is the CPU's output",
+    "errors, and an empty map is the CPU's output",
     "[vulkan]") {
     Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
     const auto data = height_texture(rt::AddressMode::repeat, 0.02f, 0.0f);
@@ -767,8 +806,9 @@ TEST_CASE(
     CHECK_THROWS_AS(gpu.tessellate(scene.view(), options), vulkan::Error);
     CHECK_THROWS_WITH(gpu.tessellate(scene.view(), pipeline_params(scene), {}, &function),
                       Catch::Contains("HeightFunction"));
-    // Vector displacement is CPU only (docs/algorithm.md §8.7): refused by the options check and by the
-    // params overload, before anything is uploaded.
+    // Vector displacement (docs/algorithm.md §8.7) runs from a 3-channel map and tangents; a VectorFunction
+    // (CPU code), a map of another channel count, missing tangents, and params whose vector flag is not the
+    // Displacement's mode are refused before anything is uploaded.
     std::vector<float> tangents(4 * std::size_t{scene.view().vertex_count}, 0.0f);
     const float rgb[3] = {0.5f, 0.5f, 0.5f};
     rt::Displacement vector = data->d;
@@ -777,10 +817,33 @@ TEST_CASE(
     vector.tangents = tangents.data();
     REQUIRE(rt::displacement_valid(vector));
     options.displacement = &vector;
-    CHECK(rt::gpu::gpu_options_status(scene.view(), options) == rt::PipelineStatus::bad_option);
-    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), options), Catch::Contains("not vector displacement"));
+    CHECK(rt::gpu::gpu_options_status(scene.view(), options) == rt::PipelineStatus::ok);
+    const auto vector_params = rt::gpu::pipeline_params(scene.view(), options);
+    CHECK((vector_params[rt::gpu::param_word::displacement_flags] & rt::gpu::displacement_flag::vector) != 0);
+    rt::Displacement vector_function = vector;
+    vector_function.vector_function = [](const void*, float u, float v) { return rt::Vec3{u, v, 0.0f}; };
+    rt::Displacement grey_map = vector; // a one-channel map read as vectors
+    grey_map.map.channels = 1;
+    rt::Displacement no_tangents = vector;
+    no_tangents.tangents = nullptr;
+    for (const rt::Displacement* bad : {&vector_function, &grey_map, &no_tangents}) {
+        options.displacement = bad;
+        CHECK(rt::gpu::gpu_options_status(scene.view(), options) == rt::PipelineStatus::bad_option);
+        CHECK_THROWS_AS(gpu.tessellate(scene.view(), options), vulkan::Error);
+        CHECK_THROWS_AS(gpu.tessellate(scene.view(), vector_params, {}, bad), vulkan::Error);
+    }
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), vector_params, {}, &vector_function),
+                      Catch::Contains("VectorFunction"));
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), vector_params, {}, &data->d),
+                      Catch::Contains("params name vector displacement but the Displacement is scalar"));
     CHECK_THROWS_WITH(gpu.tessellate(scene.view(), pipeline_params(scene), {}, &vector),
-                      Catch::Contains("vector displacement"));
+                      Catch::Contains("lack its flag"));
+    // An RGB texture larger than binding 3 allows (3 floats a texel): refused before anything is uploaded.
+    rt::Displacement huge_vector = vector;
+    huge_vector.map.width = 32768;
+    huge_vector.map.height = 16384;
+    options.displacement = &huge_vector;
+    CHECK_THROWS_WITH(gpu.tessellate(scene.view(), options), Catch::Contains("RGB texels"));
     // Params whose width x height is not the map's texel count.
     auto params = pipeline_params(scene);
     params[rt::gpu::param_word::height_map_width] += 1;
@@ -828,11 +891,75 @@ TEST_CASE("GPU displacement watertight, quads: a faceted mixed torus (every edge
 }
 #endif
 
+// ---- vector displacement (docs/algorithm.md §8.7): RGB vectors in tangent space, its own two passes ----
+// One batch (one Dawn run: its two passes compile once): small grids against the CPU, then uv seams.
+TEST_CASE(
+    "GPU vector displacement: grids equal the CPU's (CP and uniform, flat and PN, triangles and quads), "
+    "uv seams are closed with adjacency and crack without") {
+    using rt::AddressMode, rt::Pattern, rt::Surface;
+    std::vector<std::pair<const char*, DisplacedCase>> cases;
+    cases.emplace_back("vec_cp_flat",
+                       displaced_case(64, Surface::flat, Pattern::cp, AddressMode::repeat, true, 0, true, 8));
+    cases.emplace_back("vec_uniform_pn", displaced_case(64, Surface::pn_triangles, Pattern::uniform,
+                                                        AddressMode::clamp, false, 0, true, 8));
+    cases.emplace_back("vec_quads_cp", displaced_case(64, Surface::pn_triangles, Pattern::cp,
+                                                      AddressMode::clamp, true, 3, true, 8));
+    cases.emplace_back("vec_quads_uniform", displaced_case(64, Surface::flat, Pattern::uniform,
+                                                           AddressMode::repeat, false, 3, true, 8));
+    std::vector<std::pair<const char*, Scene>> scenes;
+    for (const auto& [work, c] : cases) scenes.emplace_back(work, c.scene);
+#if defined(CTESS_GPU_HAVE_MODELS)
+    // An icosphere of 20 uv charts (PN-AEN, shared normals: the undisplaced surface is closed either way) and
+    // the faceted mixed torus (every edge a uv seam and a hard edge), with their tangents from the uvs: a
+    // vector that depends on uv and a frame per vertex copy, so only the dominant vertices' frames and uvs
+    // keep them closed. Without adjacency (the control) every vertex is its own dominant vertex.
+    Scene sphere = split_normal_icosphere(1, Surface::pn_aen, 12.0f, false);
+    Scene torus = faceted_mixed_torus(Surface::pn_aen);
+    const auto sphere_data = vector_texture(AddressMode::repeat, 0.05f, 0.0f);
+    const auto torus_data = vector_texture(AddressMode::repeat, 0.05f, 0.0f);
+    displace(sphere, *sphere_data, false);
+    displace(torus, *torus_data, false);
+    Scene sphere_open = sphere, torus_open = torus;
+    sphere_open.adjacency.clear();
+    torus_open.adjacency.clear();
+    const std::size_t seams = scenes.size();
+    scenes.emplace_back("vec_seam", sphere);
+    scenes.emplace_back("vec_seam_open", sphere_open);
+    scenes.emplace_back("vec_torus", torus);
+    scenes.emplace_back("vec_torus_open", torus_open);
+#endif
+    const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
+    REQUIRE(outputs.size() == scenes.size());
+    check_displaced_outputs(64, cases, outputs);
+#if defined(CTESS_GPU_HAVE_MODELS)
+    for (std::size_t i = seams; i < scenes.size(); i += 2) {
+        const Scene &scene = scenes[i].second, &without = scenes[i + 1].second;
+        const PipelineOutput &gpu = outputs[i], &open = outputs[i + 1];
+        INFO(scenes[i].first);
+        const PipelineOutput cpu = run_cpu(rt::cp_tables_64, scene);
+        const Comparison c = compare(cpu, gpu);
+        std::printf("%s, max 64, CP, vector-displaced PN-AEN %s (%zu quads): %u vertices; max position error "
+                    "%.2g, normal error %.2g; closed %d with adjacency, %d without\n",
+                    backend_name(), scenes[i].first, scene.quads.size() / 4, gpu.total_vertices(),
+                    c.max_position_error, max_normal_error(cpu, gpu), closed_by_position(gpu) ? 1 : 0,
+                    closed_by_position(open) ? 1 : 0);
+        INFO(c.first_difference);
+        CHECK(c.equal());
+        CHECK(closed_by_position(gpu));
+        CHECK_FALSE(closed_by_position(open));
+        const Comparison oc = compare(run_cpu(rt::cp_tables_64, without), open);
+        INFO(oc.first_difference);
+        CHECK(oc.equal());
+    }
+#endif
+}
+
 // The second WebGPU implementation (Dawn's Vulkan backend on SwiftShader) runs only this case: one scene per
 // feature, each against the CPU, in one node run (tests/gpu/CMakeLists.txt). The other backends run it too.
-TEST_CASE(
-    "GPU second implementation: CP PN, uniform Phong, quads, PN-AEN and displacement, each against the CPU",
-    "[second-implementation]") {
+TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displacement and vector "
+          "displacement, each "
+          "against the CPU",
+          "[second-implementation]") {
     std::vector<std::pair<const char*, Scene>> scenes;
     scenes.emplace_back("one_cp", factor_sweep_grid(64, 24, rt::Surface::pn_triangles));
     Scene uniform = factor_sweep_grid(rt::uniform_tables.max_factor, 24, rt::Surface::phong);
@@ -846,15 +973,22 @@ TEST_CASE(
     const DisplacedCase displaced =
         displaced_case(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::AddressMode::repeat, true, 3);
     scenes.emplace_back("one_displaced", displaced.scene);
+    // Vector displacement (§8.7) on triangles: SwiftShader compiles the vector quad pass for about a minute
+    // on this 2-core machine; the other backends run the quads ("GPU vector displacement").
+    const DisplacedCase vector = displaced_case(64, rt::Surface::pn_triangles, rt::Pattern::cp,
+                                                rt::AddressMode::repeat, true, 0, true, 8);
+    scenes.emplace_back("one_vector_displaced", vector.scene);
     const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
     REQUIRE(outputs.size() == scenes.size());
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const auto& [work, scene] = scenes[i];
         const PipelineOutput& gpu = outputs[i];
-        const Comparison c = compare(run_cpu(rt::cp_tables_64, scene), gpu);
-        std::printf("%s, %s: %u patches (%zu quads), %u vertices; max position error %.2g\n", backend_name(),
-                    work, scene.patch_count(), scene.quads.size() / 4, gpu.total_vertices(),
-                    c.max_position_error);
+        const PipelineOutput cpu = run_cpu(rt::cp_tables_64, scene);
+        const Comparison c = compare(cpu, gpu);
+        std::printf(
+            "%s, %s: %u patches (%zu quads), %u vertices; max position error %.2g, normal error %.2g\n",
+            backend_name(), work, scene.patch_count(), scene.quads.size() / 4, gpu.total_vertices(),
+            c.max_position_error, max_normal_error(cpu, gpu));
         INFO(work << ": " << c.first_difference);
         CHECK(c.equal());
     }

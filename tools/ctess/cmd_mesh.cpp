@@ -193,9 +193,6 @@ GpuReference gpu_reference(const rt::CpTableSet& cp, const rt::UniformTableSet& 
                            const rt::MeshView& view, rt::PipelineOptions options, const std::string& in) {
     GpuReference g;
     if (options.dice.mode != rt::FactorMode::camera) return g;
-    // No shader runs vector displacement yet (docs/shaders.md, "Displacement").
-    if (options.displacement != nullptr && options.displacement->mode == rt::DisplacementMode::vector)
-        return g;
     const auto start = Clock::now();
     if (options.pattern == rt::Pattern::uniform_split) options.pattern = rt::Pattern::uniform;
     const UnweldedOutput output = unwelded_output(cp, uniform, view, options, in, 0xFFFFFFFFu / 3);

@@ -46,7 +46,9 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
                                                            "_emit_quad_vertices.spv",
                                                            "_emit_quad_triangles.spv",
                                                            "_emit_displaced_vertices.spv",
-                                                           "_emit_displaced_quad_vertices.spv"};
+                                                           "_emit_displaced_quad_vertices.spv",
+                                                           "_emit_vector_displaced_vertices.spv",
+                                                           "_emit_vector_displaced_quad_vertices.spv"};
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -203,19 +205,21 @@ void MeshPipeline::record_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::
 }
 
 void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                               std::uint32_t quad_patches, std::uint32_t max_workgroups,
-                               bool displaced) const {
+                               std::uint32_t quad_patches, std::uint32_t max_workgroups, bool displaced,
+                               bool vector) const {
     if (triangle_patches == 0 && quad_patches == 0) return;
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
     // Vertices, then triangles, of the triangles (passes 2, 3) and of the quads (4, 5); displaced vertices
-    // from their own passes (6, 7), so that undisplaced meshes run no displacement code (docs/shaders.md).
+    // from their own passes (6, 7; vector displacement 8, 9), so that undisplaced meshes run no displacement
+    // code and each displaced pass one mode's (docs/shaders.md).
     const std::uint32_t count[2] = {triangle_patches, quad_patches};
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (count[kind] == 0) continue;
         const std::uint32_t groups = rt::gpu::emit_workgroups(count[kind], max_workgroups);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(displaced ? 6 + kind : 2 + 2 * kind));
+        const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
         vkCmdDispatch(cmd, groups, 1, 1);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(3 + 2 * kind));
         vkCmdDispatch(cmd, groups, 1, 1);
@@ -430,7 +434,7 @@ Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& o
         throw Error(
             st == rt::PipelineStatus::bad_option
                 ? "the shaders run the cp or uniform pattern and camera factors, without position_ids, and "
-                  "displace by a valid height map only (not a HeightFunction, not vector displacement) "
+                  "displace by a valid height or vector map only (not a HeightFunction or VectorFunction) "
                   "(docs/shaders.md, \"Hosts\")"
                 : rt::pipeline_status_message(st));
     }
@@ -447,19 +451,24 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     // Displacement (docs/shaders.md, "Displacement"): the params must describe the data given.
     const std::uint32_t disp = params[pw::displacement_flags];
     const bool displace = (disp & flag::on) != 0;
+    const bool vector = displace && (disp & flag::vector) != 0;
     const std::uint64_t texel_count =
         std::uint64_t{params[pw::height_map_width]} * params[pw::height_map_height];
     if (displace) {
         if (displacement == nullptr) throw Error("the params displace but no rt::Displacement is given");
         if (displacement->function != nullptr)
             throw Error("a HeightFunction is CPU code: the shaders displace by a height map only");
-        if (displacement->mode != rt::DisplacementMode::scalar)
-            throw Error("vector displacement (DisplacementMode::vector) runs on the CPU only: the shaders "
-                        "displace by a scalar height map (docs/algorithm.md §8.7)");
+        if (displacement->vector_function != nullptr)
+            throw Error("a VectorFunction is CPU code: the shaders displace by a vector map only");
         if (!rt::displacement_valid(*displacement))
             throw Error(
                 "the Displacement is not valid (rt::displacement_valid: finite numbers, factor_bound >= 0, "
-                "normal_step in (0, 0.5])");
+                "normal_step in (0, 0.5], a map of the mode's channels, tangents in vector mode)");
+        // Vector mode (docs/algorithm.md §8.7) reads RGB texels and tangents: the params' flag must say so.
+        if (vector != (displacement->mode == rt::DisplacementMode::vector))
+            throw Error(vector ? "the params name vector displacement but the Displacement is scalar"
+                               : "the Displacement is vector mode but the params lack its flag "
+                                 "(rt::gpu::displacement_flag::vector)");
         const rt::HeightMap& map = displacement->map;
         const bool empty = map.texels == nullptr || map.width == 0 || map.height == 0;
         if ((empty ? 0 : std::uint64_t{map.width} * map.height) != texel_count)
@@ -510,26 +519,38 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                  : params[pw::surface] == static_cast<std::uint32_t>(rt::Surface::pn_aen) && mesh.adjacency;
     const std::size_t triangle_bytes = std::size_t{n - quads} * 12, quad_bytes = std::size_t{quads} * 16;
     const std::size_t adjacency_bytes = aen ? (std::size_t{n - quads} + 2 * std::size_t{quads}) * 48 : 0;
-    const std::uint64_t texel_bytes = displace ? 4 * texel_count : 0;
+    const std::uint64_t texel_bytes =
+        displace ? 4 * std::uint64_t{rt::gpu::texel_floats(*displacement)} * texel_count : 0;
     const std::uint64_t index_binding = triangle_bytes + quad_bytes + adjacency_bytes + texel_bytes;
     if (index_binding > d.limits.maxStorageBufferRange)
         throw Error("binding 3 (indices, adjacency and " + std::to_string(displace ? texel_count : 0) +
-                    " height-map texels) would be " + std::to_string(index_binding) +
+                    (vector ? " RGB" : " height-map") + " texels) would be " + std::to_string(index_binding) +
                     " bytes, past this device's maxStorageBufferRange (" +
+                    std::to_string(d.limits.maxStorageBufferRange) + ")");
+    // Binding 2: the mesh vertices, then with displacement directions (3 floats per vertex) and in vector
+    // mode tangents (4 per vertex) for the params' vertex count, from vertex word params' vertex count x 8 on
+    // (vertices past that count are never read).
+    const std::size_t vertex_bytes = std::size_t{mesh.vertex_count} * rt::mesh_vertex_floats * 4;
+    const std::size_t frame_vertices = params[pw::mesh_vertex_count];
+    const bool directions = displace && (disp & flag::directions) != 0;
+    const std::size_t direction_bytes = directions ? frame_vertices * 12 : 0;
+    const std::size_t tangent_bytes = vector ? frame_vertices * 16 : 0;
+    const std::size_t frame_at = frame_vertices * rt::mesh_vertex_floats * 4;
+    const std::uint64_t vertex_binding =
+        std::max<std::uint64_t>(vertex_bytes, frame_at + direction_bytes + tangent_bytes);
+    if (vertex_binding > d.limits.maxStorageBufferRange)
+        throw Error("binding 2 (mesh vertices, directions and tangents) would be " +
+                    std::to_string(vertex_binding) + " bytes, past this device's maxStorageBufferRange (" +
                     std::to_string(d.limits.maxStorageBufferRange) + ")");
     const std::uint64_t patch_words = rt::gpu::patch_buffer_words(n);
     const Device::Buffer b_params = make(sizeof params, params.data(), sizeof params);
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
-    const std::size_t vertex_bytes = std::size_t{mesh.vertex_count} * rt::mesh_vertex_floats * 4;
-    // Binding 2: the mesh vertices, then with displacement directions 3 floats per vertex from vertex word
-    // params' vertex count x 8 on (vertices past that count are never read).
-    const std::size_t direction_vertices = params[pw::mesh_vertex_count];
-    const bool directions = displace && (disp & flag::directions) != 0;
-    const Device::Buffer b_mesh =
-        make(vertex_bytes + (directions ? direction_vertices * 12 : 0), mesh.vertices, vertex_bytes);
+    const Device::Buffer b_mesh = make(vertex_binding, mesh.vertices, vertex_bytes);
     if (directions)
-        std::memcpy(static_cast<char*>(b_mesh.mapped) + direction_vertices * rt::mesh_vertex_floats * 4,
-                    displacement->directions, direction_vertices * 12);
+        std::memcpy(static_cast<char*>(b_mesh.mapped) + frame_at, displacement->directions, direction_bytes);
+    if (vector)
+        std::memcpy(static_cast<char*>(b_mesh.mapped) + frame_at + direction_bytes, displacement->tangents,
+                    tangent_bytes);
     const Device::Buffer b_indices = make(index_binding, mesh.indices, triangle_bytes);
     auto* index_bytes = static_cast<char*>(b_indices.mapped);
     if (quad_bytes != 0) std::memcpy(index_bytes + triangle_bytes, mesh.quad_indices, quad_bytes);
@@ -597,7 +618,8 @@ Output Runner::tessellate(const rt::MeshView& mesh,
                             triangles = n - quads;
         const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
         d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
-                                end > quad_first ? end - quad_first : 0, run.max_workgroups, displace);
+                                end > quad_first ? end - quad_first : 0, run.max_workgroups, displace,
+                                vector);
     });
     out.vertices.resize(out.totals.vertices);
     if (!out.vertices.empty())

@@ -44,8 +44,9 @@ inline constexpr std::uint32_t quad_count = 11; // the last quad_count patches a
 inline constexpr std::uint32_t quad_rule = 12;  // rt::QuadRule
 // Displacement (docs/shaders.md, "Displacement"; docs/algorithm.md §8): the displacement_flag bits, then
 // rt::Displacement's numbers (floats as bits) and the height map's size and rt::AddressMode. The directions
-// (3 floats per mesh vertex) follow the mesh vertices in binding 2, the texels (f32 bits, row-major) the
-// indices and the adjacency in binding 3.
+// (3 floats per mesh vertex), then in vector mode the tangents (4 per mesh vertex), follow the mesh vertices
+// in binding 2; the texels (f32 bits, row-major; 3 floats each in vector mode) the indices and the adjacency
+// in binding 3.
 inline constexpr std::uint32_t displacement_flags = 13;
 inline constexpr std::uint32_t displacement_scale = 14;
 inline constexpr std::uint32_t displacement_factor = 15;
@@ -65,7 +66,16 @@ namespace displacement_flag {
 inline constexpr std::uint32_t on = 1;         // displace (the other displacement words are read only then)
 inline constexpr std::uint32_t directions = 2; // binding 2 holds the directions after the mesh vertices
 inline constexpr std::uint32_t adjacency = 4;  // binding 3 holds the adjacency (12 per face triangle)
+// DisplacementMode::vector (docs/algorithm.md §8.7): the texels are RGB (3 floats each) and binding 2 holds
+// the tangents (4 floats per mesh vertex) after the mesh vertices and the directions.
+inline constexpr std::uint32_t vector = 8;
 } // namespace displacement_flag
+
+// Floats per texel of a displacement in binding 3 (docs/shaders.md, "Displacement"): 1 for a height, 3 for an
+// RGB vector (DisplacementMode::vector).
+inline std::uint32_t texel_floats(const Displacement& d) {
+    return d.mode == DisplacementMode::vector ? 3u : 1u;
+}
 
 // Workgroup sizes. The setup pass's is the C++ limit's (rt::max_pipeline_patches counts in it); the prefix
 // sum is one workgroup of 128 (WebGPU compatibility mode allows at most 128 invocations); the emit passes run
@@ -103,9 +113,9 @@ constexpr std::uint32_t emit_workgroups(std::uint32_t patch_count,
 // patterns are CPU only: a host refuses them, see gpu_options_status), the emit range covering every patch.
 // Binding 3 then holds mesh.indices (3 per triangle) followed by mesh.quad_indices (4 per quad) and, for
 // PN-AEN or displacement, mesh.adjacency (12 per face triangle: the triangles, then each quad's two;
-// docs/shaders.md, "PN-AEN"), then with displacement the height map's texels; binding 2 holds the mesh
-// vertices, then with displacement and Displacement::directions the directions (docs/shaders.md,
-// "Displacement").
+// docs/shaders.md, "PN-AEN"), then with displacement the map's texels (texel_floats each); binding 2 holds
+// the mesh vertices, then with displacement and Displacement::directions the directions, then in vector mode
+// Displacement::tangents (docs/shaders.md, "Displacement").
 inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshView& mesh,
                                                                     const PipelineOptions& options) {
     const auto bits = [](float f) {
@@ -130,9 +140,10 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
     p[param_word::quad_rule] = static_cast<std::uint32_t>(options.quad_rule);
     if (const Displacement* d = options.displacement; d != nullptr) {
         const bool empty = d->map.texels == nullptr || d->map.width == 0 || d->map.height == 0;
-        p[param_word::displacement_flags] = displacement_flag::on |
-                                            (d->directions != nullptr ? displacement_flag::directions : 0u) |
-                                            (mesh.adjacency != nullptr ? displacement_flag::adjacency : 0u);
+        p[param_word::displacement_flags] =
+            displacement_flag::on | (d->directions != nullptr ? displacement_flag::directions : 0u) |
+            (mesh.adjacency != nullptr ? displacement_flag::adjacency : 0u) |
+            (d->mode == DisplacementMode::vector ? displacement_flag::vector : 0u);
         p[param_word::displacement_scale] = bits(d->scale);
         p[param_word::displacement_factor] = bits(d->factor);
         p[param_word::displacement_offset] = bits(d->offset);
@@ -145,17 +156,17 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
     return p;
 }
 
-// Whether the shaders run mesh with options: ok, or bad_option for what they do not run yet (the
-// uniform_split and D3D11 patterns, factors other than FactorMode::camera, MeshView::position_ids: the
-// shaders order shared edges by vertex index, so a seam between different indices would not get the CPU's
-// bits; displacement by a HeightFunction, which is CPU code; vector displacement, DisplacementMode::vector,
-// which the shaders do not port yet: docs/algorithm.md §8.7)
-// and for a QuadRule outside its enum, a Displacement that displacement_valid refuses (as the CPU
-// pipeline does), or too_many_patches.
+// Whether the shaders run mesh with options: ok, or bad_option for what they do not run (the uniform_split
+// and D3D11 patterns, factors other than FactorMode::camera, MeshView::position_ids: the shaders order shared
+// edges by vertex index, so a seam between different indices would not get the CPU's bits; displacement by a
+// HeightFunction or a VectorFunction, which are CPU code) and for a QuadRule outside its enum, a
+// Displacement that displacement_valid refuses (as the CPU pipeline does: among others vector mode without
+// tangents, a map whose channel count is not the mode's), or too_many_patches. Both displacement modes run
+// (scalar heights, docs/algorithm.md §8.6; RGB vectors in tangent space, §8.7).
 inline PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOptions& options) {
     if (mesh.position_ids != nullptr) return PipelineStatus::bad_option;
     if (const Displacement* d = options.displacement; d != nullptr)
-        if (d->function != nullptr || d->mode != DisplacementMode::scalar || !displacement_valid(*d))
+        if (d->function != nullptr || d->vector_function != nullptr || !displacement_valid(*d))
             return PipelineStatus::bad_option;
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;

@@ -54,15 +54,16 @@ std::string shader_file(const std::string& shader_dir, unsigned max_factor, cons
 std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsigned max_factor,
                                            rt::Pattern pattern);
 
-// The eight compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles and
-// of the quads, displaced vertices of both) on a device, with the descriptor set layout of rt::gpu::binding
-// (seven storage buffers, compute stage). Move-only; destroys what it created, so destroy it before the
-// device. Creation::all_now (the default) creates every pipeline in the constructor; on_first_use creates the
-// two counting passes there and each emit pass when a record_emit first needs it, so a host that never
-// displaces or never sees a quad never compiles those passes (the driver's compile of a displaced pass is the
-// slow one), at the price of a compile inside that record_emit; either way every SPIR-V file is read by the
-// constructor. With on_first_use, record_emit throws Error if the driver fails to create a pass; the command
-// buffer then holds the passes recorded before it (reset it). Not for use from two threads at once.
+// The ten compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles and
+// of the quads, displaced vertices of both, vector-displaced vertices of both) on a device, with the
+// descriptor set layout of rt::gpu::binding (seven storage buffers, compute stage). Move-only; destroys what
+// it created, so destroy it before the device. Creation::all_now (the default) creates every pipeline in the
+// constructor; on_first_use creates the two counting passes there and each emit pass when a record_emit first
+// needs it, so a host that never displaces or never sees a quad never compiles those passes (the driver's
+// compile of a displaced pass is the slow one), at the price of a compile inside that record_emit; either way
+// every SPIR-V file is read by the constructor. With on_first_use, record_emit throws Error if the driver
+// fails to create a pass; the command buffer then holds the passes recorded before it (reset it). Not for use
+// from two threads at once.
 class MeshPipeline {
   public:
     enum class Creation { all_now, on_first_use };
@@ -96,12 +97,14 @@ class MeshPipeline {
     // triangles and quad_patches quads (a pass with none is skipped), with a barrier before (for the counts);
     // to draw the outputs, add a compute-to-vertex-input (and index-read) barrier after it. displaced: the
     // params displace (rt::gpu::displacement_flag::on); the vertices then come from the displaced passes (the
-    // others write no vertex for such params; docs/shaders.md, "Displacement").
+    // others write no vertex for such params; docs/shaders.md, "Displacement"). vector: the params displace
+    // by a vector map (rt::gpu::displacement_flag::vector, docs/algorithm.md §8.7), whose vertices come from
+    // the vector-displaced passes (the height passes write none for such params, and the reverse).
     void record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
                      std::uint32_t quad_patches, std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
-                     bool displaced = false) const;
+                     bool displaced = false, bool vector = false) const;
 
-    static constexpr unsigned passes = 8;
+    static constexpr unsigned passes = 10;
 
   private:
     void destroy() noexcept;
@@ -113,7 +116,8 @@ class MeshPipeline {
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
     mutable VkShaderModule modules_[passes] = {};
     mutable VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads,
-                                                // displaced vertices of triangles and of quads
+                                                // displaced vertices of triangles and of quads,
+                                                // vector-displaced vertices of both
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
@@ -146,9 +150,11 @@ class Runner {
     // the outputs are allocated.
     Output tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& options, RunOptions run = {});
     // The same with the params words given (a host that sets them itself, e.g. tests of the params' range).
-    // Params that displace (rt::gpu::displacement_flag::on) need displacement: its height map (whose width x
-    // height must be the params', an empty map 0 x 0) and, when the params' flags name them, its directions
-    // and the mesh's adjacency are uploaded (docs/shaders.md, "Displacement"); a HeightFunction throws.
+    // Params that displace (rt::gpu::displacement_flag::on) need displacement: its map (whose width x height
+    // must be the params', an empty map 0 x 0; 3 floats a texel in vector mode) and, when the params' flags
+    // name them, its directions and the mesh's adjacency are uploaded, and in vector mode (whose flag must
+    // match Displacement::mode) its tangents (docs/shaders.md, "Displacement"); a HeightFunction or a
+    // VectorFunction throws.
     Output tessellate(const rt::MeshView& mesh,
                       const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
                       RunOptions run = {}, const rt::Displacement* displacement = nullptr);

@@ -1,0 +1,63 @@
+// The WebGPU host's refusals of displacement data that the params do not describe (docs/shaders.md,
+// "Displacement"), on Dawn's null backend: run() throws before it dispatches anything, so no driver is needed.
+//   node host_checks.mjs SHADER_DIR
+// Exit status 0 when every check holds, else 1 with the failed checks.
+import { readFileSync } from 'node:fs';
+import { pathToFileURL } from 'node:url';
+import { create, globals } from 'webgpu';
+
+Object.assign(globalThis, globals);
+const [dir] = process.argv.slice(2);
+const gpu = create(['backend=null']); // kept referenced for the whole run (docs/shaders.md, "Running them")
+const adapter = await gpu.requestAdapter();
+const { MeshPipeline, requiredLimits } = await import(pathToFileURL(`${dir}/ctess_webgpu.mjs`).href);
+const device = await adapter.requestDevice({ requiredLimits: requiredLimits(adapter) });
+const load = (name) => {
+    const bytes = readFileSync(`${dir}/${name}`);
+    return Promise.resolve(name.endsWith('.bin') ? bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.length)
+                                                 : bytes.toString('utf8'));
+};
+const pipeline = await MeshPipeline.create(device, { maxFactor: 64, load });
+const C = pipeline.constants;
+
+let failed = 0;
+const check = (what, ok) => {
+    if (!ok) failed++;
+    console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+};
+const throws = async (what, run, pattern) => {
+    try {
+        await run();
+        check(`${what}: throws`, false);
+    } catch (e) {
+        check(`${what}: throws "${e.message}"`, pattern.test(e.message));
+    }
+};
+
+// One triangle of three mesh vertices (position, normal, uv).
+const vertices = new Float32Array([0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1]);
+const indices = new Uint32Array([0, 1, 2]);
+const base = { patchCount: 1, surface: 'flat', factorScale: 10, eye: [0, 0, 5], meshVertexCount: 3 };
+const vector = pipeline.params({ ...base, displacement: { vector: true, width: 2, height: 1 } });
+check('params: displacement.vector sets DISPLACEMENT_VECTOR',
+      (vector[C.PARAM_DISPLACEMENT_FLAGS] & (C.DISPLACEMENT_ON | C.DISPLACEMENT_VECTOR)) ===
+          (C.DISPLACEMENT_ON | C.DISPLACEMENT_VECTOR));
+const scalar = pipeline.params({ ...base, displacement: { width: 2, height: 1 } });
+check('params: a height map leaves DISPLACEMENT_VECTOR clear', (scalar[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_VECTOR) === 0);
+const tangents = new Float32Array(12);
+// Vector mode reads 3 floats a texel: width x height floats are a height map's, not enough.
+await throws('vector map given width x height floats', () => pipeline.run(vector, vertices, indices, { texels: new Float32Array(2), tangents }),
+             /2 texel floats given for a 2 x 1 RGB vector map/);
+await throws('vector map given one float too many', () => pipeline.run(vector, vertices, indices, { texels: new Float32Array(7), tangents }),
+             /7 texel floats/);
+await throws('height map given 3 floats a texel', () => pipeline.run(scalar, vertices, indices, { texels: new Float32Array(6) }),
+             /6 texel floats given for a 2 x 1 height map/);
+await throws('vector mode without tangents', () => pipeline.run(vector, vertices, indices, { texels: new Float32Array(6) }),
+             /no tangent floats given for 3 mesh vertices/);
+await throws('vector mode with 4 x 3 - 1 tangent floats', () => pipeline.run(vector, vertices, indices, { texels: new Float32Array(6), tangents: new Float32Array(11) }),
+             /11 tangent floats given for 3 mesh vertices/);
+await throws('vector mode with tangents that are not a Float32Array', () => pipeline.run(vector, vertices, indices, { texels: new Float32Array(6), tangents: [0, 0, 0, 1] }),
+             /tangent floats/);
+device.destroy();
+console.log(`${failed ? 'FAILED' : 'passed'}: ${failed} failed`);
+process.exit(failed ? 1 : 0);
