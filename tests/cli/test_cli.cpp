@@ -501,7 +501,7 @@ std::uint32_t spec_edge_parameter(std::uint32_t i, std::uint32_t f) {
 
 } // namespace
 
-TEST_CASE("cli: uniform factors are rounded to the nearest integer, halves up; above N the patch splits",
+TEST_CASE("cli: uniform factors are rounded to the nearest integer, halves up, above N the patch splits",
           "[cli][uniform]") {
     struct Case {
         std::string factors;

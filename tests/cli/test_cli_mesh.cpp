@@ -132,7 +132,7 @@ TEST_CASE("ctess mesh: PN-AEN closes the cracks plain PN opens at split normals 
     CHECK(aen == flat);
 }
 
-TEST_CASE("ctess mesh: OBJ and glTF outputs read back as the same closed mesh; PLY is sized by its header",
+TEST_CASE("ctess mesh: OBJ and glTF outputs read back as the same closed mesh, PLY is sized by its header",
           "[cli][mesh]") {
     const std::string in = scratch("mixed_cube_out.obj");
     write_file(in, mixed_cube_obj());

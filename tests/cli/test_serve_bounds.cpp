@@ -22,7 +22,7 @@ int count_of(const std::string& text, const std::string& part) {
 
 } // namespace
 
-TEST_CASE("serve: br is never chosen; gzip only up to 256 KiB, whatever the client accepts", "[cli][serve]") {
+TEST_CASE("serve: br is never chosen, gzip only up to 256 KiB, whatever the client accepts", "[cli][serve]") {
     const ServeProcess server;
     REQUIRE(server.port > 0);
     const int port = server.port;

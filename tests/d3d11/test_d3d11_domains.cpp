@@ -477,7 +477,7 @@ TEST_CASE("d3d11 domains: isoline lines and segments", "[d3d11][domains]") {
 
 // ---- winding and modes ----
 
-TEST_CASE("d3d11 domains: CCW is CW with the last two indices swapped; pow2 is integer", "[d3d11][domains]") {
+TEST_CASE("d3d11 domains: CCW is CW with the last two indices swapped, pow2 is integer", "[d3d11][domains]") {
     FactorSource src;
     src.state = 777;
     const auto swapped = [](std::vector<std::uint32_t> v) {
@@ -592,7 +592,7 @@ TEST_CASE("d3d11 domains: bad factors that clamp", "[d3d11][domains][bad-input]"
 
 // docs/api.md, "Sized outputs": a fill into a span one entry too short writes nothing and still returns the
 // counts; every family's default winding is counter-clockwise.
-TEST_CASE("d3d11 tessellators: a short span gets nothing written; the default winding is ccw",
+TEST_CASE("d3d11 tessellators: a short span gets nothing written, the default winding is ccw",
           "[d3d11][bad_input]") {
     constexpr Point sentinel{0xDEADBEEFu, 0xFEEDFACEu};
     auto check = [&](auto&& fill) {

@@ -83,7 +83,7 @@ TEST_CASE("displacement on a flat triangle: exact heights along the normal, grad
                       ramp.vertices.size() * sizeof(rt::TessVertex)) == 0);
 }
 
-TEST_CASE("displacement grows edge factors by its bound (§8.4); bad displacement options are refused") {
+TEST_CASE("displacement grows edge factors by its bound (§8.4), bad displacement options are refused") {
     const rt::MeshView mesh = unit_triangle();
     rt::PipelineOptions options = constant_factor(4.0f, rt::Surface::flat);
     rt::Displacement d;

@@ -80,7 +80,7 @@ rt::Vec3 normal_ripple(const void*, float u, float v) {
 
 } // namespace
 
-TEST_CASE("uv_tangents: Lengyel's tangent and handedness on flat charts; bad input writes nothing") {
+TEST_CASE("uv_tangents: Lengyel's tangent and handedness on flat charts, bad input writes nothing") {
     for (const bool quad : {false, true})
         for (const bool mirrored : {false, true}) {
             INFO("quad " << quad << " mirrored " << mirrored);
@@ -432,7 +432,7 @@ std::vector<std::uint8_t> png(int w, int h, int channels, const std::vector<std:
 
 } // namespace
 
-TEST_CASE("load_vector_map: RGB and RGBA keep red, green, blue; grey is an error (docs/models.md)") {
+TEST_CASE("load_vector_map: RGB and RGBA keep red, green, blue, grey is an error (docs/models.md)") {
     // 2 x 1 RGB: (0, 51, 255), (255, 102, 0); RGBA adds alpha, which is dropped.
     const std::vector<std::uint8_t> rgb = {0, 51, 255, 255, 102, 0};
     const std::vector<float> expected = {0.0f, 51.0f / 255.0f, 1.0f, 1.0f, 102.0f / 255.0f, 0.0f};

@@ -105,7 +105,7 @@ TEST_CASE("mesh pipeline: records, prefix sums and emitted patches match CpPatch
     }
 }
 
-TEST_CASE("mesh pipeline: flat vertices lie on the base triangle; corners are copied exactly") {
+TEST_CASE("mesh pipeline: flat vertices lie on the base triangle, corners are copied exactly") {
     const Scene scene = factor_sweep_grid(64, 4, rt::Surface::flat);
     const PipelineOutput out = run_cpu(rt::cp_tables_64, scene);
     for (std::uint32_t p = 0; p < scene.patch_count(); ++p) {
@@ -234,7 +234,7 @@ TEST_CASE("mesh pipeline, PN-AEN bad input: an adjacency index past the vertex c
     CHECK_FALSE(as_good); // the hard edge's averaged control points are gone
 }
 
-TEST_CASE("setup block: counts equal CpPatch's for every line-state triple; skips fit their words") {
+TEST_CASE("setup block: counts equal CpPatch's for every line-state triple, skips fit their words") {
     for (unsigned max_factor : {64u, 256u}) {
         const rt::CpTableSet& tables = tables_for(max_factor);
         const unsigned tokens = cp::token_count(cp::pattern_max_factor(max_factor));

@@ -229,7 +229,7 @@ TEST_CASE("uniform_split at 32,768: quads and the welded output are refused from
     }
 }
 
-TEST_CASE("uniform_split needs the uniform tables; an unknown pattern is refused") {
+TEST_CASE("uniform_split needs the uniform tables, an unknown pattern is refused") {
     const Model m = tetrahedron();
     rt::PipelineOptions o;
     o.pattern = rt::Pattern::uniform_split;

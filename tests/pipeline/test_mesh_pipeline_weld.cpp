@@ -206,7 +206,7 @@ TEST_CASE("welded output (§7.4): equals the unwelded output welded by bits, clo
     }
 }
 
-TEST_CASE("welded output: a uv seam keeps its own vertices; open boundaries are the input's, subdivided") {
+TEST_CASE("welded output: a uv seam keeps its own vertices, open boundaries are the input's, subdivided") {
     for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
         for (const Faces faces : {Faces::triangles, Faces::quads, Faces::mixed}) {
             const Model m = torus(8, 4, faces, true);
@@ -225,7 +225,7 @@ TEST_CASE("welded output: a uv seam keeps its own vertices; open boundaries are 
     }
 }
 
-TEST_CASE("welded output: degenerate triangles are dropped unless kept; spans and tampered tables refused") {
+TEST_CASE("welded output: degenerate triangles are dropped unless kept, spans and tampered tables refused") {
     const Model m = torus(12, 5, Faces::mixed);
     const rt::MeshView mesh = m.view();
     rt::PipelineOptions o = camera(rt::Pattern::cp, {0.5f, -9.0f, 3.0f}, 2.0f);
