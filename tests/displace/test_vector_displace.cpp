@@ -366,7 +366,8 @@ TEST_CASE("vector displacement: the map's bound and RGB sampling (§8.7)") {
     CHECK((bad.x == 0.0f && bad.y == 0.0f && bad.z == 0.0f));
 }
 
-TEST_CASE("vector displacement: bad options are refused (bad_option), the GPU refuses vector mode") {
+TEST_CASE(
+    "vector displacement: bad options are refused (bad_option), the GPU takes a vector map, not a function") {
     const FlatSquare s = flat_square(true, false);
     std::vector<float> tangents(16);
     REQUIRE(rt::uv_tangents(s.view(), tangents));
@@ -408,12 +409,19 @@ TEST_CASE("vector displacement: bad options are refused (bad_option), the GPU re
     rt::Displacement empty = good;
     empty.map = {};
     CHECK(rt::displacement_valid(empty));
-    // The shaders do not port vector mode: gpu_options_status refuses it (the CPU part lands alone).
+    // The shaders run vector mode from an RGB map (docs/shaders.md, "Vector displacement"); a VectorFunction
+    // is CPU code, and gpu_options_status refuses it.
     rt::PipelineOptions gpu;
     gpu.dice.mode = rt::FactorMode::camera;
     gpu.displacement = &scalar;
     CHECK(rt::gpu::gpu_options_status(s.view(), gpu) == rt::PipelineStatus::ok);
     gpu.displacement = &good;
+    CHECK(rt::gpu::gpu_options_status(s.view(), gpu) == rt::PipelineStatus::ok);
+    rt::Displacement function = good;
+    function.map = {};
+    function.vector_function = &constant_vector;
+    REQUIRE(rt::displacement_valid(function));
+    gpu.displacement = &function;
     CHECK(rt::gpu::gpu_options_status(s.view(), gpu) == rt::PipelineStatus::bad_option);
 }
 
