@@ -3,24 +3,29 @@
 
     python3 bench/spirv_stats.py SHADER_DIR [SHADER_DIR ...]
 
-For each emit pass of max 64: the instructions of the per-patch setup an emit workgroup runs (the call tree of
+For each pass of max 64 (the passes of ctess_mesh_64.layout.json, in its order): the instructions of the per-patch setup an emit workgroup runs (the call tree of
 `record_patch`, as glslang emits it, one function per GLSL function), and the whole pass after `spirv-opt -O`
 (everything inlined into main). Then, per pattern, the call tree of the function one invocation runs per
 output element (CP: patch_vertex / patch_triangle, uniform density: uniform_vertex / uniform_triangle): the
 static instructions per output vertex and per output triangle, beside the per-patch setup above (surface
-evaluation excluded; loops counted once). Needs spirv-dis and spirv-opt (Debian spirv-tools).
+evaluation excluded; loops counted once), and for the displaced passes the call tree of the displacement one
+invocation runs per output vertex (scalar: a height along the direction, vector: an RGB offset in the tangent
+frame; docs/algorithm.md §8). Needs spirv-dis and spirv-opt (Debian spirv-tools).
 """
-import os
+import json
 import re
 import subprocess
 import sys
 import tempfile
 
-PASSES = ["patch_setup", "emit_vertices", "emit_triangles", "emit_quad_vertices", "emit_quad_triangles",
-          "emit_displaced_vertices", "emit_displaced_quad_vertices"]
 # The function one invocation runs per output element of a pass, per pattern (shaders/ctess_mesh.comp.glsl).
 ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex"},
            "emit_triangles": {"cp": "patch_triangle", "uniform": "uniform_triangle"}}
+# The displacement one invocation of a displaced pass runs per output vertex.
+DISPLACEMENT = {"emit_displaced_vertices": "displace_triangle_point",
+                "emit_displaced_quad_vertices": "displace_quad_point",
+                "emit_vector_displaced_vertices": "displace_triangle_vector",
+                "emit_vector_displaced_quad_vertices": "displace_quad_vector"}
 NOT_INSTRUCTIONS = {"OpFunction", "OpFunctionParameter", "OpFunctionEnd", "OpLabel", "OpLine", "OpNoLine"}
 
 
@@ -76,6 +81,12 @@ def optimized_size(spv):
         return sum(n for n, _ in functions(tmp.name).values())
 
 
+def passes(d):
+    """The pass names of max 64, from the generated layout (one source with the hosts)."""
+    with open(f"{d}/ctess_mesh_64.layout.json") as f:
+        return [x["name"] for x in json.load(f)["passes"]]
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
@@ -83,10 +94,8 @@ def main():
     print("| shaders | pass | record_patch call tree (instructions, functions) | whole pass after spirv-opt -O |")
     print("|---|---|---|---|")
     for d in sys.argv[1:]:
-        for p in PASSES:
+        for p in passes(d):
             spv = f"{d}/ctess_mesh_64_{p}.spv"
-            if not os.path.exists(spv):  # a build from before the shaders' rename
-                spv = f"{d}/ctess_cp_64_{p}.spv"
             funcs = functions(spv)
             root = next((f for f in funcs if f.startswith("%record_patch")), None)
             setup = "—" if root is None else "%d, %d" % tree_size(funcs, root)
@@ -97,13 +106,20 @@ def main():
     for d in sys.argv[1:]:
         for p, by_pattern in ELEMENT.items():
             spv = f"{d}/ctess_mesh_64_{p}.spv"
-            if not os.path.exists(spv):
-                spv = f"{d}/ctess_cp_64_{p}.spv"
             funcs = functions(spv)
             for pattern, name in by_pattern.items():
                 root = function_named(spv, name)
                 size = "—" if root is None else "%d, %d" % tree_size(funcs, root)
                 print(f"| {d} | {p} | {pattern} `{name}` | {size} |")
+    print()
+    print("| shaders | pass | displacement per output vertex (instructions, functions) |")
+    print("|---|---|---|")
+    for d in sys.argv[1:]:
+        for p, name in DISPLACEMENT.items():
+            spv = f"{d}/ctess_mesh_64_{p}.spv"
+            root = function_named(spv, name)
+            size = "—" if root is None else "%d, %d" % tree_size(functions(spv), root)
+            print(f"| {d} | {p} | `{name}` | {size} |")
     return 0
 
 
