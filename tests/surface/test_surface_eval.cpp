@@ -679,3 +679,58 @@ TEST_CASE("Quad surfaces (algorithm.md §6.2): the interior meets every edge (th
         CHECK(worst_normal < 2e-6f);
     }
 }
+
+TEST_CASE(
+    "Bulk evaluation: evaluate_surface_points equals evaluate_surface bit for bit, writing only its count",
+    "[surface][bulk]") {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const SurfaceCorner curved[3] = {{{0.1f, -0.2f, 0.3f}, unit({-0.3f, -0.2f, 1.0f}), {0.0f, 0.1f}, 7},
+                                     {{1.3f, 0.1f, -0.2f}, unit({0.4f, -0.1f, 1.0f}), {1.0f, 0.2f}, 2},
+                                     {{0.2f, 1.1f, 0.4f}, {0.1f, 0.5f, 2.0f}, {0.3f, 0.9f}, 9}};
+    // Interior, edge and corner points, both ends of every edge densely, and weights past the triangle
+    // (u + v > one, u or v > one): each must take the path evaluate_surface takes.
+    std::vector<DomainPoint> base;
+    std::uint32_t seed = 12345;
+    for (int k = 0; k < 4000; ++k) {
+        seed = seed * 1664525u + 1013904223u;
+        const std::uint32_t u = (seed >> 8) % (one + 1);
+        seed = seed * 1664525u + 1013904223u;
+        base.push_back({u, (seed >> 8) % (one + 1 - u)});
+    }
+    for (const std::uint32_t t : edge_parameters()) {
+        base.push_back({t, 0});
+        base.push_back({0, t});
+        base.push_back({t, one - t});
+    }
+    for (const DomainPoint p : {DomainPoint{0, 0}, DomainPoint{one, 0}, DomainPoint{0, one},
+                                DomainPoint{one, 1}, DomainPoint{one / 2 + 1, one / 2}, DomainPoint{~0u, 3},
+                                DomainPoint{5, ~0u}, DomainPoint{one + 1, 0}})
+        base.push_back(p);
+    SurfaceCorner bad_corners[3] = {curved[0], curved[1], curved[2]};
+    bad_corners[1].position = {nan, 0, 0};
+    bad_corners[2].normal = {inf, 0, 0};
+    const SurfaceCorner(&bad)[3] = bad_corners;
+    for (const auto* c : {&curved, &bad}) {
+        for (const unsigned s : {0u, 1u, 2u, 3u, 7u}) { // 7: an unknown surface evaluates flat
+            CAPTURE(s);
+            const SurfaceOptions opt = options(static_cast<Surface>(s), 0.75f);
+            std::vector<SurfacePoint> out(base.size() + 1);
+            out.back().position = {-1.0f, -2.0f, -3.0f}; // past base's count: left as it is
+            evaluate_surface_points(out, *c, base, opt);
+            for (std::size_t k = 0; k < base.size(); ++k) {
+                const std::uint32_t w[3] = {one - base[k].u - base[k].v, base[k].u, base[k].v};
+                const SurfacePoint e = evaluate_surface(*c, w, opt);
+                INFO("point " << base[k].u << ", " << base[k].v);
+                REQUIRE(bits(out[k].position) == bits(e.position));
+                REQUIRE(bits(out[k].normal) == bits(e.normal));
+                REQUIRE(std::bit_cast<std::uint32_t>(out[k].uv[0]) == std::bit_cast<std::uint32_t>(e.uv[0]));
+                REQUIRE(std::bit_cast<std::uint32_t>(out[k].uv[1]) == std::bit_cast<std::uint32_t>(e.uv[1]));
+            }
+            CHECK(bits(out.back().position) == bits(Vec3{-1.0f, -2.0f, -3.0f}));
+            // A shorter out span: only its size is written.
+            std::vector<SurfacePoint> few(3);
+            evaluate_surface_points(few, *c, base, opt);
+            CHECK(bits(few[2].position) == bits(out[2].position));
+        }
+    }
+}

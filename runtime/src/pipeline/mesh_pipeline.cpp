@@ -148,6 +148,15 @@ float mesh_edge_length2(const MeshView& mesh, std::uint32_t i, std::uint32_t j) 
     return dot(d, d);
 }
 
+// An output vertex: its domain point (base weights, or a quad's unit square) and its surface point.
+TessVertex tess_vertex(DomainPoint base, const SurfacePoint& s) {
+    return {base.u,
+            base.v,
+            {s.position.x, s.position.y, s.position.z},
+            {s.normal.x, s.normal.y, s.normal.z},
+            {s.uv[0], s.uv[1]}};
+}
+
 // The output vertex of exact base weights (w1, w2) = (base.u, base.v), units of cp::fixed_one.
 TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, const PatchSurface& surface) {
     const std::uint32_t w[3] = {one - base.u - base.v, base.u, base.v};
@@ -159,11 +168,7 @@ TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, co
         s = evaluate_surface(corner, w, surface.options);
     }
     displace_triangle_point(surface.displace, w, s); // no-op without displacement (§8)
-    return {base.u,
-            base.v,
-            {s.position.x, s.position.y, s.position.z},
-            {s.normal.x, s.normal.y, s.normal.z},
-            {s.uv[0], s.uv[1]}};
+    return tess_vertex(base, s);
 }
 
 // The output vertex of quad point (s, t) of the unit square (docs/algorithm.md §7.3): a point on a quad edge
@@ -192,11 +197,7 @@ TessVertex quad_vertex(const SurfaceCorner (&q)[4], DomainPoint square, const Pa
         p = surface.aen ? evaluate_quad_surface_aen(q, surface.adjacent, s, t, surface.options)
                         : evaluate_quad_surface(q, s, t, surface.options);
     displace_quad_point(surface.displace, s, t, p); // no-op without displacement (§8)
-    return {s,
-            t,
-            {p.position.x, p.position.y, p.position.z},
-            {p.normal.x, p.normal.y, p.normal.z},
-            {p.uv[0], p.uv[1]}};
+    return tess_vertex(square, p);
 }
 
 // Distinct interior parameters of one edge's line, ascending, units of cp::fixed_one. The set is
@@ -1143,20 +1144,59 @@ class PatchWeld {
             const std::uint32_t* local = s.triangles.data();
             for (std::size_t k = 0; k < s.triangles.size(); ++k) indices[k] = ids[local[k]];
         }
-        if (!vertices.empty()) {
-            for (std::size_t j = 0; j < s.eval_id.size(); ++j) {
-                const std::uint32_t local = s.eval_id[j], id = ids[local];
-                const bool shared = local < s.interior_base; // a corner or an edge point
-                if (shared && written_ != nullptr) {
-                    if (!take(id)) continue;
-                    mark(id);
-                }
-                TessVertex v = evaluate(n, s.eval_point[j]);
-                if (shared) v.u = v.v = 0;
-                vertices[id] = v;
+        if (vertices.empty()) return true;
+        if (n == 1 && !surface_.aen) {
+            write_triangle_points(s, ids, vertices);
+            return true;
+        }
+        for (std::size_t j = 0; j < s.eval_id.size(); ++j) {
+            const std::uint32_t local = s.eval_id[j], id = ids[local];
+            const bool shared = local < s.interior_base; // a corner or an edge point
+            if (shared && written_ != nullptr) {
+                if (!take(id)) continue;
+                mark(id);
             }
+            TessVertex v = evaluate(n, s.eval_point[j]);
+            if (shared) v.u = v.v = 0;
+            vertices[id] = v;
         }
         return true;
+    }
+
+    // run_shape's vertices for a base triangle without PN-AEN: the same values as surface_vertex per point,
+    // evaluated in batches (evaluate_surface_points), the skipped shared points left out.
+    void write_triangle_points(const WeldShape& s, const std::uint32_t* ids, std::span<TessVertex> vertices) {
+        constexpr std::size_t batch = 64;
+        DomainPoint base[batch];
+        std::uint32_t id[batch];
+        bool shared[batch];
+        SurfacePoint point[batch];
+        std::size_t j = 0;
+        while (j < s.eval_id.size()) {
+            std::size_t count = 0;
+            for (; j < s.eval_id.size() && count < batch; ++j) {
+                const std::uint32_t local = s.eval_id[j];
+                const bool on_edge = local < s.interior_base; // a corner or an edge point
+                if (on_edge && written_ != nullptr) {
+                    if (!take(ids[local])) continue;
+                    mark(ids[local]);
+                }
+                base[count] = s.eval_point[j];
+                id[count] = ids[local];
+                shared[count] = on_edge;
+                ++count;
+            }
+            evaluate_surface_points(std::span(point, count), corner_, std::span(base, count),
+                                    surface_.options);
+            if (surface_.displace.source != nullptr) {
+                for (std::size_t k = 0; k < count; ++k) {
+                    const std::uint32_t w[3] = {one - base[k].u - base[k].v, base[k].u, base[k].v};
+                    displace_triangle_point(surface_.displace, w, point[k]); // §8
+                }
+            }
+            for (std::size_t k = 0; k < count; ++k)
+                vertices[id[k]] = tess_vertex(shared[k] ? DomainPoint{0, 0} : base[k], point[k]);
+        }
     }
 
     // Any patch, slot by slot: corners by mesh index, edge points by a binary search of their edge and the

@@ -2,6 +2,7 @@
 // shared edge's points are bit-identical between the two patches whatever flags the caller uses.
 #include <ctess/runtime/surface/eval.hpp>
 
+#include <algorithm>
 #include <bit>
 
 namespace ctess::rt {
@@ -84,14 +85,22 @@ PnCubic pn_cubic(const SurfaceCorner (&c)[3], const Vec3 (&b)[6], float w0, floa
     return {pn, nn};
 }
 
+// The flat interpolation of a point strictly inside the triangle, its normal not yet normalised: the one
+// source of interior_point's flat part and of evaluate_surface_points' loop.
+inline SurfacePoint flat_interior(const SurfaceCorner (&c)[3], float w0, float w1, float w2) {
+    SurfacePoint out;
+    out.position = w0 * c[0].position + w1 * c[1].position + w2 * c[2].position;
+    out.normal = w0 * c[0].normal + w1 * c[1].normal + w2 * c[2].normal;
+    out.uv[0] = w0 * c[0].uv[0] + w1 * c[1].uv[0] + w2 * c[2].uv[0];
+    out.uv[1] = w0 * c[0].uv[1] + w1 * c[1].uv[1] + w2 * c[2].uv[1];
+    return out;
+}
+
 // A point strictly inside the triangle, weights w0 + w1 + w2 = 1.
 SurfacePoint interior_point(const SurfaceCorner (&c)[3], float w0, float w1, float w2,
                             const SurfaceOptions& opt) {
-    SurfacePoint out;
-    const Vec3 flat_p = w0 * c[0].position + w1 * c[1].position + w2 * c[2].position;
-    const Vec3 flat_n = w0 * c[0].normal + w1 * c[1].normal + w2 * c[2].normal;
-    out.uv[0] = w0 * c[0].uv[0] + w1 * c[1].uv[0] + w2 * c[2].uv[0];
-    out.uv[1] = w0 * c[0].uv[1] + w1 * c[1].uv[1] + w2 * c[2].uv[1];
+    SurfacePoint out = flat_interior(c, w0, w1, w2);
+    const Vec3 flat_p = out.position, flat_n = out.normal;
     Vec3 p = flat_p, n = flat_n;
     if (opt.surface == Surface::pn_triangles) {
         const PnCubic pn =
@@ -147,6 +156,25 @@ SurfacePoint evaluate_surface(const SurfaceCorner (&c)[3], const std::uint32_t (
     }
     return detail::interior_point(c, detail::fixed_weight(w[0]), detail::fixed_weight(w[1]),
                                   detail::fixed_weight(w[2]), opt);
+}
+
+void evaluate_surface_points(std::span<SurfacePoint> out, const SurfaceCorner (&c)[3],
+                             std::span<const DomainPoint> base, const SurfaceOptions& opt) noexcept {
+    const std::size_t n = std::min(out.size(), base.size());
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t w1 = base[k].u, w2 = base[k].v, w0 = cp::fixed_one - w1 - w2;
+        const bool interior = w0 != 0 && w1 != 0 && w2 != 0 && w1 < cp::fixed_one && w2 < cp::fixed_one &&
+                              w1 + w2 < cp::fixed_one;
+        if (opt.surface != Surface::flat || !interior) {
+            out[k] = evaluate_surface(c, {w0, w1, w2}, opt);
+            continue;
+        }
+        // evaluate_surface's flat interior path inlined: no call, no struct return per point.
+        SurfacePoint p = detail::flat_interior(c, detail::fixed_weight(w0), detail::fixed_weight(w1),
+                                               detail::fixed_weight(w2));
+        p.normal = normalize_or_zero(p.normal);
+        out[k] = p;
+    }
 }
 
 namespace {

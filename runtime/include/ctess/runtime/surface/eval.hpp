@@ -9,12 +9,14 @@
 // Every CP edge point is exact and mirror-symmetric in 2^-24 units, so both sides also see the same
 // parameter. A corner (weight one) is copied. The shaders mirror these functions operation for operation.
 //
-// The shaders run PN-AEN (McDonald and Kilgard 2010) and the quad surfaces (flat, Phong, PN quad, PN-AEN quad)
-// too (docs/shaders.md). PN-AEN orders an edge by position bits instead of mesh index: the two sides of a
-// split-normal edge hold different vertices at the same positions.
+// The shaders run PN-AEN (McDonald and Kilgard 2010) and the quad surfaces (flat, Phong, PN quad, PN-AEN
+// quad) too (docs/shaders.md). PN-AEN orders an edge by position bits instead of mesh index: the two sides of
+// a split-normal edge hold different vertices at the same positions.
 #pragma once
 #include <cstdint>
+#include <span>
 
+#include <ctess/core/domain_point.hpp>
 #include <ctess/cp/line.hpp>
 
 #include <ctess/runtime/core/vec3.hpp>
@@ -50,6 +52,13 @@ struct SurfacePoint {
 // Surface::pn_aen here has no adjacency: evaluate_surface_aen with every edge a boundary.
 SurfacePoint evaluate_surface(const SurfaceCorner (&c)[3], const std::uint32_t (&w)[3],
                               const SurfaceOptions& opt) noexcept;
+
+// Many points of one triangle at once. Fills: out[k] = evaluate_surface(c, {fixed_one - base[k].u -
+// base[k].v, base[k].u, base[k].v}, opt), bit for bit, for k < min(out.size(), base.size()) (one SurfacePoint
+// per base point). The flat surface's interior points run without a call per point (the welded pipeline's
+// patches, docs/algorithm.md §7.4); every other point goes through evaluate_surface.
+void evaluate_surface_points(std::span<SurfacePoint> out, const SurfaceCorner (&c)[3],
+                             std::span<const DomainPoint> base, const SurfaceOptions& opt) noexcept;
 
 // The neighbour's side of one edge, for PN-AEN: the two vertices of the adjacent triangle (or quad) on the
 // edge, in either order, e.g. vertices[i[3 + 2e]] and vertices[i[4 + 2e]] of
