@@ -1166,11 +1166,11 @@ class PatchWeld {
     // run_shape's vertices for a base triangle without PN-AEN: the same values as surface_vertex per point,
     // evaluated in batches (evaluate_surface_points), the skipped shared points left out.
     void write_triangle_points(const WeldShape& s, const std::uint32_t* ids, std::span<TessVertex> vertices) {
-        constexpr std::size_t batch = 64;
-        DomainPoint base[batch];
-        std::uint32_t id[batch];
-        bool shared[batch];
-        SurfacePoint point[batch];
+        constexpr std::size_t batch = point_batch;
+        DomainPoint* base = batch_base_.data();
+        std::uint32_t* id = batch_id_.data();
+        bool* shared = batch_shared_.data();
+        SurfacePoint* point = batch_point_.data();
         std::size_t j = 0;
         while (j < s.eval_id.size()) {
             std::size_t count = 0;
@@ -1311,6 +1311,12 @@ class PatchWeld {
     std::vector<DomainPoint> slot_point_; // build_shape: each slot's domain point
     std::vector<std::uint32_t> seen_;     // build_shape: local id -> its eval entry
     std::vector<std::uint32_t> ids_;      // run_shape: local id -> output id
+    // write_triangle_points' batch, kept here so that it is not zeroed per batch (its types zero-initialise).
+    static constexpr std::size_t point_batch = 64;
+    std::array<DomainPoint, point_batch> batch_base_;
+    std::array<std::uint32_t, point_batch> batch_id_{};
+    std::array<bool, point_batch> batch_shared_{};
+    std::array<SurfacePoint, point_batch> batch_point_;
     EdgeParams params_[4];
     std::uint32_t edge_first_[3] = {};
     std::uint64_t* written_ = nullptr;
