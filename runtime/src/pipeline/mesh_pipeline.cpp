@@ -773,6 +773,9 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
     }
     if (vertex_sum > vertices.size() || 3 * triangle_sum > indices.size())
         return PipelineStatus::span_too_small;
+    std::array<SurfacePoint, 64>
+        batch; // a triangle's points in batches, made once (their types zero-initialise)
+    std::array<DomainPoint, 64> batch_base;
     for (std::uint32_t p = 0; p < count; ++p) {
         const PatchRecord& rec = patches[p];
         if (rec.vertex_count == 0) continue;
@@ -784,9 +787,27 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
                                              mesh_corner(mesh, w[2])};
             const PatchSurface surface = triangle_surface(mesh, p, corner, options);
             const typename F::patch_type patch = family.patch(rec);
-            for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
-                vertices[rec.first_vertex + i] =
-                    surface_vertex(corner, family.base_point(patch, rec, i), surface);
+            TessVertex* out_vertex = vertices.data() + rec.first_vertex;
+            if (surface.aen) {
+                for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
+                    out_vertex[i] = surface_vertex(corner, family.base_point(patch, rec, i), surface);
+            }
+            // Without PN-AEN: the same values in batches (evaluate_surface_points, as the welded emit).
+            for (std::uint32_t i = 0; i < rec.vertex_count && !surface.aen; i += batch.size()) {
+                const auto n =
+                    static_cast<std::uint32_t>(std::min<std::size_t>(batch.size(), rec.vertex_count - i));
+                for (std::uint32_t k = 0; k < n; ++k) batch_base[k] = family.base_point(patch, rec, i + k);
+                evaluate_surface_points(std::span(batch.data(), n), corner, std::span(batch_base.data(), n),
+                                        surface.options);
+                for (std::uint32_t k = 0; k < n; ++k) {
+                    const DomainPoint b = batch_base[k];
+                    if (surface.displace.source != nullptr) {
+                        const std::uint32_t weights[3] = {one - b.u - b.v, b.u, b.v};
+                        displace_triangle_point(surface.displace, weights, batch[k]); // §8
+                    }
+                    out_vertex[i + k] = tess_vertex(b, batch[k]);
+                }
+            }
             for (std::uint32_t t = 0; t < rec.triangle_count; ++t) {
                 const std::array<std::uint32_t, 3> tri = patch.triangle(t);
                 for (unsigned k = 0; k < 3; ++k) out[3 * t + k] = rec.first_vertex + tri[k];
