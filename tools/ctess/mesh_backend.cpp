@@ -242,7 +242,7 @@ UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const 
     }
     const int status = run_child({"node", module, job_file, result_file}, log_file, run.timeout_seconds);
     if (status == -1)
-        throw std::runtime_error(fmt::format("--backend webgpu: node did not finish within {} s "
+        throw std::runtime_error(fmt::format("--backend webgpu: node did not finish within {:g} s "
                                              "(--backend-timeout); it was killed. Its output:\n{}",
                                              run.timeout_seconds, log_tail(log_file)));
     if (status != 0)
