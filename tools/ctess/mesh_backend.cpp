@@ -138,9 +138,9 @@ std::string log_tail(const std::string& path) {
     return text.empty() ? "(no output)" : text;
 }
 
-// Runs argv (argv[0] looked up on PATH, no shell) in its own process group, stdin from /dev/null, stdout and
-// stderr into log; kills the group once timeout_seconds have passed. Returns the exit status, or -1 when it
-// was killed by the timeout (or a signal: -2).
+// Runs argv (argv[0] looked up on PATH, no shell), stdin from /dev/null, stdout and stderr into log; kills it
+// once timeout_seconds have passed. It stays in ctess's process group, so a Ctrl-C at the terminal stops
+// both. Returns the exit status, or -1 when it was killed by the timeout (or a signal: -2).
 int run_child(const std::vector<std::string>& args, const std::string& log, double timeout_seconds) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -152,12 +152,10 @@ int run_child(const std::vector<std::string>& args, const std::string& log, doub
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    // Its own process group, so that a timeout kills node and anything it started; default signal mask.
-    sigset_t empty;
+    sigset_t empty; // the default signal mask, whatever ctess's is
     sigemptyset(&empty);
     posix_spawnattr_setsigmask(&attr, &empty);
-    posix_spawnattr_setpgroup(&attr, 0);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
     pid_t pid = 0;
     const int spawned = posix_spawnp(&pid, argv[0], &actions, &attr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -176,13 +174,12 @@ int run_child(const std::vector<std::string>& args, const std::string& log, doub
         int status = 0;
         const pid_t done = waitpid(pid, &status, WNOHANG);
         if (done == pid) {
-            kill(-pid, SIGKILL); // anything node left behind in its group
             return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
         }
         if (done < 0 && errno != EINTR)
             throw std::runtime_error(fmt::format("--backend webgpu: waitpid: {}", std::strerror(errno)));
         if (std::chrono::steady_clock::now() >= deadline) {
-            kill(-pid, SIGKILL);
+            kill(pid, SIGKILL);
             while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
             }
             return -1;
