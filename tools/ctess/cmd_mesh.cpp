@@ -2,17 +2,22 @@
 // at the chosen factors and surface, one welded indexed mesh out (OBJ, PLY or binary glTF), written to a
 // temporary file and renamed (docs/cli.md, "ctess mesh"). The library does the work: ctess::models loads and
 // finds the adjacency, the pipeline (setup_welded, emit_welded_mesh) tessellates and welds; this file parses
-// options, times the stages and writes.
+// options, times the stages and writes. `--unwelded` writes the pipeline's unwelded output instead (every
+// patch's own vertices, as the generated shaders write them), from the CPU or, with `--backend
+// vulkan|webgpu`, from the shaders themselves (docs/cli.md, "GPU backends"; mesh_backend.hpp).
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "file_output.hpp"
+#include "install_dirs.hpp"
 #include "json_escape.hpp"
+#include "mesh_backend.hpp"
 #include "mesh_options.hpp"
 #include "model_formats.hpp"
 #include "model_prep.hpp"
 
 #include <ctess/runtime/cp/table_set.hpp>
 #include <ctess/runtime/displace/displace.hpp>
+#include <ctess/runtime/gpu/shader_interface.hpp>
 #include <ctess/runtime/models/adjacency.hpp>
 #include <ctess/runtime/models/height_map.hpp>
 #include <ctess/runtime/models/model.hpp>
@@ -180,12 +185,34 @@ constexpr std::uint32_t fnv1a_basis = 2166136261u;
 // uniform patterns; their uniform pattern clamps factors to [1, N] where `ctess mesh --pattern uniform`
 // splits (docs/algorithm.md §7.5), and this block is the clamped one. The D3D11 patterns have no shader: the
 // viewer draws them from `ctess serve`'s /api/tessellate, which returns this same output.
+struct OutputChecksums {
+    std::uint32_t records = fnv1a_basis, barycentrics = fnv1a_basis, indices = fnv1a_basis;
+};
+
+OutputChecksums output_checksums(const UnweldedOutput& output) {
+    OutputChecksums c;
+    for (const rt::PatchRecord& r : output.records) {
+        std::uint32_t words[sizeof(rt::PatchRecord) / 4];
+        std::memcpy(words, &r, sizeof words);
+        c.records = fnv1a_words(c.records, words);
+    }
+    for (const rt::TessVertex& v : output.vertices)
+        c.barycentrics = fnv1a_words(c.barycentrics, {{v.u, v.v}});
+    c.indices = fnv1a_words(c.indices, output.indices);
+    return c;
+}
+
+std::string checksums_json(const OutputChecksums& c) {
+    return fmt::format("{{\"records\": \"{:08x}\", \"barycentrics\": \"{:08x}\", \"indices\": \"{:08x}\"}}",
+                       c.records, c.barycentrics, c.indices);
+}
+
 struct GpuReference {
     bool present = false;
     std::uint64_t patches = 0;
     rt::PipelineTotals totals;
     std::uint32_t factor_scale_bits = 0;
-    std::uint32_t records = fnv1a_basis, barycentrics = fnv1a_basis, indices = fnv1a_basis;
+    OutputChecksums checksums;
     double seconds = 0;
 };
 
@@ -197,14 +224,7 @@ GpuReference gpu_reference(const rt::CpTableSet& cp, const rt::UniformTableSet& 
     if (options.pattern == rt::Pattern::uniform_split) options.pattern = rt::Pattern::uniform;
     const UnweldedOutput output = unwelded_output(cp, uniform, view, options, in, 0xFFFFFFFFu / 3);
     g.totals = output.totals;
-    for (const rt::PatchRecord& r : output.records) {
-        std::uint32_t words[sizeof(rt::PatchRecord) / 4];
-        std::memcpy(words, &r, sizeof words);
-        g.records = fnv1a_words(g.records, words);
-    }
-    for (const rt::TessVertex& v : output.vertices)
-        g.barycentrics = fnv1a_words(g.barycentrics, {{v.u, v.v}});
-    g.indices = fnv1a_words(g.indices, output.indices);
+    g.checksums = output_checksums(output);
     g.present = true;
     g.patches = view.patch_count();
     const float scale = options.dice.factor_scale();
@@ -221,14 +241,111 @@ void check_triangle_limit(const std::string& in, std::uint32_t triangles, unsign
                         in, triangles, max_triangles));
 }
 
+// --backend and what goes with it (docs/cli.md, "GPU backends"), checked before anything is loaded.
+struct BackendRequest {
+    std::string name = "cpu";
+    bool unwelded = false;
+    GpuRun run;
+};
+
+BackendRequest backend_request_from(const Args& args, unsigned max) {
+    BackendRequest r;
+    r.name = choice(args.get_or("backend", "cpu"), {"cpu", "vulkan", "webgpu"}, "--backend");
+    r.unwelded = args.has("unwelded");
+    if (r.name != "cpu" && !r.unwelded)
+        throw UsageError("--backend " + r.name +
+                         " runs the generated shaders, which write the unwelded output (every patch's own "
+                         "vertices; the GPU has no weld yet): add --unwelded");
+    if (r.unwelded && args.has("keep-degenerate"))
+        throw UsageError("--keep-degenerate goes with the welded output (--unwelded keeps every triangle)");
+    if (args.has("shaders") && r.name == "cpu")
+        throw UsageError("--shaders goes with --backend vulkan or webgpu");
+    if (args.has("backend-timeout") && r.name != "webgpu")
+        throw UsageError("--backend-timeout goes with --backend webgpu");
+    r.run.shader_dir = args.get_or("shaders", installed_or_build_dir("shaders", CTESS_SHADER_DIR));
+    r.run.max_factor = max;
+    if (args.has("backend-timeout")) {
+        const float t = parse_float(args.get("backend-timeout"), "--backend-timeout");
+        if (!(t > 0 && t <= 86400))
+            throw UsageError("--backend-timeout must be a number of seconds in (0, 86400]");
+        r.run.timeout_seconds = t;
+    }
+    return r;
+}
+
+// What --unwelded runs. Where the generated shaders run the options (rt::gpu::gpu_options_status), it is
+// their pipeline, so that every backend writes the same file: shared edges ordered by vertex index (the
+// shaders take no position ids, docs/shaders.md "Hosts"; docs/algorithm.md §7.3) and uniform density clamped
+// to [1, N] instead of split (§7.5), as `--stats`' `gpu` block. Elsewhere (the D3D11 patterns, --factor,
+// --edge-length) it is the library's unwelded output as `ctess serve`'s /api/tessellate computes it, on the
+// CPU only.
+struct UnweldedPlan {
+    rt::MeshView view;
+    rt::PipelineOptions options;
+    bool shaders = false;
+    rt::PipelineStatus gpu_status = rt::PipelineStatus::ok;
+};
+
+UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& options) {
+    UnweldedPlan plan{view, options};
+    rt::MeshView gpu_view = view;
+    gpu_view.position_ids = nullptr;
+    rt::PipelineOptions gpu_options = options;
+    if (gpu_options.pattern == rt::Pattern::uniform_split) gpu_options.pattern = rt::Pattern::uniform;
+    plan.gpu_status = rt::gpu::gpu_options_status(gpu_view, gpu_options);
+    if (plan.gpu_status == rt::PipelineStatus::ok) {
+        plan.view = gpu_view;
+        plan.options = gpu_options;
+        plan.shaders = true;
+    }
+    return plan;
+}
+
+// A GPU backend asked for options the shaders do not run: the reason, as the user typed the options.
+[[noreturn]] void refuse_gpu_options(const std::string& backend, const std::string& pattern,
+                                     const rt::PipelineOptions& options, rt::PipelineStatus status) {
+    if (status != rt::PipelineStatus::bad_option)
+        throw std::runtime_error(
+            fmt::format("--backend {}: {}", backend, rt::pipeline_status_message(status)));
+    const std::string reason =
+        pattern != "cp" && pattern != "uniform"
+            ? "--pattern " + pattern + " has no shader (the D3D11 tessellator runs on the CPU only)"
+        : options.dice.mode != rt::FactorMode::camera
+            ? std::string("the shaders take camera factors only (--dice-rate with --camera), not --factor or "
+                          "--edge-length")
+            : std::string(rt::pipeline_status_message(status));
+    throw UsageError(fmt::format("--backend {}: the GPU pipeline does not run these options: {} "
+                                 "(rt::gpu::gpu_options_status; docs/shaders.md, \"Hosts\"). --backend cpu "
+                                 "--unwelded writes their unwelded output",
+                                 backend, reason));
+}
+
 } // namespace
 
 int run_mesh(int argc, char** argv) {
     const Args args(argc, argv, 2,
-                    {"in", "out", "pattern", "max", "factor", "edge-length", "dice-rate", "camera", "fov",
-                     "resolution", "surface", "quad-rule", "max-triangles", "displace", "displace-scale",
-                     "displace-offset", "displace-address", "displace-vector"},
-                    {"stats", "keep-degenerate", "displace-gltf", "displace-grow"});
+                    {"in",
+                     "out",
+                     "pattern",
+                     "max",
+                     "factor",
+                     "edge-length",
+                     "dice-rate",
+                     "camera",
+                     "fov",
+                     "resolution",
+                     "surface",
+                     "quad-rule",
+                     "max-triangles",
+                     "displace",
+                     "displace-scale",
+                     "displace-offset",
+                     "displace-address",
+                     "displace-vector",
+                     "backend",
+                     "backend-timeout",
+                     "shaders"},
+                    {"stats", "keep-degenerate", "displace-gltf", "displace-grow", "unwelded"});
     const std::string in = args.get("in");
     const std::string out = args.get_or("out", "");
     const bool stats = args.has("stats");
@@ -248,6 +365,11 @@ int run_mesh(int argc, char** argv) {
             ? parse_unsigned(args.get("max-triangles"), "--max-triangles", 1, 0xFFFFFFFFu / 3)
             : mesh_cli_default_max_triangles;
     const DisplaceRequest displace = displace_request_from(args);
+    const BackendRequest backend = backend_request_from(args, max);
+    // The options alone, before the model is loaded: a pattern or factor mode the shaders lack.
+    if (backend.name != "cpu")
+        if (const UnweldedPlan early = unwelded_plan(rt::MeshView{}, options); !early.shaders)
+            refuse_gpu_options(backend.name, pattern, options, early.gpu_status);
 
     StageSeconds seconds;
     auto start = Clock::now();
@@ -297,44 +419,88 @@ int run_mesh(int argc, char** argv) {
 
     const rt::CpTableSet& cp = max == 64 ? rt::cp_tables_64 : rt::cp_tables_256;
     const rt::UniformTableSet& uniform = rt::uniform_tables;
-    start = Clock::now();
-    // The unwelded counts first: they come from the patterns' counts alone, where the weld walks every
-    // patch's output, so a factor typed too large is refused before any patch is tessellated. The welded
-    // output has at most as many triangles.
-    {
-        std::vector<rt::PatchRecord> records(view.patch_count());
-        rt::PipelineTotals unwelded;
-        const rt::PipelineStatus counted = rt::setup_patches(cp, uniform, view, options, records, unwelded);
-        if (counted != rt::PipelineStatus::ok)
-            throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(counted)));
-        check_triangle_limit(in, unwelded.triangles, max_triangles);
-    }
-    std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(view));
-    std::vector<rt::WeldedPatch> patches(view.patch_count());
-    rt::WeldedTotals totals;
-    rt::PipelineStatus status = rt::setup_welded(cp, uniform, view, options, edges, patches, totals);
-    if (status != rt::PipelineStatus::ok)
-        throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
-    check_triangle_limit(in, totals.triangles, max_triangles);
-    edges.resize(totals.edges);
-    seconds.setup = seconds_since(start);
-
-    start = Clock::now();
-    std::vector<rt::TessVertex> vertices(totals.vertices);
     OutputMesh mesh;
-    mesh.triangles.resize(3 * std::size_t{totals.triangles});
-    status = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches, vertices, mesh.triangles);
-    if (status != rt::PipelineStatus::ok)
-        throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
-    mesh.vertices.resize(8 * vertices.size());
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-        float* v = &mesh.vertices[8 * i];
-        const rt::TessVertex& t = vertices[i];
-        v[0] = t.position[0], v[1] = t.position[1], v[2] = t.position[2];
-        v[3] = t.normal[0], v[4] = t.normal[1], v[5] = t.normal[2];
-        v[6] = t.uv[0], v[7] = t.uv[1];
+    std::uint64_t clamped_edges = 0;
+    // --unwelded: what the backend wrote, with its device and the checksums of its exact words.
+    std::string device;
+    OutputChecksums checksums;
+    bool shader_pipeline = false;
+    const auto copy_vertices = [&mesh](std::span<const rt::TessVertex> vertices) {
+        mesh.vertices.resize(8 * vertices.size());
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            float* v = &mesh.vertices[8 * i];
+            const rt::TessVertex& t = vertices[i];
+            v[0] = t.position[0], v[1] = t.position[1], v[2] = t.position[2];
+            v[3] = t.normal[0], v[4] = t.normal[1], v[5] = t.normal[2];
+            v[6] = t.uv[0], v[7] = t.uv[1];
+        }
+    };
+    if (backend.unwelded) {
+        const UnweldedPlan plan = unwelded_plan(view, options);
+        if (backend.name != "cpu" && !plan.shaders)
+            refuse_gpu_options(backend.name, pattern, options, plan.gpu_status);
+        shader_pipeline = plan.shaders;
+        // The counts on the CPU first, whatever the backend: the limit before any output is allocated, and
+        // clamped_edges (the shaders do not count them).
+        start = Clock::now();
+        {
+            std::vector<rt::PatchRecord> records(plan.view.patch_count());
+            rt::PipelineTotals counted;
+            const rt::PipelineStatus st =
+                rt::setup_patches(cp, uniform, plan.view, plan.options, records, counted);
+            if (st != rt::PipelineStatus::ok)
+                throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(st)));
+            check_triangle_limit(in, counted.triangles, max_triangles);
+            clamped_edges = counted.clamped_edges;
+        }
+        seconds.setup = seconds_since(start);
+        start = Clock::now();
+        UnweldedOutput output;
+        if (backend.name == "vulkan")
+            output = vulkan_output(backend.run, plan.view, plan.options, device);
+        else if (backend.name == "webgpu")
+            output = webgpu_output(backend.run, plan.view, plan.options, device);
+        else
+            output = unwelded_output(cp, uniform, plan.view, plan.options, in, max_triangles);
+        if (backend.name == "cpu") device = "ctess CPU pipeline";
+        checksums = output_checksums(output);
+        copy_vertices(output.vertices);
+        mesh.triangles = std::move(output.indices);
+        seconds.emit = seconds_since(start);
+    } else {
+        start = Clock::now();
+        // The unwelded counts first: they come from the patterns' counts alone, where the weld walks every
+        // patch's output, so a factor typed too large is refused before any patch is tessellated. The welded
+        // output has at most as many triangles.
+        {
+            std::vector<rt::PatchRecord> records(view.patch_count());
+            rt::PipelineTotals unwelded;
+            const rt::PipelineStatus counted =
+                rt::setup_patches(cp, uniform, view, options, records, unwelded);
+            if (counted != rt::PipelineStatus::ok)
+                throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(counted)));
+            check_triangle_limit(in, unwelded.triangles, max_triangles);
+        }
+        std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(view));
+        std::vector<rt::WeldedPatch> patches(view.patch_count());
+        rt::WeldedTotals totals;
+        rt::PipelineStatus status = rt::setup_welded(cp, uniform, view, options, edges, patches, totals);
+        if (status != rt::PipelineStatus::ok)
+            throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+        check_triangle_limit(in, totals.triangles, max_triangles);
+        edges.resize(totals.edges);
+        clamped_edges = totals.clamped_edges;
+        seconds.setup = seconds_since(start);
+
+        start = Clock::now();
+        std::vector<rt::TessVertex> vertices(totals.vertices);
+        mesh.triangles.resize(3 * std::size_t{totals.triangles});
+        status = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches, vertices, mesh.triangles);
+        if (status != rt::PipelineStatus::ok)
+            throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
+        copy_vertices(vertices);
+        seconds.emit = seconds_since(start);
     }
-    seconds.emit = seconds_since(start);
 
     if (!out.empty()) {
         start = Clock::now();
@@ -356,7 +522,13 @@ int run_mesh(int argc, char** argv) {
         text += fmt::format(
             "  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
-        text += fmt::format("  \"clamped_edges\": {},\n", totals.clamped_edges);
+        text += fmt::format("  \"clamped_edges\": {},\n", clamped_edges);
+        text += fmt::format("  \"output\": \"{}\",\n  \"backend\": \"{}\",\n",
+                            backend.unwelded ? "unwelded" : "welded", backend.name);
+        if (backend.unwelded)
+            text += fmt::format(
+                "  \"unwelded\": {{\"shader_pipeline\": {}, \"device\": \"{}\", \"checksum\": {}}},\n",
+                shader_pipeline, json_escape(device), checksums_json(checksums));
         if (displace.on)
             text +=
                 fmt::format("  \"displacement\": {{\"mode\": \"{}\", \"tangents\": \"{}\", \"channels\": {}, "
@@ -368,10 +540,9 @@ int run_mesh(int argc, char** argv) {
             text +=
                 fmt::format("  \"gpu\": {{\"pattern\": \"{}\", \"patches\": {}, \"vertices\": {}, "
                             "\"triangles\": {}, \"clamped_edges\": {}, \"factor_scale_bits\": {}, "
-                            "\"checksum\": {{\"records\": \"{:08x}\", \"barycentrics\": \"{:08x}\", "
-                            "\"indices\": \"{:08x}\"}}, \"seconds\": {:.6f}}},\n",
+                            "\"checksum\": {}, \"seconds\": {:.6f}}},\n",
                             pattern, g.patches, g.totals.vertices, g.totals.triangles, g.totals.clamped_edges,
-                            g.factor_scale_bits, g.records, g.barycentrics, g.indices, g.seconds);
+                            g.factor_scale_bits, checksums_json(g.checksums), g.seconds);
         if (const EdgeQuantiles q = longest_edges(mesh, options.dice); q.present)
             text +=
                 fmt::format("  \"longest_edge\": {{\"unit\": \"{}\", \"median\": {:.4f}, \"p99\": {:.4f}, "

@@ -4,6 +4,7 @@
 // docs/viewer.md).
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "install_dirs.hpp"
 #include "json_escape.hpp"
 #include "mesh.hpp"
 #include "mesh_formats.hpp"
@@ -52,18 +53,6 @@ std::string pattern_json(const httplib::Request& req) {
         query_args(req, "pattern", {"mode", "domain", "factors", "winding", "max", "layout", "column-rule"});
     const PatternRequest r = pattern_request_from(args, "factors");
     return mesh_to_json(tessellate(r), r);
-}
-
-// An installed ctess (cmake --install) finds the viewer and the shaders in <prefix>/share/ctess/, beside its
-// own bin/; a ctess run from its build tree uses the source's viewer/ and the build's shaders/.
-std::string installed_or_build_dir(const std::string& name, const std::string& build_dir) {
-    std::error_code ec;
-    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "ctess" / name;
-        if (std::filesystem::is_directory(installed, ec)) return installed.string();
-    }
-    return build_dir;
 }
 
 // A decoded path with NUL (the file would be found by the name before it, its type taken from the name after

@@ -1,0 +1,33 @@
+// `ctess mesh --backend vulkan|webgpu` (docs/cli.md, "GPU backends"): the generated shaders' unwelded output
+// for a model, from ctess::vulkan's Runner in this process or from Dawn in a node child process
+// (share/ctess/shaders/ctess_mesh_node.mjs). The CPU backend is unwelded_output (mesh_options.hpp).
+#pragma once
+#include "mesh_options.hpp"
+
+#include <ctess/runtime/pipeline/mesh_pipeline.hpp>
+
+#include <string>
+
+namespace ctess::cli {
+
+struct GpuRun {
+    std::string shader_dir; // the generated shaders, the table blobs and the node module
+    unsigned max_factor = 64;
+    double timeout_seconds = 600; // webgpu: node is killed after this long (--backend-timeout)
+};
+
+// Whether this ctess was built with ctess::vulkan (Debian libvulkan-dev).
+bool have_vulkan_backend();
+
+// The shaders' output (records with totals, vertices, indices) for mesh and options, which
+// rt::gpu::gpu_options_status must accept. Every output is checked before it is returned: the record and
+// vertex counts the mesh's patch count implies, every index below the vertex count. Throws std::runtime_error
+// with a message that names the backend and the cause: built without Vulkan, no device or adapter, a missing
+// shader file, node or the npm package `webgpu` missing, node past the timeout (then killed), a malformed
+// result. `device` gets the device's name.
+UnweldedOutput vulkan_output(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                             std::string& device);
+UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                             std::string& device);
+
+} // namespace ctess::cli
