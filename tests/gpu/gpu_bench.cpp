@@ -74,14 +74,17 @@ int main(int argc, char** argv) {
     try {
         std::vector<std::unique_ptr<vulkan::Runner>> runners;
         for (const Build& b : builds) runners.push_back(std::make_unique<vulkan::Runner>(b.dir, 64));
-        std::printf("| scene | patches | vertices | triangles | backend | build | median ms (of %d) |\n"
-                    "|---|---|---|---|---|---|---|\n",
-                    repeats);
+        std::printf(
+            "| scene | patches | vertices | triangles | backend | build | median ms (of %d) | of which "
+            "setup + prefix sum, ms | emit passes, ms |\n"
+            "|---|---|---|---|---|---|---|---|---|\n",
+            repeats);
         for (const Named& s : scenes) {
             const PipelineOutput cpu = run_cpu(rt::cp_tables_64, s.scene);
             for (const char* backend : {"lavapipe", "Dawn"}) {
                 // Builds alternate inside each repeat, so that drift of the machine hits them alike.
-                std::vector<std::vector<double>> ms(builds.size());
+                std::vector<std::vector<double>> ms(builds.size()), counts_ms(builds.size()),
+                    emit_ms(builds.size());
                 for (int r = -1; r < repeats; ++r) {
                     for (std::size_t b = 0; b < builds.size(); ++b) {
                         const PipelineOutput gpu =
@@ -93,12 +96,20 @@ int main(int argc, char** argv) {
                                       .front();
                         if (r < 0 && !same_output(cpu, gpu)) return 1;
                         if (r >= 0) ms[b].push_back(gpu.milliseconds);
+                        if (r >= 0) counts_ms[b].push_back(gpu.counts_milliseconds);
+                        if (r >= 0) emit_ms[b].push_back(gpu.milliseconds - gpu.counts_milliseconds);
                     }
                 }
-                for (std::size_t b = 0; b < builds.size(); ++b)
-                    std::printf("| %s | %u | %u | %u | %s | %s | %.1f |\n", s.name, s.scene.patch_count(),
-                                cpu.total_vertices(), cpu.total_triangles(), backend, builds[b].label.c_str(),
-                                median(ms[b]));
+                for (std::size_t b = 0; b < builds.size(); ++b) {
+                    // The split is Vulkan's two submissions (Dawn's run reports the whole only).
+                    char split[64] = "— | —";
+                    if (median(counts_ms[b]) >= 0)
+                        std::snprintf(split, sizeof split, "%.1f | %.1f", median(counts_ms[b]),
+                                      median(emit_ms[b]));
+                    std::printf("| %s | %u | %u | %u | %s | %s | %.1f | %s |\n", s.name,
+                                s.scene.patch_count(), cpu.total_vertices(), cpu.total_triangles(), backend,
+                                builds[b].label.c_str(), median(ms[b]), split);
+                }
                 std::fflush(stdout);
             }
         }

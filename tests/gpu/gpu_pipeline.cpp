@@ -40,6 +40,7 @@ PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits 
                           scene.options.displacement);
     PipelineOutput out;
     out.milliseconds = gpu.milliseconds;
+    out.counts_milliseconds = gpu.counts_milliseconds;
     out.patches.resize(gpu.patches.size() * patch_words + gen::totals_words);
     if (!gpu.patches.empty()) // memcpy with a null pointer is undefined even for 0 bytes
         std::memcpy(out.patches.data(), gpu.patches.data(), gpu.patches.size() * sizeof(rt::PatchRecord));

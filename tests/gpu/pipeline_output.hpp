@@ -39,6 +39,8 @@ struct PipelineOutput {
     std::vector<std::uint32_t> vertices; // TessVertex words
     std::vector<std::uint32_t> indices;
     double milliseconds = 0.0; // GPU: submit to completion of all four passes; CPU: the whole pipeline
+    double counts_milliseconds =
+        -1.0; // of which setup and prefix sum (Vulkan's first submission); -1: not timed
     std::uint32_t total_vertices() const {
         return static_cast<std::uint32_t>(vertices.size() / vertex_words);
     }

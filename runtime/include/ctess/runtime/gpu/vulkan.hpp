@@ -127,6 +127,7 @@ struct Output {
     std::vector<rt::TessVertex> vertices; // totals.vertices
     std::vector<std::uint32_t> indices;   // 3 x totals.triangles
     double milliseconds = 0.0;            // submit to fence, both submissions
+    double counts_milliseconds = 0.0;     // of which the first: patch setup and prefix sum
 };
 
 struct RunOptions {
