@@ -95,6 +95,25 @@ bool map32(const Map32& m, const uniform::Point* in, std::size_t count, uniform:
 #endif
     return map32_body<with_remainders>(m, in, count, out);
 }
+
+// to[k] = from[k] + delta for k < count (the spans do not overlap): a repeated leaf's indices from the last
+// leaf's (Writer::leaf). AVX2 build chosen at run time as map32's.
+inline void add_copy_body(const std::uint32_t* __restrict from, std::uint32_t* __restrict to,
+                          std::size_t count, std::uint32_t delta) noexcept {
+    for (std::size_t k = 0; k < count; ++k) to[k] = from[k] + delta;
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) void add_copy_avx2(const std::uint32_t* from, std::uint32_t* to,
+                                                   std::size_t count, std::uint32_t delta) noexcept {
+    add_copy_body(from, to, count, delta);
+}
+#endif
+void add_copy(const std::uint32_t* from, std::uint32_t* to, std::size_t count, std::uint32_t delta) noexcept {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if ((__builtin_cpu_init(), __builtin_cpu_supports("avx2"))) return add_copy_avx2(from, to, count, delta);
+#endif
+    add_copy_body(from, to, count, delta);
+}
 } // namespace
 
 // The walks over the split tree, on a copy of the patch's settings.
@@ -160,10 +179,7 @@ struct UniformSplit::Impl {
                 }
                 // The last leaf's indices are its local ones plus last_v, just before t (no wrap: both
                 // checked).
-                const std::uint32_t* __restrict from = indices.data() + last_t;
-                std::uint32_t* __restrict to = indices.data() + t;
-                const std::uint32_t delta = v - last_v;
-                for (std::uint32_t k = 0; k < n.index_count(); ++k) to[k] = from[k] + delta;
+                add_copy(indices.data() + last_t, indices.data() + t, n.index_count(), v - last_v);
             } else {
                 const UniformPatch p(*self.tables_, r, self.options_);
                 const Counts n = p.counts();
