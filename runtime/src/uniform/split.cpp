@@ -95,6 +95,25 @@ bool map32(const Map32& m, const uniform::Point* in, std::size_t count, uniform:
 #endif
     return map32_body<with_remainders>(m, in, count, out);
 }
+
+// to[k] = from[k] + delta for k < count (the spans do not overlap): a repeated leaf's indices from the last
+// leaf's (Writer::leaf). AVX2 build chosen at run time as map32's.
+inline void add_copy_body(const std::uint32_t* __restrict from, std::uint32_t* __restrict to,
+                          std::size_t count, std::uint32_t delta) noexcept {
+    for (std::size_t k = 0; k < count; ++k) to[k] = from[k] + delta;
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) void add_copy_avx2(const std::uint32_t* from, std::uint32_t* to,
+                                                   std::size_t count, std::uint32_t delta) noexcept {
+    add_copy_body(from, to, count, delta);
+}
+#endif
+void add_copy(const std::uint32_t* from, std::uint32_t* to, std::size_t count, std::uint32_t delta) noexcept {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if ((__builtin_cpu_init(), __builtin_cpu_supports("avx2"))) return add_copy_avx2(from, to, count, delta);
+#endif
+    add_copy_body(from, to, count, delta);
+}
 } // namespace
 
 // The walks over the split tree, on a copy of the patch's settings.
@@ -115,36 +134,70 @@ struct UniformSplit::Impl {
     struct Counter {
         std::uint64_t vertices = 0, triangles = 0;
         std::uint32_t subpatches = 0, depth = 0;
-        void patch(const UniformPatch& p, const Sub& s, const Impl&) {
-            vertices += p.counts().vertices;
-            triangles += p.counts().triangles;
+        // A leaf's counts depend on its rounded factors only: the last leaf's are reused when they repeat
+        // (the leaves of a regular split all round alike).
+        std::uint32_t last_factors = 0; // leaf_key() of the last leaf; 0: none
+        Counts last_counts;
+        void leaf(const Sub& s, const Impl& self) {
+            const std::array<std::uint32_t, 3> r = self.leaf_factors(s);
+            if (leaf_key(r) != last_factors) {
+                last_counts = UniformPatch(*self.tables_, r, self.options_).counts();
+                last_factors = leaf_key(r);
+            }
+            vertices += last_counts.vertices;
+            triangles += last_counts.triangles;
             ++subpatches;
             depth = s.depth > depth ? s.depth : depth;
         }
     };
     struct Writer {
+        Writer(std::span<uniform::SplitPoint> out_vertices, std::span<std::uint32_t> out_indices) noexcept
+            : vertices(out_vertices), indices(out_indices) {}
         std::span<uniform::SplitPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t v = 0, t = 0;
         bool ok = true;
-        // The leaf's bulk emit into a stack buffer (indices already offset), then its points mapped into the
-        // root. Every
-        // leaf is checked against what is left of the spans, not against counts() (docs/algorithm.md §3.5).
-        void patch(const UniformPatch& p, const Sub& s, const Impl& self) {
-            const Counts n = p.counts();
-            if (!ok || n.vertices > vertices.size() - v || n.index_count() > indices.size() - t) {
-                ok = false;
-                return;
+        // The last leaf written: its rounded factors (a leaf's pattern output depends on them and the options
+        // only), its pattern's points (local units) and where its vertices and indices went. A leaf that
+        // rounds alike (every leaf of a regular split) reuses the points and copies the indices from the
+        // output with one add (docs/algorithm.md §3.5, "Leaf reuse"); only the map into the root is per leaf.
+        std::uint32_t last_factors = 0; // leaf_key() of the last leaf; 0: none
+        Counts last_counts;
+        std::uint32_t last_v = 0, last_t = 0;
+        Uninitialised<uniform::Point, bounds.provoking> local;
+
+        // Every leaf is checked against what is left of the spans, not against counts() (§3.5).
+        void leaf(const Sub& s, const Impl& self) {
+            if (!ok) return;
+            const std::array<std::uint32_t, 3> r = self.leaf_factors(s);
+            const std::uint32_t key = leaf_key(r);
+            if (key == last_factors) {
+                const Counts n = last_counts;
+                if (n.vertices > vertices.size() - v || n.index_count() > indices.size() - t) {
+                    ok = false;
+                    return;
+                }
+                // The last leaf's indices are its local ones plus last_v, just before t (no wrap: both
+                // checked).
+                add_copy(indices.data() + last_t, indices.data() + t, n.index_count(), v - last_v);
+            } else {
+                const UniformPatch p(*self.tables_, r, self.options_);
+                const Counts n = p.counts();
+                last_factors = 0;
+                // The stack buffer fits every pattern; emit() refuses an index base that would wrap.
+                if (n.vertices > vertices.size() - v || n.index_count() > indices.size() - t ||
+                    !p.emit(std::span<uniform::Point>(local.item, n.vertices),
+                            indices.subspan(t, n.index_count()), v)) {
+                    ok = false;
+                    return;
+                }
+                last_factors = key;
+                last_counts = n;
             }
-            Uninitialised<uniform::Point, bounds.provoking> local;
-            if (!p.emit(std::span<uniform::Point>(local.item, n.vertices),
-                        indices.subspan(t, n.index_count()),
-                        v)) { // the stack buffer fits every pattern
-                ok = false;
-                return;
-            }
+            const Counts n = last_counts;
             self.map_points(s, std::span<const uniform::Point>(local.item, n.vertices),
                             vertices.subspan(v, n.vertices));
+            last_v = v, last_t = t;
             v += n.vertices, t += n.index_count();
         }
     };
@@ -301,30 +354,46 @@ struct UniformSplit::Impl {
     static bool is_leaf(const std::array<std::uint32_t, 3>& split) noexcept {
         return split[0] == 1 && split[1] == 1 && split[2] == 1;
     }
-    UniformPatch leaf_patch(const Sub& s) const noexcept {
-        return UniformPatch(*tables_, {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])},
-                            options_);
+    // A leaf's factors rounded and clamped to [1, N]: with the options, all its pattern output depends on.
+    std::array<std::uint32_t, 3> leaf_factors(const Sub& s) const noexcept {
+        return {rounded(s.factor[0]), rounded(s.factor[1]), rounded(s.factor[2])};
     }
-    // A split node's pattern with its vertices read once (vertex(i) divides on every call); its stack
-    // share is the pattern-sized point array.
+    // Rounded leaf factors (each in [1, N], N <= 255) as one word, never 0.
+    static std::uint32_t leaf_key(const std::array<std::uint32_t, 3>& r) noexcept {
+        static_assert(uniform::data_max_factor < 256);
+        return r[0] << 16 | r[1] << 8 | r[2];
+    }
+    UniformPatch leaf_patch(const Sub& s) const noexcept {
+        return UniformPatch(*tables_, leaf_factors(s), options_);
+    }
+    // A split node's pattern with its vertices read once (vertex(i) divides on every call) and mapped into
+    // the root once (map_points: map()'s integers), instead of three map() calls per child, each vertex
+    // shared by up to six children; its stack share is two pattern-sized point arrays.
     struct SplitPattern {
         UniformPatch patch;
-        Uninitialised<uniform::Point, bounds.vertices> points; // the first counts().vertices written
+        Uninitialised<uniform::Point, bounds.vertices> points;       // the first counts().vertices written
+        Uninitialised<uniform::SplitPoint, bounds.vertices> on_root; // the same points mapped by s
         const uniform::Point* point = points.item;
-        explicit SplitPattern(const UniformPatch& p) noexcept : patch(p) {
-            for (std::uint32_t i = 0; i < p.counts().vertices; ++i) points.item[i] = p.vertex(i);
+        const uniform::SplitPoint* mapped = on_root.item;
+        SplitPattern(const Impl& impl, const Sub& s, const UniformPatch& p) noexcept : patch(p) {
+            const std::uint32_t n = p.counts().vertices;
+            for (std::uint32_t i = 0; i < n; ++i) points.item[i] = p.vertex(i);
+            impl.map_points(s, std::span<const uniform::Point>(points.item, n),
+                            std::span<uniform::SplitPoint>(on_root.item, n));
         }
-        SplitPattern(const SplitPattern&) = delete; // point points into itself
+        SplitPattern(const SplitPattern&) = delete; // point and mapped point into the object
     };
-    SplitPattern split_pattern(const std::array<std::uint32_t, 3>& split) const noexcept {
-        return SplitPattern(UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw}));
+    SplitPattern split_pattern(const Sub& s, const std::array<std::uint32_t, 3>& split) const noexcept {
+        return SplitPattern(*this, s,
+                            UniformPatch(*tables_, split, PatchOptions{Layout::shared, Winding::ccw}));
     }
     // The subpatch of s on the split pattern's triangle tri (counter-clockwise).
     Sub child(const Sub& s, const SplitPattern& pattern, const UniformTriangle& tri) const noexcept {
         const uniform::Point a = pattern.point[tri[0]], b = pattern.point[tri[1]], c = pattern.point[tri[2]];
+        const auto corner = [&](std::uint32_t i) { return Point{pattern.mapped[i].u, pattern.mapped[i].v}; };
         Sub c_sub;
         c_sub.depth = s.depth + 1;
-        c_sub.corner = {map(s, a), map(s, b), map(s, c)}; // exact at depth 0 (root corners are multiples)
+        c_sub.corner = {corner(tri[0]), corner(tri[1]), corner(tri[2])}; // map() of a, b, c
         c_sub.factor = {child_edge_factor(s, a, b), child_edge_factor(s, b, c), child_edge_factor(s, a, c)};
         return c_sub;
     }
@@ -333,10 +402,13 @@ struct UniformSplit::Impl {
     void visit(Visitor& visitor, const Sub& s) const noexcept {
         const std::array<std::uint32_t, 3> split = split_of(s);
         if (is_leaf(split)) {
-            visitor.patch(leaf_patch(s), s, *this);
+            if constexpr (requires { visitor.leaf(s, *this); })
+                visitor.leaf(s, *this); // builds its UniformPatch only when it needs one
+            else
+                visitor.patch(leaf_patch(s), s, *this);
             return;
         }
-        const SplitPattern pattern = split_pattern(split);
+        const SplitPattern pattern = split_pattern(s, split);
         for (std::uint32_t k = 0; k < pattern.patch.counts().triangles; ++k)
             visit(visitor, child(s, pattern, pattern.patch.triangle(k)));
     }
@@ -451,10 +523,22 @@ struct UniformSplit::Impl {
         }
     };
     struct Welder {
+        Welder(std::span<uniform::SplitPoint> out_vertices, std::span<std::uint32_t> out_indices) noexcept
+            : vertices(out_vertices), indices(out_indices) {}
         std::span<uniform::SplitPoint> vertices;
         std::span<std::uint32_t> indices;
         std::uint32_t next = 0, t = 0; // the next interior number, the next index slot
         bool ok = true;                // every write so far fell inside the spans
+        // The last leaf's pattern, kept for the next leaf that rounds alike (docs/algorithm.md §3.5, "Leaf
+        // reuse"): its rounded factors, counts, stored triangles, its points (local units) and, per boundary
+        // point, the leaf side and step it lies at (locate()), all functions of the rounded factors.
+        std::uint32_t last_factors = 0; // leaf_key() of the last leaf; 0: none
+        Counts last_counts;
+        const std::uint8_t* last_triangles = nullptr;
+        bool last_flipped = false;
+        Uninitialised<uniform::Point, bounds.vertices> local;
+        std::array<std::uint8_t, bounds.vertices> side;  // boundary point -> leaf side j (3: none)
+        std::array<std::uint16_t, bounds.vertices> step; // boundary point -> its step on that side
     };
 
     // Step i of a boundary point p (local units of 65534) on edge j with k segments (e0: v = 0 from v0,
@@ -496,35 +580,50 @@ struct UniformSplit::Impl {
             weld_split(w, s, edges, split);
     }
 
-    // A leaf's bulk emit: its points into a stack buffer, its triangles straight into the output; the
-    // boundary points numbered by their edges, the interior ones here; the points mapped into the root and
-    // written at their numbers, the indices renumbered in place.
+    // A welded leaf: its pattern's points (local units) and boundary steps from the last leaf when it rounds
+    // alike, else from its UniformPatch; the boundary points numbered by their edges, the interior ones here;
+    // the points mapped into the root and written at their numbers, the triangles written from the stored
+    // index bytes through that numbering in one pass.
     void weld_leaf(Welder& w, const Sub& s, const std::array<EdgeRef, 3>& edges) const noexcept {
-        Uninitialised<uniform::Point, bounds.vertices> local;
+        if (!w.ok) return;
         Uninitialised<uniform::SplitPoint, bounds.vertices> on_root;
-        uniform::Point* const point = local.item;          // local
         uniform::SplitPoint* const mapped = on_root.item;  // on the root
         std::array<std::uint32_t, bounds.vertices> number; // local vertex -> global
-        const UniformPatch p = leaf_patch(s);
-        const Counts n = p.counts();
-        if (!w.ok || n.index_count() > w.indices.size() - w.t) {
+        const std::array<std::uint32_t, 3> r = leaf_factors(s);
+        uniform::Point* const point = w.local.item; // local
+        if (leaf_key(r) != w.last_factors) {
+            const UniformPatch p(*tables_, r, options_); // Layout::shared: no copies
+            const Counts c = p.counts();
+            w.last_factors = 0;
+            // The points into the buffer (it fits every pattern), the indices where the renumbered ones go.
+            if (c.index_count() > w.indices.size() - w.t ||
+                !p.emit(std::span<uniform::Point>(point, c.vertices),
+                        w.indices.subspan(w.t, c.index_count()))) {
+                w.ok = false;
+                return;
+            }
+            // The leaf's own segments per edge equal its edges' counts (the same segments() walk).
+            for (std::uint32_t i = 0; i < r[0] + r[1] + r[2]; ++i) {
+                int j = 0;
+                std::uint32_t at = 0;
+                const bool found = locate(point[i], r, j, at);
+                w.side[i] = static_cast<std::uint8_t>(found ? j : 3);
+                w.step[i] = static_cast<std::uint16_t>(found ? at : 0);
+            }
+            w.last_factors = leaf_key(r);
+            w.last_counts = c;
+            w.last_flipped = p.flipped();
+            w.last_triangles = tables_->indices + 3u * tables_->offsets[p.pattern_index()].triangle;
+        }
+        const Counts n = w.last_counts;
+        if (n.index_count() > w.indices.size() - w.t) {
             w.ok = false;
             return;
         }
-        const std::span<std::uint32_t> indices = w.indices.subspan(w.t, n.index_count());
-        if (!p.emit(std::span<uniform::Point>(point, n.vertices), indices)) { // the stack buffer fits
-            w.ok = false;
-            return;
-        }
-        // The leaf's own segments per edge equal its edges' counts (the same segments() walk).
-        const std::array<std::uint32_t, 3> r{rounded(s.factor[0]), rounded(s.factor[1]),
-                                             rounded(s.factor[2])};
         const std::uint32_t boundary = r[0] + r[1] + r[2];
         std::uint32_t largest = 0; // of the boundary numbers
         for (std::uint32_t i = 0; i < boundary; ++i) {
-            int j = 0;
-            std::uint32_t step = 0;
-            number[i] = locate(point[i], r, j, step) ? edges[j].at(step) : 0;
+            number[i] = w.side[i] < 3 ? edges[w.side[i]].at(w.step[i]) : 0;
             largest = number[i] > largest ? number[i] : largest;
         }
         // The interior points are numbered in a row: mapped straight into the output, no scatter.
@@ -542,8 +641,18 @@ struct UniformSplit::Impl {
         for (std::uint32_t i = 0; i < boundary; ++i) w.vertices[number[i]] = mapped[i];
         map_points(s, std::span<const uniform::Point>(point + boundary, interior),
                    w.vertices.subspan(first_interior, interior));
-        for (std::uint32_t& index : indices) index = number[index];
-        w.t += n.index_count();
+        // UniformPatch's triangles in the shared layout: the stored bytes, corners 1 and 2 swapped when
+        // flipped (§3.4), renumbered as they are widened. (Copying the last leaf's indices with one add and
+        // rewriting only the slots of boundary points took as many instructions as this gather.)
+        const std::uint8_t* const in = w.last_triangles;
+        std::uint32_t* const out = w.indices.data() + w.t;
+        const std::uint32_t count = n.index_count();
+        if (w.last_flipped)
+            for (std::uint32_t k = 0; k < count; k += 3)
+                out[k] = number[in[k]], out[k + 1] = number[in[k + 2]], out[k + 2] = number[in[k + 1]];
+        else
+            for (std::uint32_t k = 0; k < count; ++k) out[k] = number[in[k]];
+        w.t += count;
     }
 
     // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.
@@ -571,7 +680,7 @@ struct UniformSplit::Impl {
         SplitNode(const Impl& impl, const Sub& sub, const std::array<EdgeRef, 3>& node_edges,
                   const std::array<std::uint32_t, 3>& node_split) noexcept
             : self(impl), s(sub), edges(node_edges), split(node_split),
-              pattern(impl.split_pattern(node_split)),
+              pattern(impl.split_pattern(sub, node_split)),
               boundary(node_split[0] + node_split[1] + node_split[2]) {
             for (int j = 0; j < 3; ++j) {
                 offset[j][split[j]] = edges[j].count;

@@ -57,6 +57,9 @@
 // pattern's points on the stack per split level (at most uniform_split_max_depth levels) and one leaf-sized
 // buffer; the shared layout's emit() also keeps one pattern-sized set of arrays per level: the stack is
 // bounded by depth x the largest stored pattern, whatever the factors (measured in docs/algorithm.md §3.5).
+// A leaf that rounds like the last one reuses that leaf's pattern output (§3.5, "Leaf reuse"); that state
+// lives in the walk of one call, so a UniformSplit (all its methods const) may be used from several threads
+// at once, as before.
 #pragma once
 #include <algorithm>
 #include <array>
