@@ -218,3 +218,50 @@ TEST_CASE("ctess mesh --backend webgpu: no node, no npm webgpu and a run past --
           std::string::npos);
     CHECK_FALSE(std::filesystem::exists(out));
 }
+
+// A `node` that starts a child and hangs (as a version manager's shim would): ctess must stop both and remove
+// its scratch folder, on a timeout and on SIGTERM, and must not depend on the SIGCHLD disposition it
+// inherits.
+TEST_CASE(
+    "ctess mesh --backend webgpu: a timeout or SIGTERM stops node's whole process group and removes the "
+    "scratch folder",
+    "[cli][mesh][bad-input]") {
+    const std::filesystem::path fake = std::filesystem::temp_directory_path() / "ctess_test_cli_backend_node";
+    const std::filesystem::path tmp = std::filesystem::temp_directory_path() / "ctess_test_cli_backend_tmp";
+    std::filesystem::remove_all(tmp);
+    std::filesystem::create_directories(fake);
+    std::filesystem::create_directories(tmp);
+    {
+        std::ofstream node(fake / "node");
+        node << "#!/bin/sh\nsleep 41.7 &\nsleep 41.7\n";
+    }
+    std::filesystem::permissions(fake / "node", std::filesystem::perms::owner_all);
+    const std::string out = scratch("webgpu_stopped.obj");
+    std::filesystem::remove(out);
+    const std::string env = "TMPDIR=" + tmp.string() + " PATH=" + fake.string() + ":$PATH ";
+    const std::string run = env + CTESS_CLI + " mesh --in " + box +
+                            " --dice-rate 3 --camera 1,2,3 --unwelded --backend webgpu --out " + out;
+    // [p]: the pattern does not match the shell that runs pgrep.
+    const auto sleepers = [] { return ctess::test::run_shell("pgrep -f 'slee[p] 41.7' | wc -l").out; };
+    Run r = ctess::test::run_shell(run + " --backend-timeout 0.5 2>&1");
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("it was killed") != std::string::npos);
+    CHECK(sleepers() == "0\n"); // the shim's child too
+    CHECK(std::filesystem::is_empty(tmp));
+    // With SIGCHLD ignored by the parent (inherited across exec), the wait still sees node's end.
+    r = ctess::test::run_shell(env + "env --ignore-signal=CHLD " + CTESS_CLI + " mesh --in " + box +
+                               " --dice-rate 3 --camera 1,2,3 --unwelded --backend webgpu --out " + out +
+                               " --backend-timeout 0.5 2>&1");
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("it was killed") != std::string::npos);
+    CHECK(sleepers() == "0\n");
+    // SIGTERM during the run: node's group stopped, the folder removed, ctess dies of SIGTERM (143).
+    r = ctess::test::run_shell("(" + run +
+                               " 2>&1 & p=$!; sleep 1; kill -TERM $p; wait $p; echo \"status $?\")");
+    CHECK(r.out.find("interrupted; node was stopped") != std::string::npos);
+    CHECK(r.out.find("status 143") != std::string::npos);
+    CHECK(sleepers() == "0\n");
+    CHECK(std::filesystem::is_empty(tmp));
+    CHECK_FALSE(std::filesystem::exists(out));
+    std::filesystem::remove_all(tmp);
+}

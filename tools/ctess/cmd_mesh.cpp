@@ -443,16 +443,14 @@ int run_mesh(int argc, char** argv) {
         // The counts on the CPU first, whatever the backend: the limit before any output is allocated, and
         // clamped_edges (the shaders do not count them).
         start = Clock::now();
-        {
-            std::vector<rt::PatchRecord> records(plan.view.patch_count());
-            rt::PipelineTotals counted;
-            const rt::PipelineStatus st =
-                rt::setup_patches(cp, uniform, plan.view, plan.options, records, counted);
-            if (st != rt::PipelineStatus::ok)
-                throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(st)));
-            check_triangle_limit(in, counted.triangles, max_triangles);
-            clamped_edges = counted.clamped_edges;
-        }
+        std::vector<rt::PatchRecord> records(plan.view.patch_count());
+        rt::PipelineTotals counted;
+        const rt::PipelineStatus st =
+            rt::setup_patches(cp, uniform, plan.view, plan.options, records, counted);
+        if (st != rt::PipelineStatus::ok)
+            throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(st)));
+        check_triangle_limit(in, counted.triangles, max_triangles);
+        clamped_edges = counted.clamped_edges;
         seconds.setup = seconds_since(start);
         start = Clock::now();
         UnweldedOutput output;
@@ -462,6 +460,18 @@ int run_mesh(int argc, char** argv) {
             output = webgpu_output(backend.run, plan.view, plan.options, device);
         else
             output = unwelded_output(cp, uniform, plan.view, plan.options, in, max_triangles);
+        // The records are exact on the GPU (docs/shaders.md, "Bit-exactness"): a GPU result whose records or
+        // totals are not the CPU's (a pass that did not run, a short read) is an error, never a file.
+        if (backend.name != "cpu" &&
+            (output.totals.vertices != counted.vertices || output.totals.triangles != counted.triangles ||
+             output.records.size() != records.size() ||
+             (!records.empty() && std::memcmp(output.records.data(), records.data(),
+                                              records.size() * sizeof(rt::PatchRecord)) != 0)))
+            throw std::runtime_error(fmt::format(
+                "--backend {}: the GPU's patch records or totals ({} vertices, {} triangles) differ from the "
+                "CPU's count ({} vertices, {} triangles)",
+                backend.name, output.totals.vertices, output.totals.triangles, counted.vertices,
+                counted.triangles));
         if (backend.name == "cpu") device = "ctess CPU pipeline";
         checksums = output_checksums(output);
         copy_vertices(output.vertices);

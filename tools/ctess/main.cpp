@@ -3,7 +3,9 @@
 #include "command_usage.hpp"
 #include "commands.hpp"
 #include "file_output.hpp"
+#include "mesh_backend.hpp"
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -81,6 +83,12 @@ int main(int argc, char** argv) {
         }
         ctess::cli::finish_standard_output(); // a full disk or a closed pipe is an error, not exit 0
         return status;
+    } catch (const ctess::cli::Interrupted& e) {
+        // Cleaned up by now (node's group killed, its scratch folder removed): die of the signal itself.
+        fmt::print(stderr, "ctess {}: {}\n", command, e.what());
+        std::signal(e.signal_number(), SIG_DFL);
+        std::raise(e.signal_number());
+        return 128 + e.signal_number();
     } catch (const ctess::cli::UsageError& e) {
         fmt::print(stderr, "ctess {}: error: {}\n(run 'ctess --help' for usage)\n", command, e.what());
         return 2;

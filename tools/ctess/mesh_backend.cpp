@@ -138,13 +138,49 @@ std::string log_tail(const std::string& path) {
     return text.empty() ? "(no output)" : text;
 }
 
-// Runs argv (argv[0] looked up on PATH, no shell), stdin from /dev/null, stdout and stderr into log; kills it
-// once timeout_seconds have passed. It stays in ctess's process group, so a Ctrl-C at the terminal stops
-// both. Returns the exit status, or -1 when it was killed by the timeout (or a signal: -2).
+// The signal that interrupted run_child's wait (SIGINT, SIGTERM, SIGHUP), or 0.
+volatile std::sig_atomic_t interrupted_by = 0;
+extern "C" void note_interrupt(int signal_number) {
+    interrupted_by = signal_number;
+}
+
+// For run_child's lifetime: SIGINT, SIGTERM and SIGHUP only noted (the wait loop then kills the child's group
+// and throws, so the scratch folder is removed; the signal is raised again after that, in ctess's main), and
+// SIGCHLD at its default (an ignored SIGCHLD, inherited from a parent, makes waitpid fail). Restored after.
+class ChildSignals {
+  public:
+    ChildSignals() {
+        interrupted_by = 0;
+        struct sigaction note {};
+        note.sa_handler = note_interrupt;
+        sigemptyset(&note.sa_mask);
+        for (unsigned k = 0; k < 3; ++k) sigaction(stops[k], &note, &saved_[k]);
+        struct sigaction default_action {};
+        default_action.sa_handler = SIG_DFL;
+        sigemptyset(&default_action.sa_mask);
+        sigaction(SIGCHLD, &default_action, &saved_child_);
+    }
+    ~ChildSignals() {
+        for (unsigned k = 0; k < 3; ++k) sigaction(stops[k], &saved_[k], nullptr);
+        sigaction(SIGCHLD, &saved_child_, nullptr);
+    }
+    ChildSignals(const ChildSignals&) = delete;
+    ChildSignals& operator=(const ChildSignals&) = delete;
+    static constexpr int stops[3] = {SIGINT, SIGTERM, SIGHUP};
+
+  private:
+    struct sigaction saved_[3] = {}, saved_child_ = {};
+};
+
+// Runs argv (argv[0] looked up on PATH, no shell), stdin from /dev/null, stdout and stderr into log, in a
+// process group of its own; kills that whole group (node and anything it started, e.g. a version manager's
+// shim) once timeout_seconds have passed or when ctess gets SIGINT, SIGTERM or SIGHUP. Returns the exit
+// status, -1 when the timeout killed it, -2 when a signal did. Throws Interrupted after an interrupt.
 int run_child(const std::vector<std::string>& args, const std::string& log, double timeout_seconds) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    const ChildSignals signals;
     posix_spawn_file_actions_t actions;
     posix_spawnattr_t attr;
     posix_spawn_file_actions_init(&actions);
@@ -152,10 +188,16 @@ int run_child(const std::vector<std::string>& args, const std::string& log, doub
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    sigset_t empty; // the default signal mask, whatever ctess's is
+    sigset_t empty; // the default signal mask and dispositions, whatever ctess's are
     sigemptyset(&empty);
     posix_spawnattr_setsigmask(&attr, &empty);
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    for (const int k : ChildSignals::stops) sigaddset(&defaults, k);
+    sigaddset(&defaults, SIGCHLD);
+    posix_spawnattr_setsigdefault(&attr, &defaults);
+    posix_spawnattr_setpgroup(&attr, 0);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
     pid_t pid = 0;
     const int spawned = posix_spawnp(&pid, argv[0], &actions, &attr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -168,20 +210,32 @@ int run_child(const std::vector<std::string>& args, const std::string& log, doub
     if (spawned != 0)
         throw std::runtime_error(
             fmt::format("--backend webgpu: cannot start '{}': {}", args[0], std::strerror(spawned)));
+    const auto kill_group = [pid] {
+        kill(-pid, SIGKILL);
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+    };
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
     for (auto pause = std::chrono::milliseconds(1);;
          pause = std::min(2 * pause, std::chrono::milliseconds(50))) {
         int status = 0;
         const pid_t done = waitpid(pid, &status, WNOHANG);
         if (done == pid) {
+            kill(-pid, SIGKILL); // whatever node left running in its group
             return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
         }
-        if (done < 0 && errno != EINTR)
-            throw std::runtime_error(fmt::format("--backend webgpu: waitpid: {}", std::strerror(errno)));
+        if (done < 0 && errno != EINTR) {
+            const int error = errno;
+            kill_group();
+            throw std::runtime_error(fmt::format("--backend webgpu: waitpid: {}", std::strerror(error)));
+        }
+        if (interrupted_by != 0) {
+            kill_group();
+            throw Interrupted(interrupted_by);
+        }
         if (std::chrono::steady_clock::now() >= deadline) {
-            kill(pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-            }
+            kill_group();
             return -1;
         }
         std::this_thread::sleep_for(pause);
@@ -221,7 +275,9 @@ UnweldedOutput vulkan_output([[maybe_unused]] const GpuRun& run, [[maybe_unused]
 
 UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
                              std::string& device) {
-    const std::string module = (std::filesystem::path(run.shader_dir) / "ctess_mesh_node.mjs").string();
+    // Absolute, so that a shader folder named like an option (`-x`) is never read by node as one.
+    const std::string module =
+        std::filesystem::absolute(std::filesystem::path(run.shader_dir) / "ctess_mesh_node.mjs").string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(module, ec))
         throw std::runtime_error(

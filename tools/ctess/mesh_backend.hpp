@@ -6,6 +6,7 @@
 
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
+#include <stdexcept>
 #include <string>
 
 namespace ctess::cli {
@@ -14,6 +15,19 @@ struct GpuRun {
     std::string shader_dir; // the generated shaders, the table blobs and the node module
     unsigned max_factor = 64;
     double timeout_seconds = 600; // webgpu: node is killed after this long (--backend-timeout)
+};
+
+// SIGINT, SIGTERM or SIGHUP while node ran: node's process group is killed and the scratch folder removed on
+// the way out; ctess's main then raises the signal again (the exit status a shell expects of it).
+class Interrupted : public std::runtime_error {
+  public:
+    explicit Interrupted(int signal_number)
+        : std::runtime_error("--backend webgpu: interrupted; node was stopped"),
+          signal_number_(signal_number) {}
+    int signal_number() const noexcept { return signal_number_; }
+
+  private:
+    int signal_number_;
 };
 
 // Whether this ctess was built with ctess::vulkan (Debian libvulkan-dev).

@@ -157,6 +157,31 @@ TessVertex tess_vertex(DomainPoint base, const SurfacePoint& s) {
             {s.uv[0], s.uv[1]}};
 }
 
+// A base triangle's points in batches, for the emits without PN-AEN: surface_vertex's values (bit for bit)
+// through evaluate_surface_points, without a call per point. Made once per emit: its arrays zero-initialise.
+class TrianglePointBatch {
+  public:
+    static constexpr std::size_t size = 64;
+    // The k-th point of the batch (k < size), base weights.
+    DomainPoint& base(std::size_t k) { return base_[k]; }
+    // Evaluates the first count points (count <= size) on the triangle with the patch's surface and
+    // displacement; point(k) is then their surface point.
+    void evaluate(const SurfaceCorner (&corner)[3], const PatchSurface& surface, std::size_t count) {
+        evaluate_surface_points(std::span(point_.data(), count), corner, std::span(base_.data(), count),
+                                surface.options);
+        if (surface.displace.source == nullptr) return; // displace_triangle_point would return at once
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t w[3] = {one - base_[k].u - base_[k].v, base_[k].u, base_[k].v};
+            displace_triangle_point(surface.displace, w, point_[k]); // §8
+        }
+    }
+    const SurfacePoint& point(std::size_t k) const { return point_[k]; }
+
+  private:
+    std::array<DomainPoint, size> base_;
+    std::array<SurfacePoint, size> point_;
+};
+
 // The output vertex of exact base weights (w1, w2) = (base.u, base.v), units of cp::fixed_one.
 TessVertex surface_vertex(const SurfaceCorner (&corner)[3], DomainPoint base, const PatchSurface& surface) {
     const std::uint32_t w[3] = {one - base.u - base.v, base.u, base.v};
@@ -773,9 +798,7 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
     }
     if (vertex_sum > vertices.size() || 3 * triangle_sum > indices.size())
         return PipelineStatus::span_too_small;
-    std::array<SurfacePoint, 64>
-        batch; // a triangle's points in batches, made once (their types zero-initialise)
-    std::array<DomainPoint, 64> batch_base;
+    TrianglePointBatch batch;
     for (std::uint32_t p = 0; p < count; ++p) {
         const PatchRecord& rec = patches[p];
         if (rec.vertex_count == 0) continue;
@@ -792,21 +815,14 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
                 for (std::uint32_t i = 0; i < rec.vertex_count; ++i)
                     out_vertex[i] = surface_vertex(corner, family.base_point(patch, rec, i), surface);
             }
-            // Without PN-AEN: the same values in batches (evaluate_surface_points, as the welded emit).
-            for (std::uint32_t i = 0; i < rec.vertex_count && !surface.aen; i += batch.size()) {
-                const auto n =
-                    static_cast<std::uint32_t>(std::min<std::size_t>(batch.size(), rec.vertex_count - i));
-                for (std::uint32_t k = 0; k < n; ++k) batch_base[k] = family.base_point(patch, rec, i + k);
-                evaluate_surface_points(std::span(batch.data(), n), corner, std::span(batch_base.data(), n),
-                                        surface.options);
-                for (std::uint32_t k = 0; k < n; ++k) {
-                    const DomainPoint b = batch_base[k];
-                    if (surface.displace.source != nullptr) {
-                        const std::uint32_t weights[3] = {one - b.u - b.v, b.u, b.v};
-                        displace_triangle_point(surface.displace, weights, batch[k]); // §8
-                    }
-                    out_vertex[i + k] = tess_vertex(b, batch[k]);
-                }
+            // Without PN-AEN: the same values in batches.
+            for (std::uint32_t i = 0; i < rec.vertex_count && !surface.aen; i += TrianglePointBatch::size) {
+                const auto n = static_cast<std::uint32_t>(
+                    std::min<std::size_t>(TrianglePointBatch::size, rec.vertex_count - i));
+                for (std::uint32_t k = 0; k < n; ++k) batch.base(k) = family.base_point(patch, rec, i + k);
+                batch.evaluate(corner, surface, n);
+                for (std::uint32_t k = 0; k < n; ++k)
+                    out_vertex[i + k] = tess_vertex(batch.base(k), batch.point(k));
             }
             for (std::uint32_t t = 0; t < rec.triangle_count; ++t) {
                 const std::array<std::uint32_t, 3> tri = patch.triangle(t);
@@ -1184,39 +1200,28 @@ class PatchWeld {
         return true;
     }
 
-    // run_shape's vertices for a base triangle without PN-AEN: the same values as surface_vertex per point,
-    // evaluated in batches (evaluate_surface_points), the skipped shared points left out.
+    // run_shape's vertices for a base triangle without PN-AEN: surface_vertex's values in batches, the
+    // skipped shared points left out.
     void write_triangle_points(const WeldShape& s, const std::uint32_t* ids, std::span<TessVertex> vertices) {
-        constexpr std::size_t batch = point_batch;
-        DomainPoint* base = batch_base_.data();
-        std::uint32_t* id = batch_id_.data();
-        bool* shared = batch_shared_.data();
-        SurfacePoint* point = batch_point_.data();
         std::size_t j = 0;
         while (j < s.eval_id.size()) {
             std::size_t count = 0;
-            for (; j < s.eval_id.size() && count < batch; ++j) {
+            for (; j < s.eval_id.size() && count < TrianglePointBatch::size; ++j) {
                 const std::uint32_t local = s.eval_id[j];
                 const bool on_edge = local < s.interior_base; // a corner or an edge point
                 if (on_edge && written_ != nullptr) {
                     if (!take(ids[local])) continue;
                     mark(ids[local]);
                 }
-                base[count] = s.eval_point[j];
-                id[count] = ids[local];
-                shared[count] = on_edge;
+                batch_.base(count) = s.eval_point[j];
+                batch_id_[count] = ids[local];
+                batch_shared_[count] = on_edge;
                 ++count;
             }
-            evaluate_surface_points(std::span(point, count), corner_, std::span(base, count),
-                                    surface_.options);
-            if (surface_.displace.source != nullptr) {
-                for (std::size_t k = 0; k < count; ++k) {
-                    const std::uint32_t w[3] = {one - base[k].u - base[k].v, base[k].u, base[k].v};
-                    displace_triangle_point(surface_.displace, w, point[k]); // §8
-                }
-            }
+            batch_.evaluate(corner_, surface_, count);
             for (std::size_t k = 0; k < count; ++k)
-                vertices[id[k]] = tess_vertex(shared[k] ? DomainPoint{0, 0} : base[k], point[k]);
+                vertices[batch_id_[k]] =
+                    tess_vertex(batch_shared_[k] ? DomainPoint{0, 0} : batch_.base(k), batch_.point(k));
         }
     }
 
@@ -1332,12 +1337,10 @@ class PatchWeld {
     std::vector<DomainPoint> slot_point_; // build_shape: each slot's domain point
     std::vector<std::uint32_t> seen_;     // build_shape: local id -> its eval entry
     std::vector<std::uint32_t> ids_;      // run_shape: local id -> output id
-    // write_triangle_points' batch, kept here so that it is not zeroed per batch (its types zero-initialise).
-    static constexpr std::size_t point_batch = 64;
-    std::array<DomainPoint, point_batch> batch_base_;
-    std::array<std::uint32_t, point_batch> batch_id_{};
-    std::array<bool, point_batch> batch_shared_{};
-    std::array<SurfacePoint, point_batch> batch_point_;
+    // write_triangle_points' batch: each point's output id, and whether it is a corner or an edge point.
+    TrianglePointBatch batch_;
+    std::array<std::uint32_t, TrianglePointBatch::size> batch_id_{};
+    std::array<bool, TrianglePointBatch::size> batch_shared_{};
     EdgeParams params_[4];
     std::uint32_t edge_first_[3] = {};
     std::uint64_t* written_ = nullptr;

@@ -86,7 +86,7 @@ PnCubic pn_cubic(const SurfaceCorner (&c)[3], const Vec3 (&b)[6], float w0, floa
 }
 
 // The flat interpolation of a point strictly inside the triangle, its normal not yet normalised: the one
-// source of interior_point's flat part and of evaluate_surface_points' loop.
+// source of the flat part of interior_point, aen_interior_point and evaluate_surface_points' loop.
 inline SurfacePoint flat_interior(const SurfaceCorner (&c)[3], float w0, float w1, float w2) {
     SurfacePoint out;
     out.position = w0 * c[0].position + w1 * c[1].position + w2 * c[2].position;
@@ -315,11 +315,8 @@ SurfacePoint aen_edge_point(const SurfaceCorner& a, Vec3 a_adj, const SurfaceCor
 // (en[e] = the neighbour's normals on edge c[e] -> c[e+1]); the centre b111 from them as in PN.
 SurfacePoint aen_interior_point(const SurfaceCorner (&c)[3], const EdgeNormals (&en)[3], float w0, float w1,
                                 float w2, float alpha) {
-    SurfacePoint out;
-    const Vec3 flat_p = w0 * c[0].position + w1 * c[1].position + w2 * c[2].position;
-    const Vec3 flat_n = w0 * c[0].normal + w1 * c[1].normal + w2 * c[2].normal;
-    out.uv[0] = w0 * c[0].uv[0] + w1 * c[1].uv[0] + w2 * c[2].uv[0];
-    out.uv[1] = w0 * c[0].uv[1] + w1 * c[1].uv[1] + w2 * c[2].uv[1];
+    SurfacePoint out = flat_interior(c, w0, w1, w2);
+    const Vec3 flat_p = out.position, flat_n = out.normal;
     const PnCubic pn = pn_cubic(c,
                                 {aen_control(c[0].position, c[0].normal, en[0].at_from, c[1].position),
                                  aen_control(c[1].position, c[1].normal, en[0].at_to, c[0].position),

@@ -55,8 +55,8 @@ SurfacePoint evaluate_surface(const SurfaceCorner (&c)[3], const std::uint32_t (
 
 // Many points of one triangle at once. Fills: out[k] = evaluate_surface(c, {fixed_one - base[k].u -
 // base[k].v, base[k].u, base[k].v}, opt), bit for bit, for k < min(out.size(), base.size()) (one SurfacePoint
-// per base point). The flat surface's interior points run without a call per point (the welded pipeline's
-// patches, docs/algorithm.md §7.4); every other point goes through evaluate_surface.
+// per base point). The flat surface's interior points run without a call per point (the mesh pipeline's
+// emits, welded and unwelded, docs/algorithm.md §7); every other point goes through evaluate_surface.
 void evaluate_surface_points(std::span<SurfacePoint> out, const SurfaceCorner (&c)[3],
                              std::span<const DomainPoint> base, const SurfaceOptions& opt) noexcept;
 
