@@ -83,8 +83,12 @@ def optimized_size(spv):
 
 def passes(d):
     """The pass names of max 64, from the generated layout (one source with the hosts)."""
-    with open(f"{d}/ctess_mesh_64.layout.json") as f:
-        return [x["name"] for x in json.load(f)["passes"]]
+    try:
+        with open(f"{d}/ctess_mesh_64.layout.json") as f:
+            return [x["name"] for x in json.load(f)["passes"]]
+    except FileNotFoundError:
+        sys.exit(f"spirv_stats.py: {d} has no ctess_mesh_64.layout.json (shaders from before it was generated: "
+                 "check out this script from the same commit)")
 
 
 def main():
