@@ -233,12 +233,17 @@ TEST_CASE(
     std::filesystem::create_directories(tmp);
     {
         std::ofstream node(fake / "node");
-        node << "#!/bin/sh\nsleep 41.7 &\nsleep 41.7\n";
+        // Exits at once where CTESS_TEST_NODE_EXIT is set; otherwise marks that it started, then hangs.
+        node << "#!/bin/sh\n[ -n \"$CTESS_TEST_NODE_EXIT\" ] && exit 0\ntouch \"$CTESS_TEST_NODE_MARK\"\n"
+                "sleep 41.7 &\nsleep 41.7\n";
     }
     std::filesystem::permissions(fake / "node", std::filesystem::perms::owner_all);
     const std::string out = scratch("webgpu_stopped.obj");
     std::filesystem::remove(out);
-    const std::string env = "TMPDIR=" + tmp.string() + " PATH=" + fake.string() + ":$PATH ";
+    const std::filesystem::path mark = fake / "started";
+    std::filesystem::remove(mark);
+    const std::string env = "TMPDIR=" + tmp.string() + " PATH=" + fake.string() + ":$PATH " +
+                            "CTESS_TEST_NODE_MARK=" + mark.string() + " ";
     const std::string run = env + CTESS_CLI + " mesh --in " + box +
                             " --dice-rate 3 --camera 1,2,3 --unwelded --backend webgpu --out " + out;
     // [p]: the pattern does not match the shell that runs pgrep.
@@ -248,16 +253,21 @@ TEST_CASE(
     CHECK(r.out.find("it was killed") != std::string::npos);
     CHECK(sleepers() == "0\n"); // the shim's child too
     CHECK(std::filesystem::is_empty(tmp));
-    // With SIGCHLD ignored by the parent (inherited across exec), the wait still sees node's end.
-    r = ctess::test::run_shell(env + "env --ignore-signal=CHLD " + CTESS_CLI + " mesh --in " + box +
-                               " --dice-rate 3 --camera 1,2,3 --unwelded --backend webgpu --out " + out +
-                               " --backend-timeout 0.5 2>&1");
+    // With SIGCHLD ignored by the parent (inherited across exec) the system reaps node itself; the wait must
+    // still see it end (and then find no result), not fail with "No child processes".
+    r = ctess::test::run_shell(
+        env + "CTESS_TEST_NODE_EXIT=1 env --ignore-signal=CHLD " + CTESS_CLI + " mesh --in " + box +
+        " --dice-rate 3 --camera 1,2,3 --unwelded --backend webgpu --out " + out + " 2>&1");
     CHECK(r.exit_code == 1);
-    CHECK(r.out.find("it was killed") != std::string::npos);
-    CHECK(sleepers() == "0\n");
-    // SIGTERM during the run: node's group stopped, the folder removed, ctess dies of SIGTERM (143).
-    r = ctess::test::run_shell("(" + run +
-                               " 2>&1 & p=$!; sleep 1; kill -TERM $p; wait $p; echo \"status $?\")");
+    CHECK(r.out.find("the result file of node is malformed") != std::string::npos);
+    CHECK(r.out.find("waitpid") == std::string::npos);
+    CHECK(std::filesystem::is_empty(tmp));
+    // SIGTERM once node has started: node's group stopped, the folder removed, ctess dies of SIGTERM (143).
+    std::filesystem::remove(mark);
+    r = ctess::test::run_shell(
+        "(" + run + " 2>&1 & p=$!; i=0; while [ ! -e " + mark.string() +
+        " ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done; kill -TERM $p; wait $p; "
+        "echo \"status $?\")");
     CHECK(r.out.find("interrupted; node was stopped") != std::string::npos);
     CHECK(r.out.find("status 143") != std::string::npos);
     CHECK(sleepers() == "0\n");
