@@ -443,36 +443,38 @@ int run_mesh(int argc, char** argv) {
         // The counts on the CPU first, whatever the backend: the limit before any output is allocated, and
         // clamped_edges (the shaders do not count them).
         start = Clock::now();
-        std::vector<rt::PatchRecord> records(plan.view.patch_count());
-        rt::PipelineTotals counted;
+        UnweldedOutput counted; // the records and totals; the CPU backend emits from them
+        counted.records.resize(plan.view.patch_count());
         const rt::PipelineStatus st =
-            rt::setup_patches(cp, uniform, plan.view, plan.options, records, counted);
+            rt::setup_patches(cp, uniform, plan.view, plan.options, counted.records, counted.totals);
         if (st != rt::PipelineStatus::ok)
             throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(st)));
-        check_triangle_limit(in, counted.triangles, max_triangles);
-        clamped_edges = counted.clamped_edges;
+        check_triangle_limit(in, counted.totals.triangles, max_triangles);
+        clamped_edges = counted.totals.clamped_edges;
         seconds.setup = seconds_since(start);
         start = Clock::now();
         UnweldedOutput output;
-        if (backend.name == "vulkan")
-            output = vulkan_output(backend.run, plan.view, plan.options, device);
-        else if (backend.name == "webgpu")
-            output = webgpu_output(backend.run, plan.view, plan.options, device);
-        else
-            output = unwelded_output(cp, uniform, plan.view, plan.options, in, max_triangles);
-        // The records are exact on the GPU (docs/shaders.md, "Bit-exactness"): a GPU result whose records or
-        // totals are not the CPU's (a pass that did not run, a short read) is an error, never a file.
-        if (backend.name != "cpu" &&
-            (output.totals.vertices != counted.vertices || output.totals.triangles != counted.triangles ||
-             output.records.size() != records.size() ||
-             (!records.empty() && std::memcmp(output.records.data(), records.data(),
-                                              records.size() * sizeof(rt::PatchRecord)) != 0)))
-            throw std::runtime_error(fmt::format(
-                "--backend {}: the GPU's patch records or totals ({} vertices, {} triangles) differ from the "
-                "CPU's count ({} vertices, {} triangles)",
-                backend.name, output.totals.vertices, output.totals.triangles, counted.vertices,
-                counted.triangles));
-        if (backend.name == "cpu") device = "ctess CPU pipeline";
+        if (backend.name == "cpu") {
+            output = std::move(counted);
+            emit_unwelded(cp, uniform, plan.view, plan.options, in, output);
+            device = "ctess CPU pipeline";
+        } else {
+            output = backend.name == "vulkan" ? vulkan_output(backend.run, plan.view, plan.options, device)
+                                              : webgpu_output(backend.run, plan.view, plan.options, device);
+            // The records are exact on the GPU (docs/shaders.md, "Bit-exactness"): a GPU result whose records
+            // or totals are not the CPU's (a pass that did not run, a short read) is an error, never a file.
+            if (output.totals.vertices != counted.totals.vertices ||
+                output.totals.triangles != counted.totals.triangles ||
+                output.records.size() != counted.records.size() ||
+                (!counted.records.empty() &&
+                 std::memcmp(output.records.data(), counted.records.data(),
+                             counted.records.size() * sizeof(rt::PatchRecord)) != 0))
+                throw std::runtime_error(fmt::format(
+                    "--backend {}: the GPU's patch records or totals ({} vertices, {} triangles) differ from "
+                    "the CPU's count ({} vertices, {} triangles)",
+                    backend.name, output.totals.vertices, output.totals.triangles, counted.totals.vertices,
+                    counted.totals.triangles));
+        }
         checksums = output_checksums(output);
         copy_vertices(output.vertices);
         mesh.triangles = std::move(output.indices);

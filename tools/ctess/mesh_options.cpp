@@ -97,14 +97,20 @@ UnweldedOutput unwelded_output(const rt::CpTableSet& cp, const rt::UniformTableS
         throw std::runtime_error(
             fmt::format("{}: the tessellated model would have {} triangles, above the limit of {}", name,
                         out.totals.triangles, max_triangles));
-    if (status == rt::PipelineStatus::ok) {
-        out.vertices.resize(out.totals.vertices);
-        out.indices.resize(3 * std::size_t{out.totals.triangles});
-        status = rt::emit_mesh(cp, uniform, view, options, out.records, out.vertices, out.indices);
-    }
     if (status != rt::PipelineStatus::ok)
         throw std::runtime_error(fmt::format("{}: {}", name, rt::pipeline_status_message(status)));
+    emit_unwelded(cp, uniform, view, options, name, out);
     return out;
+}
+
+void emit_unwelded(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform, const rt::MeshView& view,
+                   const rt::PipelineOptions& options, const std::string& name, UnweldedOutput& out) {
+    out.vertices.resize(out.totals.vertices);
+    out.indices.resize(3 * std::size_t{out.totals.triangles});
+    const rt::PipelineStatus status =
+        rt::emit_mesh(cp, uniform, view, options, out.records, out.vertices, out.indices);
+    if (status != rt::PipelineStatus::ok)
+        throw std::runtime_error(fmt::format("{}: {}", name, rt::pipeline_status_message(status)));
 }
 
 } // namespace ctess::cli

@@ -36,5 +36,9 @@ struct UnweldedOutput {
 UnweldedOutput unwelded_output(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform,
                                const rt::MeshView& view, const rt::PipelineOptions& options,
                                const std::string& name, std::uint32_t max_triangles);
+// Its second half: fills out.vertices and out.indices from out.records and out.totals, setup_patches'
+// counts for the same view and options. Throws std::runtime_error naming `name` when emit_mesh refuses.
+void emit_unwelded(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform, const rt::MeshView& view,
+                   const rt::PipelineOptions& options, const std::string& name, UnweldedOutput& out);
 
 } // namespace ctess::cli

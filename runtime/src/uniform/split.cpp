@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include <ctess/uniform/factor.hpp>
@@ -533,9 +534,7 @@ struct UniformSplit::Impl {
         // reuse"): its rounded factors, counts, stored triangles, its points (local units) and, per boundary
         // point, the leaf side and step it lies at (locate()), all functions of the rounded factors.
         std::uint32_t last_factors = 0; // leaf_key() of the last leaf; 0: none
-        Counts last_counts;
-        const std::uint8_t* last_triangles = nullptr;
-        bool last_flipped = false;
+        std::optional<UniformPatch> last_patch;
         Uninitialised<uniform::Point, bounds.vertices> local;
         std::array<std::uint8_t, bounds.vertices> side;  // boundary point -> leaf side j (3: none)
         std::array<std::uint16_t, bounds.vertices> step; // boundary point -> its step on that side
@@ -611,11 +610,9 @@ struct UniformSplit::Impl {
                 w.step[i] = static_cast<std::uint16_t>(found ? at : 0);
             }
             w.last_factors = leaf_key(r);
-            w.last_counts = c;
-            w.last_flipped = p.flipped();
-            w.last_triangles = tables_->indices + 3u * tables_->offsets[p.pattern_index()].triangle;
+            w.last_patch.emplace(p);
         }
-        const Counts n = w.last_counts;
+        const Counts n = w.last_patch->counts();
         if (n.index_count() > w.indices.size() - w.t) {
             w.ok = false;
             return;
@@ -641,18 +638,11 @@ struct UniformSplit::Impl {
         for (std::uint32_t i = 0; i < boundary; ++i) w.vertices[number[i]] = mapped[i];
         map_points(s, std::span<const uniform::Point>(point + boundary, interior),
                    w.vertices.subspan(first_interior, interior));
-        // UniformPatch's triangles in the shared layout: the stored bytes, corners 1 and 2 swapped when
-        // flipped (§3.4), renumbered as they are widened. (Copying the last leaf's indices with one add and
-        // rewriting only the slots of boundary points took as many instructions as this gather.)
-        const std::uint8_t* const in = w.last_triangles;
-        std::uint32_t* const out = w.indices.data() + w.t;
-        const std::uint32_t count = n.index_count();
-        if (w.last_flipped)
-            for (std::uint32_t k = 0; k < count; k += 3)
-                out[k] = number[in[k]], out[k + 1] = number[in[k + 2]], out[k + 2] = number[in[k + 1]];
-        else
-            for (std::uint32_t k = 0; k < count; ++k) out[k] = number[in[k]];
-        w.t += count;
+        // The triangles renumbered as they are widened from the stored bytes. (Copying the last leaf's
+        // indices with one add and rewriting only the slots of boundary points took as many instructions as
+        // this gather.)
+        w.last_patch->emit_triangles_numbered(w.indices.data() + w.t, number.data());
+        w.t += n.index_count();
     }
 
     // A split node numbers its pattern's interior vertices and interior edges' points, then its subpatches.

@@ -73,6 +73,17 @@ class UniformPatch {
         return uniform::pattern_index(sorted_[0], sorted_[1], sorted_[2]);
     }
 
+    // Fills: out (3 * counts().triangles indices) with the triangles of the shared layout, vertex i written
+    // as number[i] (number: one entry per vertex). For a caller that numbers the vertices itself, as the
+    // welded UniformSplit's leaves do (docs/algorithm.md §3.5); a provoking patch's copies are not applied.
+    void emit_triangles_numbered(std::uint32_t* out, const std::uint32_t* number) const noexcept {
+        const auto through = [number](std::uint8_t i) { return number[i]; };
+        if (flip_)
+            widen_triangles<true>(out, indices_, triangles_, through);
+        else
+            widen_triangles<false>(out, indices_, triangles_, through);
+    }
+
     // Vertex i as an exact point (u, v), units of 65534; {0, 0} when i >= counts().vertices. In the
     // provoking layout, vertices from distinct_vertices() on are copies.
     uniform::Point vertex(std::uint32_t i) const noexcept {
@@ -155,10 +166,11 @@ class UniformPatch {
     // The stored index bytes widened, then the copied triangles' first indices overwritten in triangle order
     // (their rank is the running count, what copies_before gives triangle(p)).
     void emit_triangles(std::uint32_t* out, std::uint32_t base) const noexcept {
+        const auto plus_base = [base](std::uint8_t i) { return base + i; };
         if (flip_)
-            widen_triangles<true>(out, indices_, triangles_, base);
+            widen_triangles<true>(out, indices_, triangles_, plus_base);
         else
-            widen_triangles<false>(out, indices_, triangles_, base);
+            widen_triangles<false>(out, indices_, triangles_, plus_base);
         if (copies_ == 0) return;
         constexpr std::uint32_t bits = uniform::tables::copy_bits_per_word;
         const std::uint32_t first = first_triangle_, end = first_triangle_ + triangles_;
@@ -173,17 +185,18 @@ class UniformPatch {
         }
     }
 
-    // Triangles' index bytes to 32-bit indices plus base: a flat widening loop (vectorised by the compiler),
-    // or one pass of corner triples with corners 1 and 2 swapped when flipped.
-    template <bool flipped>
+    // Triangles' index bytes to 32-bit indices through index (plus a base, or a caller's numbering): a flat
+    // loop (vectorised by the compiler for a base), or one pass of corner triples with corners 1 and 2
+    // swapped when flipped.
+    template <bool flipped, class Index>
     static void widen_triangles(std::uint32_t* out, const std::uint8_t* in, std::uint32_t triangles,
-                                std::uint32_t base) noexcept {
+                                Index index) noexcept {
         const std::size_t n = std::size_t{3} * triangles;
         if constexpr (flipped)
             for (std::size_t k = 0; k < n; k += 3)
-                out[k] = base + in[k], out[k + 1] = base + in[k + 2], out[k + 2] = base + in[k + 1];
+                out[k] = index(in[k]), out[k + 1] = index(in[k + 2]), out[k + 2] = index(in[k + 1]);
         else
-            for (std::size_t k = 0; k < n; ++k) out[k] = base + in[k];
+            for (std::size_t k = 0; k < n; ++k) out[k] = index(in[k]);
     }
 
     std::array<std::uint32_t, 3> sorted_{1, 1, 1};
