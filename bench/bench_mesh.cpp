@@ -11,7 +11,8 @@
 // calling thread: setup_patches, emit_mesh (the unwelded pipeline), setup_welded, emit_welded_mesh (what
 // ctess mesh runs), and a memcpy of each stage's output bytes, so that the stages can be read against the
 // cost of only writing their output. Counter tri/s: the stage's output triangles per second (setup included
-// in its own line only).
+// in its own line only). mesh_pipeline/torus100k/emit_welded_mesh_ranges/threads:N: emit_welded_mesh in N
+// ranges of patches (welded_range), one per thread.
 #include <ctess/core/config.hpp>
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
@@ -294,6 +295,34 @@ void torus_stage(benchmark::State& state) {
     torus_counters(state, welded ? run.welded_totals.triangles : run.totals.triangles, bytes);
 }
 
+// emit_welded_mesh on N threads: one range of patches each (welded_range, equal output triangles), the
+// calling thread takes range 0. Real time.
+void torus_welded_ranges(benchmark::State& state) {
+    TorusRun& run = torus_run();
+    if (!run.ok) {
+        state.SkipWithError("the pipeline refused the torus");
+        return;
+    }
+    const auto threads = static_cast<std::uint32_t>(state.range(0));
+    std::atomic<bool> ok = true;
+    for (auto _ : state) {
+        std::vector<std::thread> pool;
+        const auto range = [&](std::uint32_t k) {
+            if (rt::emit_welded_mesh(tables(), run.mesh, run.options,
+                                     std::span(run.edges).first(run.welded_totals.edges), run.welded_patches,
+                                     rt::welded_range(run.welded_patches, k, threads), run.welded_vertices,
+                                     run.welded_indices) != rt::PipelineStatus::ok)
+                ok = false;
+        };
+        for (std::uint32_t k = 1; k < threads; ++k) pool.emplace_back(range, k);
+        range(0);
+        for (std::thread& t : pool) t.join();
+        benchmark::ClobberMemory();
+    }
+    if (!ok) state.SkipWithError("the pipeline refused its own buffers");
+    torus_counters(state, run.welded_totals.triangles, run.welded_output_bytes());
+}
+
 } // namespace
 
 // One core: each stage on the calling thread.
@@ -314,6 +343,14 @@ BENCHMARK(torus_stage<TorusStage::emit_welded_mesh>)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(torus_stage<TorusStage::memcpy_welded>)
     ->Name("mesh_pipeline/torus100k/memcpy_welded")
+    ->Unit(benchmark::kMillisecond);
+// emit_welded_mesh in ranges on 1 and 2 threads (real time).
+BENCHMARK(torus_welded_ranges)
+    ->Name("mesh_pipeline/torus100k/emit_welded_mesh_ranges")
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
 // Real time: the threads' CPU time is not the main thread's.

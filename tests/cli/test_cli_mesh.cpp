@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -132,6 +133,38 @@ TEST_CASE("ctess mesh: PN-AEN closes the cracks plain PN opens at split normals 
     CHECK(aen == flat);
 }
 
+TEST_CASE("ctess mesh --threads: the welded file of 2 and 3 threads is the one thread's, byte for byte",
+          "[cli][mesh][real]") {
+    // WusonOBJ (quads and triangles, seams) and spider.obj (open, split normals), with every family the
+    // welded ranges treat apart: CP, uniform splitting above N, and PN.
+    std::vector<std::pair<std::string, std::string>> runs = {
+        {assimp_models + "/OBJ/WusonOBJ.obj", " --factor 12 --surface pn"},
+        {assimp_models + "/OBJ/spider.obj", " --dice-rate 1 --camera 0,0,300 --pattern uniform"},
+    };
+    for (const auto& [in, options] : runs) {
+        if (!std::filesystem::exists(in)) {
+            WARN("assimp-testmodels not installed: " << in << " skipped");
+            continue;
+        }
+        std::string one;
+        for (const char* threads : {"1", "2", "3"}) {
+            const std::string out = scratch(std::string("threads_") + threads + ".glb");
+            std::filesystem::remove(out);
+            const nlohmann::json s =
+                stats("--in " + in + options + " --out " + out + " --threads " + threads);
+            INFO(in << options << " --threads " << threads);
+            CHECK(s["threads"] == std::stoi(threads));
+            std::ifstream file(out, std::ios::binary);
+            const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+            REQUIRE(bytes.size() > 1000);
+            if (one.empty())
+                one = bytes;
+            else
+                CHECK(bytes == one);
+        }
+    }
+}
+
 TEST_CASE("ctess mesh: OBJ and glTF outputs read back as the same closed mesh, PLY is sized by its header",
           "[cli][mesh]") {
     const std::string in = scratch("mixed_cube_out.obj");
@@ -184,6 +217,9 @@ TEST_CASE("ctess mesh: bad input is a clear error and writes nothing", "[cli][me
         {"--in " + cube + " --factor 64 --max-triangles 1000 --out " + out, 1,
          "49152 triangles, above the limit of 1000"},
         {"--in " + cube + " --factor 2 --max-triangles 0 --out " + out, 2, "--max-triangles"},
+        {"--in " + cube + " --factor 2 --threads 0 --out " + out, 2, "--threads"},
+        {"--in " + cube + " --factor 2 --threads 65 --out " + out, 2, "--threads"},
+        {"--in " + cube + " --factor 2 --threads 2 --unwelded --out " + out, 2, "--threads"},
     };
     ctess::test::check_refused(cases, out);
 }

@@ -7,10 +7,12 @@
 // every index names an emitted vertex of its own patch and every barycentric lies in the base triangle; on
 // tampered records it is ok or bad_patch_record, and on any failure nothing is written. Then quads, arbitrary
 // position ids and PN-AEN adjacency indices (in and out of range) through the welded output (setup_welded,
-// emit_welded_mesh): ok or a limit, every index names a written vertex, and the counts are what emit wrote.
+// emit_welded_mesh): ok or a limit, every index names a written vertex, and the counts are what emit wrote;
+// two ranges of patches cut at a fuzzed patch write the same bytes.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
@@ -151,5 +153,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     CTESS_FUZZ_CHECK(rt::emit_welded_mesh(tables, uniform, mixed, options, edges, patches, wv, wi) ==
                      PipelineStatus::ok);
     for (const std::uint32_t i : wi) CTESS_FUZZ_CHECK(i < welded.vertices);
+    // The same output in two ranges of patches cut at a fuzzed patch, the later range first (§7.4, "Ranges").
+    const auto patch_count = static_cast<std::uint32_t>(mixed.patch_count());
+    const std::uint32_t cut = in.byte() % (patch_count + 1);
+    std::vector<rt::TessVertex> fresh(welded.vertices); // value-initialised, as wv was
+    std::vector<std::uint32_t> ri(wi.size(), 0xA5A5A5A5u);
+    for (const rt::WeldedRange r : {rt::WeldedRange{cut, patch_count}, rt::WeldedRange{0, cut}})
+        CTESS_FUZZ_CHECK(rt::emit_welded_mesh(tables, uniform, mixed, options, edges, patches, r, fresh,
+                                              ri) == PipelineStatus::ok);
+    CTESS_FUZZ_CHECK(ri == wi);
+    CTESS_FUZZ_CHECK(std::memcmp(fresh.data(), wv.data(), wv.size() * sizeof(rt::TessVertex)) == 0);
     return 0;
 }

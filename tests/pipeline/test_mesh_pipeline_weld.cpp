@@ -2,17 +2,19 @@
 // the factor modes, clamp reporting, the quad rule's edge lengths, and the weld checked against an
 // independent weld of the unwelded output (exact position and attribute bits) on closed and open models
 // built here: a triangle torus, an all-quad torus, a mixed torus, an octahedron sphere, a torus with a uv
-// seam and an open mixed grid.
+// seam and an open mixed grid; the welded output written in ranges of patches (a caller's threads).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <random>
+#include <thread>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -303,6 +305,193 @@ TEST_CASE("welded output: patches that share a pattern (§7.4, patch shapes) in 
             }
         }
     }
+}
+
+namespace {
+
+// A mixed torus with a uv seam, plus what a real model may hold: a vertex no face uses, a triangle with a
+// repeated corner (its edges include one with lo == hi), a triangle and a quad with an index past the
+// vertices (culled), all in the middle of the face lists so that ranges cut around them.
+Model torus_with_strays() {
+    Model m = torus(8, 4, Faces::mixed, true);
+    const auto n = static_cast<std::uint32_t>(m.vertices.size() / 8);
+    m.add(9.0f, 9.0f, 9.0f, 0.0f, 0.0f, 1.0f, 0.25f, 0.75f); // no face reaches it
+    const std::size_t t = m.triangles.size() / 2 / 3 * 3, q = m.quads.size() / 2 / 4 * 4;
+    m.triangles.insert(m.triangles.begin() + static_cast<std::ptrdiff_t>(t), {0, 0, 5, 1, n + 7, 2});
+    m.quads.insert(m.quads.begin() + static_cast<std::ptrdiff_t>(q), {3, 4, n + 2, 6});
+    return m;
+}
+
+struct WeldedSetup {
+    rt::PipelineStatus status = rt::PipelineStatus::ok;
+    std::vector<rt::WeldedEdge> edges;
+    std::vector<rt::WeldedPatch> patches;
+    rt::WeldedTotals totals;
+};
+
+WeldedSetup setup(const rt::MeshView& mesh, const rt::PipelineOptions& o) {
+    WeldedSetup s;
+    s.edges.resize(rt::weld_edge_capacity(mesh));
+    s.patches.resize(mesh.patch_count());
+    s.status = rt::setup_welded(rt::cp_tables_64, uniform_set(), mesh, o, s.edges, s.patches, s.totals);
+    s.edges.resize(s.totals.edges);
+    return s;
+}
+
+// The output words every range wrote, each range on buffers of its own filled with a marker: a word a range
+// left at the marker it did not write (a written word equal to the marker would only hide a write).
+constexpr std::uint32_t marker = 0xA5A5A5A5u;
+
+void fill_marker(std::vector<rt::TessVertex>& v) {
+    std::array<std::uint32_t, sizeof(rt::TessVertex) / 4> w;
+    w.fill(marker);
+    std::fill(v.begin(), v.end(), std::bit_cast<rt::TessVertex>(w));
+}
+
+std::vector<std::uint32_t> words(const std::vector<rt::TessVertex>& v, const std::vector<std::uint32_t>& i) {
+    std::vector<std::uint32_t> w(v.size() * sizeof(rt::TessVertex) / 4 + i.size());
+    std::memcpy(w.data(), v.data(), v.size() * sizeof(rt::TessVertex));
+    std::copy(i.begin(), i.end(),
+              w.begin() + static_cast<std::ptrdiff_t>(v.size() * sizeof(rt::TessVertex) / 4));
+    return w;
+}
+
+} // namespace
+
+TEST_CASE("welded output in ranges (§7.4): every split, in any order or on threads, is the one call's output "
+          "bit for bit, and no word is written by two ranges") {
+    const Model m = torus_with_strays();
+    const rt::MeshView mesh = m.view();
+    const auto patch_count = static_cast<std::uint32_t>(mesh.patch_count());
+    const rt::Pattern patterns[] = {rt::Pattern::cp, rt::Pattern::uniform, rt::Pattern::uniform_split,
+                                    rt::Pattern::d3d11_fractional_odd};
+    std::mt19937 rng(23);
+    for (const rt::Pattern pattern : patterns) {
+        for (int trial = 0; trial < 3; ++trial) {
+            rt::PipelineOptions o = camera(pattern, {0.5f, -9.0f, 3.0f}, trial == 0 ? 4.0f : 2.0f);
+            if (trial == 2) {
+                o.dice.mode = rt::FactorMode::constant;
+                o.dice.constant_factor = pattern == rt::Pattern::uniform_split ? 20.0f : 2.0f;
+                o.weld.keep_degenerate = true;
+            }
+            o.surface.surface = trial == 1 ? rt::Surface::pn_triangles : rt::Surface::flat;
+            INFO("pattern " << static_cast<int>(pattern) << " trial " << trial);
+            const Output whole = welded(mesh, o);
+            REQUIRE(whole.status == rt::PipelineStatus::ok);
+            const std::vector<std::uint32_t> expected = words(whole.vertices, whole.indices);
+            const WeldedSetup s = setup(mesh, o);
+            REQUIRE(s.status == rt::PipelineStatus::ok);
+
+            // Cut points: welded_range's parts, and random cuts with empty ranges among them.
+            std::vector<std::vector<rt::WeldedRange>> splits;
+            for (const std::uint32_t parts : {1u, 2u, 3u}) {
+                std::vector<rt::WeldedRange> r;
+                for (std::uint32_t k = 0; k < parts; ++k) r.push_back(rt::welded_range(s.patches, k, parts));
+                splits.push_back(r);
+            }
+            std::vector<std::uint32_t> cuts{0, 0, 1, patch_count / 2, patch_count / 2, patch_count - 1};
+            for (int k = 0; k < 4; ++k)
+                cuts.push_back(std::uniform_int_distribution<std::uint32_t>(0, patch_count)(rng));
+            cuts.push_back(patch_count);
+            std::sort(cuts.begin(), cuts.end());
+            std::vector<rt::WeldedRange> random;
+            for (std::size_t k = 0; k + 1 < cuts.size(); ++k) random.push_back({cuts[k], cuts[k + 1]});
+            splits.push_back(random);
+
+            for (const std::vector<rt::WeldedRange>& ranges : splits) {
+                INFO("ranges " << ranges.size());
+                // welded_range covers the patches once, in order.
+                REQUIRE(ranges.front().first_patch == 0);
+                REQUIRE(ranges.back().end_patch == patch_count);
+                for (std::size_t k = 1; k < ranges.size(); ++k)
+                    REQUIRE(ranges[k].first_patch == ranges[k - 1].end_patch);
+                // Last range first, into one pair of buffers.
+                std::vector<rt::TessVertex> v(s.totals.vertices);
+                std::vector<std::uint32_t> idx(3 * std::size_t{s.totals.triangles}, marker);
+                fill_marker(v);
+                for (std::size_t k = ranges.size(); k-- > 0;)
+                    REQUIRE(rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), mesh, o, s.edges, s.patches,
+                                                 ranges[k], v, idx) == rt::PipelineStatus::ok);
+                CHECK(words(v, idx) == expected);
+                // Each range alone: the words it wrote, counted over the ranges, are every word once.
+                std::vector<std::uint8_t> writers(expected.size(), 0);
+                for (const rt::WeldedRange& r : ranges) {
+                    fill_marker(v);
+                    std::fill(idx.begin(), idx.end(), marker);
+                    REQUIRE(rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), mesh, o, s.edges, s.patches,
+                                                 r, v, idx) == rt::PipelineStatus::ok);
+                    const std::vector<std::uint32_t> w = words(v, idx);
+                    for (std::size_t j = 0; j < w.size(); ++j)
+                        if (w[j] != marker) {
+                            ++writers[j];
+                            if (w[j] != expected[j]) FAIL_CHECK("range wrote another value at word " << j);
+                        }
+                }
+                std::size_t twice = 0, never = 0;
+                for (std::size_t j = 0; j < writers.size(); ++j) {
+                    twice += writers[j] > 1;
+                    never += writers[j] == 0 && expected[j] != marker;
+                }
+                CHECK(twice == 0);
+                CHECK(never == 0);
+            }
+            // Two threads at once on one pair of buffers.
+            std::vector<rt::TessVertex> v(s.totals.vertices);
+            std::vector<std::uint32_t> idx(3 * std::size_t{s.totals.triangles});
+            rt::PipelineStatus status[2];
+            std::vector<std::thread> threads;
+            for (std::uint32_t k = 0; k < 2; ++k)
+                threads.emplace_back([&, k] {
+                    status[k] = rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), mesh, o, s.edges,
+                                                     s.patches, rt::welded_range(s.patches, k, 2), v, idx);
+                });
+            for (std::thread& t : threads) t.join();
+            CHECK(status[0] == rt::PipelineStatus::ok);
+            CHECK(status[1] == rt::PipelineStatus::ok);
+            CHECK(words(v, idx) == expected);
+        }
+    }
+}
+
+TEST_CASE("welded output in ranges: ranges outside the patches, bad offsets and bad counts write nothing") {
+    const Model m = torus_with_strays();
+    const rt::MeshView mesh = m.view();
+    const auto patch_count = static_cast<std::uint32_t>(mesh.patch_count());
+    const rt::PipelineOptions o = camera(rt::Pattern::cp, {0.5f, -9.0f, 3.0f}, 2.0f);
+    const WeldedSetup s = setup(mesh, o);
+    REQUIRE(s.status == rt::PipelineStatus::ok);
+    std::vector<rt::TessVertex> v(s.totals.vertices);
+    std::vector<std::uint32_t> idx(3 * std::size_t{s.totals.triangles}, marker);
+    fill_marker(v);
+    const std::vector<std::uint32_t> untouched = words(v, idx);
+    const auto emit = [&](const std::vector<rt::WeldedPatch>& patches, rt::WeldedRange r) {
+        return rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), mesh, o, s.edges, patches, r, v, idx);
+    };
+    CHECK(emit(s.patches, {5, 4}) == rt::PipelineStatus::bad_range);
+    CHECK(emit(s.patches, {0, patch_count + 1}) == rt::PipelineStatus::bad_range);
+    CHECK(emit(s.patches, {patch_count + 1, patch_count + 1}) == rt::PipelineStatus::bad_range);
+    // Offsets are checked over every patch (a range never overlaps another), counts over the range's own.
+    auto bad = s.patches;
+    bad[patch_count - 2].vertex_count += 1;
+    CHECK(emit(bad, {0, 3}) == rt::PipelineStatus::bad_patch_record);
+    bad = s.patches;
+    bad.back().triangle_count += 1; // the last record's counts: only its own range reruns them
+    CHECK(emit(bad, {patch_count - 1, patch_count}) == rt::PipelineStatus::bad_patch_record);
+    // Empty ranges write nothing, also at the end; the range of the last patch writes the vertex no face
+    // reaches (the stray vertex, last of the mesh).
+    CHECK(emit(s.patches, {3, 3}) == rt::PipelineStatus::ok);
+    CHECK(emit(s.patches, {patch_count, patch_count}) == rt::PipelineStatus::ok);
+    CHECK(words(v, idx) == untouched);
+    CHECK(emit(s.patches, {patch_count - 1, patch_count}) == rt::PipelineStatus::ok);
+    const std::uint32_t stray = static_cast<std::uint32_t>(m.vertices.size() / 8 - 1);
+    CHECK(v[stray].position[0] == 9.0f);
+    CHECK(v[stray].position[2] == 9.0f);
+    // welded_range: parts 0 is one part; a part past the last is empty at the end.
+    CHECK(rt::welded_range(s.patches, 0, 0).end_patch == patch_count);
+    const rt::WeldedRange past = rt::welded_range(s.patches, 5, 2);
+    CHECK(past.first_patch == patch_count);
+    CHECK(past.end_patch == patch_count);
+    CHECK(rt::welded_range({}, 0, 2).end_patch == 0);
 }
 
 // Figures for docs/algorithm.md §7 (run by hand: test_mesh_pipeline_weld "[figures]").

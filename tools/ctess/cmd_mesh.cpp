@@ -32,6 +32,7 @@
 #include <numbers>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fmt/core.h>
@@ -320,6 +321,29 @@ UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& 
                                  backend, reason));
 }
 
+// emit_welded_mesh in `threads` ranges of patches (rt::welded_range), one thread each, the calling thread
+// taking the first: the same output as one call (docs/algorithm.md §7.4, "Ranges"). The first failure is
+// the answer.
+rt::PipelineStatus emit_welded_threads(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform,
+                                       const rt::MeshView& view, const rt::PipelineOptions& options,
+                                       std::span<const rt::WeldedEdge> edges,
+                                       std::span<const rt::WeldedPatch> patches,
+                                       std::span<rt::TessVertex> vertices, std::span<std::uint32_t> indices,
+                                       unsigned threads) {
+    std::vector<rt::PipelineStatus> status(threads, rt::PipelineStatus::ok);
+    const auto range = [&](unsigned k) {
+        status[k] = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches,
+                                         rt::welded_range(patches, k, threads), vertices, indices);
+    };
+    std::vector<std::thread> pool;
+    for (unsigned k = 1; k < threads; ++k) pool.emplace_back(range, k);
+    range(0);
+    for (std::thread& t : pool) t.join();
+    for (const rt::PipelineStatus s : status)
+        if (s != rt::PipelineStatus::ok) return s;
+    return rt::PipelineStatus::ok;
+}
+
 } // namespace
 
 int run_mesh(int argc, char** argv) {
@@ -344,7 +368,8 @@ int run_mesh(int argc, char** argv) {
                      "displace-vector",
                      "backend",
                      "backend-timeout",
-                     "shaders"},
+                     "shaders",
+                     "threads"},
                     {"stats", "keep-degenerate", "displace-gltf", "displace-grow", "unwelded"});
     const std::string in = args.get("in");
     const std::string out = args.get_or("out", "");
@@ -366,6 +391,12 @@ int run_mesh(int argc, char** argv) {
             : mesh_cli_default_max_triangles;
     const DisplaceRequest displace = displace_request_from(args);
     const BackendRequest backend = backend_request_from(args, max);
+    // The welded emit in ranges of patches, one thread each (docs/cli.md, "Threads").
+    const unsigned threads =
+        args.has("threads") ? parse_unsigned(args.get("threads"), "--threads", 1, 64) : 1;
+    if (args.has("threads") && backend.unwelded)
+        throw UsageError(
+            "--threads goes with the welded output (emit_welded_mesh in ranges), not --unwelded");
     // The options alone, before the model is loaded: a pattern or factor mode the shaders lack.
     if (backend.name != "cpu")
         if (const UnweldedPlan early = unwelded_plan(rt::MeshView{}, options); !early.shaders)
@@ -507,7 +538,8 @@ int run_mesh(int argc, char** argv) {
         start = Clock::now();
         std::vector<rt::TessVertex> vertices(totals.vertices);
         mesh.triangles.resize(3 * std::size_t{totals.triangles});
-        status = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches, vertices, mesh.triangles);
+        status = emit_welded_threads(cp, uniform, view, options, edges, patches, vertices, mesh.triangles,
+                                     threads);
         if (status != rt::PipelineStatus::ok)
             throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
         copy_vertices(vertices);
@@ -535,8 +567,8 @@ int run_mesh(int argc, char** argv) {
             "  \"output_vertices\": {},\n  \"output_triangles\": {},\n  \"output_open_edges\": {},\n",
             mesh.vertex_count(), mesh.triangle_count(), output_open_edges);
         text += fmt::format("  \"clamped_edges\": {},\n", clamped_edges);
-        text += fmt::format("  \"output\": \"{}\",\n  \"backend\": \"{}\",\n",
-                            backend.unwelded ? "unwelded" : "welded", backend.name);
+        text += fmt::format("  \"output\": \"{}\",\n  \"backend\": \"{}\",\n  \"threads\": {},\n",
+                            backend.unwelded ? "unwelded" : "welded", backend.name, threads);
         if (backend.unwelded)
             text += fmt::format(
                 "  \"unwelded\": {{\"shader_pipeline\": {}, \"device\": \"{}\", \"checksum\": {}}},\n",

@@ -31,7 +31,7 @@ commands:
   mesh     --in MODEL(.gltf|.glb|.obj) (--out OUT(.obj|.ply|.glb) | --stats) [--pattern cp|uniform|d3d11-*]
            (--factor F | --edge-length L | --dice-rate PX --camera X,Y,Z [--fov DEG] [--resolution W,H])
            [--surface flat|pn|pn-aen|phong] [--max 64|256] [--quad-rule longer-pair|as-labelled]
-           [--keep-degenerate] [--max-triangles N] [--stats]
+           [--keep-degenerate] [--max-triangles N] [--threads N] [--stats]
            [--displace HEIGHT.png | --displace-gltf | --displace-vector RGB.png] [--displace-scale S]
            [--displace-offset O]
            [--displace-address repeat|clamp] [--displace-grow]

@@ -297,12 +297,21 @@ struct CpFamily {
     static DomainPoint base_point(const patch_type& patch, const PatchRecord& rec, std::uint32_t i) {
         return cp::to_base_point(cp::Rotation{static_cast<std::uint8_t>(rec.rotation)}, patch.vertex(i));
     }
+    // The line's distinct interior parameters: cp::edge_points' positions, computed here from the token's
+    // tracks so that no 257-entry buffer is zeroed per edge (two kilobytes for every edge of the mesh, in
+    // setup_welded and again in emit_welded_mesh's check of the edge list).
     void params_of_state(cp::LineState state, EdgeParams& out) const {
-        std::array<std::uint32_t, cp::max_segments + 1> points{};
-        const unsigned n = cp::edge_points(cp::clamp_line_state(state, tables.max_factor), points.data());
-        out.reset(points.size());
-        for (unsigned i = 0; i < n; ++i)
-            if (points[i] != 0 && points[i] != one) out.value[out.count++] = points[i];
+        union Tracks {
+            cp::PointTrack item[cp::max_segments + 1];
+            Tracks() noexcept {}
+        } tracks;
+        state = cp::clamp_line_state(state, tables.max_factor);
+        const unsigned n = cp::token_points(state.token, tracks.item);
+        out.reset(cp::max_segments + 1);
+        for (unsigned i = 0; i < n; ++i) {
+            const std::uint32_t x = cp::point_position(tracks.item[i], state.t16);
+            if (x != 0 && x != one) out.value[out.count++] = x;
+        }
         out.finish();
     }
     void edge_params(float f, EdgeParams& out) const {
@@ -867,9 +876,11 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* unifor
 
 // --- The welded output (docs/algorithm.md §7.4) ---
 
-bool edge_less(const WeldedEdge& a, const WeldedEdge& b) {
+// A function object, not a function: std::sort and std::lower_bound inline its comparison (through a function
+// pointer they called it, a quarter of setup_welded's time in the edge sort).
+constexpr auto edge_less = [](const WeldedEdge& a, const WeldedEdge& b) {
     return a.lo != b.lo ? a.lo < b.lo : a.hi < b.hi;
-}
+};
 
 WeldedEdge edge_key(std::uint32_t i, std::uint32_t j) {
     WeldedEdge e;
@@ -954,6 +965,8 @@ std::array<std::uint32_t, WeldShape::key_words> weld_shape_key(const PatchRecord
 // among the patch's distinct interior points: a quad's diagonal and coincident slots become one vertex).
 // A patch with distinct corners reads its shape from a small cache (the pattern is generated and classified
 // once per key); one with a repeated corner takes the general path, slot by slot.
+unsigned patch_edges(const MeshView& mesh, std::uint32_t p, WeldedEdge (&out)[4]);
+
 template <PipelineFamily F>
 class PatchWeld {
   public:
@@ -973,6 +986,26 @@ class PatchWeld {
     // and marks the ones it writes: patches run last to first then write each shared point once, with the
     // value the last patch to reach it gives (the order of the forward loop, where later patches overwrite).
     void set_written(std::uint64_t* written) { written_ = written; }
+
+    // Marks every corner and edge point of patch p (none when culled): what running it would mark. False,
+    // marking part of them, when one of its edges is missing from the list.
+    bool mark_reached(std::uint32_t p) {
+        WeldedEdge e[4];
+        const unsigned m = patch_edges(mesh_, p, e);
+        for (unsigned k = 0; k < m; ++k) {
+            const WeldedEdge* edge = find_edge(e[k].lo, e[k].hi);
+            if (edge == nullptr) return false;
+            mark(e[k].lo), mark(e[k].hi);
+            for (std::uint32_t i = 0; i < edge->vertex_count; ++i) mark(edge->first_vertex + i);
+        }
+        return true;
+    }
+    // Marks the corners of patch p (none when culled).
+    void mark_corners(std::uint32_t p) {
+        WeldedEdge e[4];
+        const unsigned m = patch_edges(mesh_, p, e);
+        for (unsigned k = 0; k < m; ++k) mark(e[k].lo), mark(e[k].hi);
+    }
 
     // Runs patch p with its interior ids from first_vertex. Counts its interior vertices and kept triangles;
     // writes them when vertices is not empty (triangles at indices). False when a point is not on its edge's
@@ -1160,6 +1193,8 @@ class PatchWeld {
     // A patch with distinct corners: its ids from its corners, its edges' ranges and first_vertex.
     bool run_shape(const WeldShape& s, unsigned n, const std::uint32_t (&w)[4], std::uint32_t first_vertex,
                    Counts& counts, std::span<TessVertex> vertices, std::uint32_t* indices) {
+        // Counting (setup_welded, and emit_welded_mesh's check of the records) needs only the edges' checks.
+        const bool count_only = indices == nullptr && vertices.empty();
         if (ids_.size() < s.local_count) ids_.resize(s.local_count);
         std::uint32_t* ids = ids_.data();
         for (unsigned c = 0; c < s.corners; ++c) ids[c] = w[c];
@@ -1167,6 +1202,7 @@ class PatchWeld {
             const std::uint32_t a = w[patch_edge_from(s.corners, e)], b = w[patch_edge_to(s.corners, e)];
             const WeldedEdge* edge = find_edge(a, b);
             if (edge == nullptr || edge->vertex_count != s.edge_count[e]) return false;
+            if (count_only) continue;
             const std::uint32_t count = s.edge_count[e];
             std::uint32_t* out = ids + s.edge_base[e];
             // Ranks count from the lower mesh index (the set is symmetric, build_shape checked it).
@@ -1175,8 +1211,9 @@ class PatchWeld {
             else
                 for (std::uint32_t r = 0; r < count; ++r) out[r] = edge->first_vertex + (count - 1 - r);
         }
-        for (std::uint32_t j = 0; j < s.interior_count; ++j) ids[s.interior_base + j] = first_vertex + j;
         counts = {s.interior_count, static_cast<std::uint32_t>(s.triangles.size() / 3)};
+        if (count_only) return true;
+        for (std::uint32_t j = 0; j < s.interior_count; ++j) ids[s.interior_base + j] = first_vertex + j;
         if (indices != nullptr) {
             const std::uint32_t* local = s.triangles.data();
             for (std::size_t k = 0; k < s.triangles.size(); ++k) indices[k] = ids[local[k]];
@@ -1425,10 +1462,13 @@ PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const Pip
 template <PipelineFamily F>
 PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
-                               std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+                               WeldedRange range, std::span<TessVertex> vertices,
+                               std::span<std::uint32_t> indices) {
     if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), mesh.vertex_count, 0);
         s != PipelineStatus::ok)
         return s;
+    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
+    if (range.first_patch > range.end_patch || range.end_patch > count) return PipelineStatus::bad_range;
     // The edge list: sorted, distinct, inside the mesh, numbered by prefix sums with its lines' counts.
     std::uint64_t vertices_sum = mesh.vertex_count, triangle_sum = 0;
     EdgeParams params;
@@ -1444,15 +1484,17 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
             return PipelineStatus::bad_patch_record;
     }
     const std::uint64_t edge_vertices = vertices_sum - mesh.vertex_count;
-    // The patch records: each patch's counts as run here, at the prefix sums.
+    // The patch records: every offset at the prefix sums (so that ranges never overlap), the range's own
+    // counts as run here.
     PatchWeld<F> weld(family, mesh, options, edges);
-    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
     for (std::uint32_t p = 0; p < count; ++p) {
         const WeldedPatch& wp = patches[p];
+        if (wp.first_vertex != vertices_sum || wp.first_triangle != triangle_sum)
+            return PipelineStatus::bad_patch_record;
         Counts c;
-        if (wp.first_vertex != vertices_sum || wp.first_triangle != triangle_sum ||
-            !weld.run(p, wp.first_vertex, c, {}, nullptr) || c.vertices != wp.vertex_count ||
-            c.triangles != wp.triangle_count)
+        if (p >= range.first_patch && p < range.end_patch &&
+            (!weld.run(p, wp.first_vertex, c, {}, nullptr) || c.vertices != wp.vertex_count ||
+             c.triangles != wp.triangle_count))
             return PipelineStatus::bad_patch_record;
         vertices_sum += wp.vertex_count;
         triangle_sum += wp.triangle_count;
@@ -1462,15 +1504,22 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
     if (vertices_sum > vertices.size() || 3 * triangle_sum > indices.size())
         return PipelineStatus::span_too_small;
     // The patches last to first: each corner and edge point is written once, by the last patch that reaches
-    // it (the value the forward order leaves), marked in one bit per id below the patches' interiors.
+    // it (the value the forward order leaves), marked in one bit per id below the patches' interiors. The
+    // points that patches after the range reach are marked first: their last patch is not in the range.
     const std::uint64_t shared_ids = mesh.vertex_count + std::uint64_t{edge_vertices};
     std::vector<std::uint64_t> written((shared_ids + 63) / 64);
     weld.set_written(written.data());
-    for (std::uint32_t p = count; p-- > 0;) {
+    for (std::uint32_t p = range.end_patch; p < count; ++p)
+        if (!weld.mark_reached(p)) return PipelineStatus::bad_patch_record; // an edge missing from the list
+    for (std::uint32_t p = range.end_patch; p-- > range.first_patch;) {
         Counts c;
         weld.run(p, patches[p].first_vertex, c, vertices,
                  indices.data() + 3 * std::size_t{patches[p].first_triangle});
     }
+    // The range of the last patch (or of a mesh without patches) writes the mesh vertices no face reaches,
+    // once the faces before it are marked too.
+    if (range.end_patch != count || (range.first_patch == count && count != 0)) return PipelineStatus::ok;
+    for (std::uint32_t p = 0; p < range.first_patch; ++p) weld.mark_corners(p);
     // Every mesh vertex no face reaches is output vertex v: its corner value.
     for (std::uint32_t v = 0; v < mesh.vertex_count; ++v) {
         if ((written[v / 64] >> (v % 64) & 1u) != 0) continue;
@@ -1501,12 +1550,18 @@ PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet* uni
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet* uniform,
                                 const MeshView& mesh, const PipelineOptions& options,
                                 std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
-                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+                                WeldedRange range, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return with_family(tables, uniform, options, [&](const auto& family) {
-        return emit_welded_all(family, mesh, options, edges, patches, vertices, indices);
+        return emit_welded_all(family, mesh, options, edges, patches, range, vertices, indices);
     });
+}
+
+// Every patch of the mesh as one range (a count past 32 bits is refused by the size check first).
+WeldedRange whole_mesh(const MeshView& mesh) {
+    return {0, static_cast<std::uint32_t>(std::min<std::uint64_t>(mesh.patch_count(), 0xFFFFFFFFu))};
 }
 
 } // namespace
@@ -1567,14 +1622,57 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
                                 const PipelineOptions& options, std::span<const WeldedEdge> edges,
                                 std::span<const WeldedPatch> patches, std::span<TessVertex> vertices,
                                 std::span<std::uint32_t> indices) {
-    return emit_welded_mesh(tables, nullptr, mesh, options, edges, patches, vertices, indices);
+    return emit_welded_mesh(tables, nullptr, mesh, options, edges, patches, whole_mesh(mesh), vertices,
+                            indices);
 }
 
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
                                 const MeshView& mesh, const PipelineOptions& options,
                                 std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
                                 std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
-    return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, vertices, indices);
+    return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, whole_mesh(mesh), vertices,
+                            indices);
+}
+
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
+                                const PipelineOptions& options, std::span<const WeldedEdge> edges,
+                                std::span<const WeldedPatch> patches, WeldedRange range,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    return emit_welded_mesh(tables, nullptr, mesh, options, edges, patches, range, vertices, indices);
+}
+
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
+                                WeldedRange range, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices) {
+    return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, range, vertices, indices);
+}
+
+WeldedRange welded_range(std::span<const WeldedPatch> patches, std::uint32_t part, std::uint32_t parts) {
+    parts = parts == 0 ? 1 : parts;
+    part = part < parts ? part : parts;
+    const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(patches.size(), 0xFFFFFFFFu));
+    const std::uint64_t total =
+        count == 0 ? 0 : std::uint64_t{patches[count - 1].first_triangle} + patches[count - 1].triangle_count;
+    // The first patch at or past part k's share of the triangles: a bisection that stays inside the span
+    // whatever the records hold (a bad list gives some range, which emit_welded_mesh's checks refuse).
+    const auto boundary = [&](std::uint32_t k) -> std::uint32_t {
+        if (k == 0) return 0;
+        if (k >= parts) return count;
+        const std::uint64_t target = total * k / parts;
+        std::uint32_t lo = 0, hi = count;
+        while (lo < hi) {
+            const std::uint32_t mid = lo + (hi - lo) / 2;
+            if (patches[mid].first_triangle < target)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        return lo;
+    };
+    const std::uint32_t first = boundary(part), end = boundary(part + 1);
+    return {first, end > first ? end : first};
 }
 
 } // namespace ctess::rt

@@ -185,6 +185,7 @@ enum class PipelineStatus : std::uint8_t {
     bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
     no_uniform_tables,  // a uniform pattern through an overload without a UniformTableSet
     bad_option,         // a Pattern, QuadRule or Surface value outside its enum, or an invalid Displacement
+    bad_range,          // a WeldedRange outside the mesh's patches (first_patch > end_patch > patch count)
 };
 
 // The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
@@ -215,6 +216,8 @@ constexpr const char* pipeline_status_message(PipelineStatus status) {
         return "the uniform pattern needs a UniformTableSet (the overloads that take one)";
     case PipelineStatus::bad_option:
         return "an option (pattern, quad rule, surface) is outside its enum";
+    case PipelineStatus::bad_range:
+        return "a range of patches lies outside the mesh's patches";
     }
     return "unknown status";
 }
@@ -356,5 +359,45 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet&
                                 const MeshView& mesh, const PipelineOptions& options,
                                 std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
                                 std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
+
+// --- The welded output in ranges of patches, for a caller's threads (docs/algorithm.md §7.4, "Ranges") ---
+//
+// emit_welded_mesh for the patches [first_patch, end_patch) only: their interior vertices and triangles, and
+// the corners and edge points whose last patch (the one emit_welded_mesh takes each value from) lies in the
+// range; the range that holds the last patch also writes the mesh vertices no face reaches. Ranges that
+// cover the patches once, called one after another or at once on several threads (the inputs are only
+// read), write exactly what one emit_welded_mesh call writes, and no two of them write the same word. The
+// library starts no thread:
+//
+//   std::vector<std::thread> threads;
+//   for (std::uint32_t k = 0; k < 2; ++k)
+//       threads.emplace_back([&, k] {
+//           status[k] = rt::emit_welded_mesh(cp_tables_64, mesh, options, edges, patches,
+//                                            rt::welded_range(patches, k, 2), vertices, indices);
+//       });
+//
+// Each call checks the edge list, the offsets of every record and the counts of its own records, and
+// writes nothing on a failure (bad_range for a range outside the patches); a failed call leaves the other
+// ranges' output in place, so a caller discards the mesh when any range fails. Each call also marks, before
+// writing, the corners and edge points that patches after its range reach (one bit per corner and edge
+// point, as emit_welded_mesh's marks).
+struct WeldedRange {
+    std::uint32_t first_patch = 0;
+    std::uint32_t end_patch = 0; // one past the last patch
+};
+
+// Part `part` of `parts` consecutive ranges with about equal output triangles, from the records'
+// first_triangle (parts 0 is taken as 1; a part past the last gives an empty range at the end).
+WeldedRange welded_range(std::span<const WeldedPatch> patches, std::uint32_t part, std::uint32_t parts);
+
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
+                                const PipelineOptions& options, std::span<const WeldedEdge> edges,
+                                std::span<const WeldedPatch> patches, WeldedRange range,
+                                std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
+PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
+                                const MeshView& mesh, const PipelineOptions& options,
+                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
+                                WeldedRange range, std::span<TessVertex> vertices,
+                                std::span<std::uint32_t> indices);
 
 } // namespace ctess::rt
