@@ -310,8 +310,8 @@ void torus_welded_ranges(benchmark::State& state) {
         const auto range = [&](std::uint32_t k) {
             if (rt::emit_welded_mesh(tables(), run.mesh, run.options,
                                      std::span(run.edges).first(run.welded_totals.edges), run.welded_patches,
-                                     rt::welded_range(run.welded_patches, k, threads), run.welded_vertices,
-                                     run.welded_indices) != rt::PipelineStatus::ok)
+                                     rt::welded_range(run.mesh, run.welded_patches, k, threads),
+                                     run.welded_vertices, run.welded_indices) != rt::PipelineStatus::ok)
                 ok = false;
         };
         for (std::uint32_t k = 1; k < threads; ++k) pool.emplace_back(range, k);

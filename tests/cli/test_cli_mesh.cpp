@@ -135,9 +135,13 @@ TEST_CASE("ctess mesh: PN-AEN closes the cracks plain PN opens at split normals 
 
 TEST_CASE("ctess mesh --threads: the welded file of 2 and 3 threads is the one thread's, byte for byte",
           "[cli][mesh][real]") {
-    // WusonOBJ (quads and triangles, seams) and spider.obj (open, split normals), with every family the
-    // welded ranges treat apart: CP, uniform splitting above N, and PN.
+    // WusonOBJ (quads and triangles, seams) and spider.obj (open, split normals), with CP, uniform splitting
+    // above N, PN and PN-AEN.
+    // A mixed cube written here runs wherever assimp-testmodels is missing.
+    const std::string cube = scratch("mixed_cube_threads.obj");
+    write_file(cube, mixed_cube_obj());
     std::vector<std::pair<std::string, std::string>> runs = {
+        {cube, " --factor 40 --pattern uniform --surface pn-aen"},
         {assimp_models + "/OBJ/WusonOBJ.obj", " --factor 12 --surface pn"},
         {assimp_models + "/OBJ/spider.obj", " --dice-rate 1 --camera 0,0,300 --pattern uniform"},
     };

@@ -155,6 +155,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const std::uint32_t i : wi) CTESS_FUZZ_CHECK(i < welded.vertices);
     // The same output in two ranges of patches cut at a fuzzed patch, the later range first (§7.4, "Ranges").
     const auto patch_count = static_cast<std::uint32_t>(mixed.patch_count());
+    if (patch_count == 0) return 0; // no ranges: bad_range (tests/pipeline)
     const std::uint32_t cut = in.byte() % (patch_count + 1);
     std::vector<rt::TessVertex> fresh(welded.vertices); // value-initialised, as wv was
     std::vector<std::uint32_t> ri(wi.size(), 0xA5A5A5A5u);

@@ -386,7 +386,8 @@ TEST_CASE("welded output in ranges (§7.4): every split, in any order or on thre
             std::vector<std::vector<rt::WeldedRange>> splits;
             for (const std::uint32_t parts : {1u, 2u, 3u}) {
                 std::vector<rt::WeldedRange> r;
-                for (std::uint32_t k = 0; k < parts; ++k) r.push_back(rt::welded_range(s.patches, k, parts));
+                for (std::uint32_t k = 0; k < parts; ++k)
+                    r.push_back(rt::welded_range(mesh, s.patches, k, parts));
                 splits.push_back(r);
             }
             std::vector<std::uint32_t> cuts{0, 0, 1, patch_count / 2, patch_count / 2, patch_count - 1};
@@ -442,8 +443,9 @@ TEST_CASE("welded output in ranges (§7.4): every split, in any order or on thre
             std::vector<std::thread> threads;
             for (std::uint32_t k = 0; k < 2; ++k)
                 threads.emplace_back([&, k] {
-                    status[k] = rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), mesh, o, s.edges,
-                                                     s.patches, rt::welded_range(s.patches, k, 2), v, idx);
+                    status[k] =
+                        rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), mesh, o, s.edges, s.patches,
+                                             rt::welded_range(mesh, s.patches, k, 2), v, idx);
                 });
             for (std::thread& t : threads) t.join();
             CHECK(status[0] == rt::PipelineStatus::ok);
@@ -487,11 +489,36 @@ TEST_CASE("welded output in ranges: ranges outside the patches, bad offsets and 
     CHECK(v[stray].position[0] == 9.0f);
     CHECK(v[stray].position[2] == 9.0f);
     // welded_range: parts 0 is one part; a part past the last is empty at the end.
-    CHECK(rt::welded_range(s.patches, 0, 0).end_patch == patch_count);
-    const rt::WeldedRange past = rt::welded_range(s.patches, 5, 2);
+    CHECK(rt::welded_range(mesh, s.patches, 0, 0).end_patch == patch_count);
+    const rt::WeldedRange past = rt::welded_range(mesh, s.patches, 5, 2);
     CHECK(past.first_patch == patch_count);
     CHECK(past.end_patch == patch_count);
-    CHECK(rt::welded_range({}, 0, 2).end_patch == 0);
+    CHECK(rt::welded_range(mesh, {}, 0, 2).end_patch == 0);
+    // Records past the mesh's patches are not cut into ranges.
+    std::vector<rt::WeldedPatch> longer = s.patches;
+    longer.resize(longer.size() + 5, longer.back());
+    CHECK(rt::welded_range(mesh, longer, 1, 2).end_patch == patch_count);
+
+    // A mesh without faces has no ranges (each would be {0, 0} and write the same vertices): bad_range, and
+    // the call without a range writes its vertices.
+    Model bare;
+    bare.add(1.0f, 2.0f, 3.0f, 0.0f, 0.0f, 1.0f, 0.5f, 0.5f);
+    bare.add(4.0f, 5.0f, 6.0f, 0.0f, 0.0f, 1.0f, 0.5f, 0.5f);
+    const rt::MeshView faceless = bare.view();
+    const WeldedSetup b = setup(faceless, o);
+    REQUIRE(b.status == rt::PipelineStatus::ok);
+    REQUIRE(b.totals.vertices == 2);
+    std::vector<rt::TessVertex> bv(2);
+    std::vector<std::uint32_t> bi;
+    const rt::WeldedRange only = rt::welded_range(faceless, b.patches, 0, 2);
+    CHECK(only.first_patch == 0);
+    CHECK(only.end_patch == 0);
+    CHECK(rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), faceless, o, b.edges, b.patches, only, bv,
+                               bi) == rt::PipelineStatus::bad_range);
+    CHECK(bv[1].position[0] == 0.0f);
+    CHECK(rt::emit_welded_mesh(rt::cp_tables_64, uniform_set(), faceless, o, b.edges, b.patches, bv, bi) ==
+          rt::PipelineStatus::ok);
+    CHECK(bv[1].position[0] == 4.0f);
 }
 
 // Figures for docs/algorithm.md §7 (run by hand: test_mesh_pipeline_weld "[figures]").

@@ -28,6 +28,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <numbers>
 #include <span>
@@ -322,23 +323,35 @@ UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& 
 }
 
 // emit_welded_mesh in `threads` ranges of patches (rt::welded_range), one thread each, the calling thread
-// taking the first: the same output as one call (docs/algorithm.md §7.4, "Ranges"). The first failure is
-// the answer.
+// taking the first: the same output as one call (docs/algorithm.md §7.4, "Ranges"); one thread is the call
+// without a range. The first failure is the answer; an exception in a thread (no memory) is rethrown here
+// once every thread has joined (std::jthread joins on unwinding too).
 rt::PipelineStatus emit_welded_threads(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform,
                                        const rt::MeshView& view, const rt::PipelineOptions& options,
                                        std::span<const rt::WeldedEdge> edges,
                                        std::span<const rt::WeldedPatch> patches,
                                        std::span<rt::TessVertex> vertices, std::span<std::uint32_t> indices,
                                        unsigned threads) {
+    if (threads <= 1)
+        return rt::emit_welded_mesh(cp, uniform, view, options, edges, patches, vertices, indices);
     std::vector<rt::PipelineStatus> status(threads, rt::PipelineStatus::ok);
-    const auto range = [&](unsigned k) {
-        status[k] = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches,
-                                         rt::welded_range(patches, k, threads), vertices, indices);
+    std::vector<std::exception_ptr> error(threads);
+    const auto range = [&](unsigned k) noexcept {
+        try {
+            status[k] = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches,
+                                             rt::welded_range(view, patches, k, threads), vertices, indices);
+        } catch (...) {
+            error[k] = std::current_exception();
+        }
     };
-    std::vector<std::thread> pool;
-    for (unsigned k = 1; k < threads; ++k) pool.emplace_back(range, k);
-    range(0);
-    for (std::thread& t : pool) t.join();
+    {
+        std::vector<std::jthread> pool;
+        pool.reserve(threads - 1);
+        for (unsigned k = 1; k < threads; ++k) pool.emplace_back(range, k);
+        range(0);
+    }
+    for (const std::exception_ptr& e : error)
+        if (e) std::rethrow_exception(e);
     for (const rt::PipelineStatus s : status)
         if (s != rt::PipelineStatus::ok) return s;
     return rt::PipelineStatus::ok;

@@ -1462,13 +1462,16 @@ PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const Pip
 template <PipelineFamily F>
 PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
                                std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
-                               WeldedRange range, std::span<TessVertex> vertices,
+                               std::optional<WeldedRange> part, std::span<TessVertex> vertices,
                                std::span<std::uint32_t> indices) {
     if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), mesh.vertex_count, 0);
         s != PipelineStatus::ok)
         return s;
     const auto count = static_cast<std::uint32_t>(mesh.patch_count());
-    if (range.first_patch > range.end_patch || range.end_patch > count) return PipelineStatus::bad_range;
+    // A mesh without patches has no ranges: every one would be {0, 0} and write the same vertices.
+    if (part && (part->first_patch > part->end_patch || part->end_patch > count || count == 0))
+        return PipelineStatus::bad_range;
+    const WeldedRange range = part.value_or(WeldedRange{0, count});
     // The edge list: sorted, distinct, inside the mesh, numbered by prefix sums with its lines' counts.
     std::uint64_t vertices_sum = mesh.vertex_count, triangle_sum = 0;
     EdgeParams params;
@@ -1516,9 +1519,9 @@ PipelineStatus emit_welded_all(const F& family, const MeshView& mesh, const Pipe
         weld.run(p, patches[p].first_vertex, c, vertices,
                  indices.data() + 3 * std::size_t{patches[p].first_triangle});
     }
-    // The range of the last patch (or of a mesh without patches) writes the mesh vertices no face reaches,
-    // once the faces before it are marked too.
-    if (range.end_patch != count || (range.first_patch == count && count != 0)) return PipelineStatus::ok;
+    // The range of the last patch (or the whole call) writes the mesh vertices no face reaches, once the
+    // faces before it are marked too.
+    if (part && (range.end_patch != count || range.first_patch == count)) return PipelineStatus::ok;
     for (std::uint32_t p = 0; p < range.first_patch; ++p) weld.mark_corners(p);
     // Every mesh vertex no face reaches is output vertex v: its corner value.
     for (std::uint32_t v = 0; v < mesh.vertex_count; ++v) {
@@ -1550,18 +1553,13 @@ PipelineStatus setup_welded(const CpTableSet& tables, const UniformTableSet* uni
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet* uniform,
                                 const MeshView& mesh, const PipelineOptions& options,
                                 std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
-                                WeldedRange range, std::span<TessVertex> vertices,
+                                std::optional<WeldedRange> range, std::span<TessVertex> vertices,
                                 std::span<std::uint32_t> indices) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return with_family(tables, uniform, options, [&](const auto& family) {
         return emit_welded_all(family, mesh, options, edges, patches, range, vertices, indices);
     });
-}
-
-// Every patch of the mesh as one range (a count past 32 bits is refused by the size check first).
-WeldedRange whole_mesh(const MeshView& mesh) {
-    return {0, static_cast<std::uint32_t>(std::min<std::uint64_t>(mesh.patch_count(), 0xFFFFFFFFu))};
 }
 
 } // namespace
@@ -1622,16 +1620,14 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
                                 const PipelineOptions& options, std::span<const WeldedEdge> edges,
                                 std::span<const WeldedPatch> patches, std::span<TessVertex> vertices,
                                 std::span<std::uint32_t> indices) {
-    return emit_welded_mesh(tables, nullptr, mesh, options, edges, patches, whole_mesh(mesh), vertices,
-                            indices);
+    return emit_welded_mesh(tables, nullptr, mesh, options, edges, patches, std::nullopt, vertices, indices);
 }
 
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet& uniform,
                                 const MeshView& mesh, const PipelineOptions& options,
                                 std::span<const WeldedEdge> edges, std::span<const WeldedPatch> patches,
                                 std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
-    return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, whole_mesh(mesh), vertices,
-                            indices);
+    return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, std::nullopt, vertices, indices);
 }
 
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
@@ -1649,10 +1645,12 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet&
     return emit_welded_mesh(tables, &uniform, mesh, options, edges, patches, range, vertices, indices);
 }
 
-WeldedRange welded_range(std::span<const WeldedPatch> patches, std::uint32_t part, std::uint32_t parts) {
+WeldedRange welded_range(const MeshView& mesh, std::span<const WeldedPatch> patches, std::uint32_t part,
+                         std::uint32_t parts) {
     parts = parts == 0 ? 1 : parts;
     part = part < parts ? part : parts;
-    const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(patches.size(), 0xFFFFFFFFu));
+    const auto count = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>({patches.size(), mesh.patch_count(), std::uint64_t{0xFFFFFFFFu}}));
     const std::uint64_t total =
         count == 0 ? 0 : std::uint64_t{patches[count - 1].first_triangle} + patches[count - 1].triangle_count;
     // The first patch at or past part k's share of the triangles: a bisection that stays inside the span

@@ -185,7 +185,7 @@ enum class PipelineStatus : std::uint8_t {
     bad_patch_record,   // a record setup_patches did not produce (tampered counts, offsets or rotation)
     no_uniform_tables,  // a uniform pattern through an overload without a UniformTableSet
     bad_option,         // a Pattern, QuadRule or Surface value outside its enum, or an invalid Displacement
-    bad_range,          // a WeldedRange outside the mesh's patches (first_patch > end_patch > patch count)
+    bad_range,          // a WeldedRange outside the mesh's patches, or any range of a mesh without patches
 };
 
 // The limits of one pipeline run, set by the shaders (docs/shaders.md): the patch setup pass is one
@@ -373,11 +373,12 @@ PipelineStatus emit_welded_mesh(const CpTableSet& tables, const UniformTableSet&
 //   for (std::uint32_t k = 0; k < 2; ++k)
 //       threads.emplace_back([&, k] {
 //           status[k] = rt::emit_welded_mesh(cp_tables_64, mesh, options, edges, patches,
-//                                            rt::welded_range(patches, k, 2), vertices, indices);
+//                                            rt::welded_range(mesh, patches, k, 2), vertices, indices);
 //       });
 //
 // Each call checks the edge list, the offsets of every record and the counts of its own records, and
-// writes nothing on a failure (bad_range for a range outside the patches); a failed call leaves the other
+// writes nothing on a failure (bad_range for a range outside the patches, and for any range of a mesh
+// without patches, whose vertices only the call without a range writes); a failed call leaves the other
 // ranges' output in place, so a caller discards the mesh when any range fails. Each call also marks, before
 // writing, the corners and edge points that patches after its range reach (one bit per corner and edge
 // point, as emit_welded_mesh's marks).
@@ -386,9 +387,10 @@ struct WeldedRange {
     std::uint32_t end_patch = 0; // one past the last patch
 };
 
-// Part `part` of `parts` consecutive ranges with about equal output triangles, from the records'
-// first_triangle (parts 0 is taken as 1; a part past the last gives an empty range at the end).
-WeldedRange welded_range(std::span<const WeldedPatch> patches, std::uint32_t part, std::uint32_t parts);
+// Part `part` of `parts` consecutive ranges of the mesh's patches with about equal output triangles, from the
+// records' first_triangle (parts 0 is taken as 1; a part past the last gives an empty range at the end).
+WeldedRange welded_range(const MeshView& mesh, std::span<const WeldedPatch> patches, std::uint32_t part,
+                         std::uint32_t parts);
 
 PipelineStatus emit_welded_mesh(const CpTableSet& tables, const MeshView& mesh,
                                 const PipelineOptions& options, std::span<const WeldedEdge> edges,
