@@ -27,9 +27,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <memory>
+#include <new>
 #include <numbers>
 #include <span>
 #include <string>
@@ -128,8 +131,8 @@ struct StageSeconds {
 // Open edges of a triangle mesh by exact position (every output edge must be in two triangles).
 std::size_t open_edges_by_position(const OutputMesh& mesh) {
     models::Model m;
-    m.vertices = mesh.vertices;
-    m.triangles = mesh.triangles;
+    m.vertices.assign(mesh.vertices.begin(), mesh.vertices.end());
+    m.triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
     return models::open_edge_count(m, models::position_ids(m));
 }
 
@@ -322,10 +325,31 @@ UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& 
                                  backend, reason));
 }
 
-// emit_welded_mesh in `threads` ranges of patches (rt::welded_range), one thread each, the calling thread
-// taking the first: the same output as one call (docs/algorithm.md §7.4, "Ranges"); one thread is the call
-// without a range. The first failure is the answer; an exception in a thread (no memory) is rethrown here
-// once every thread has joined (std::jthread joins on unwinding too).
+// Runs work(k) for k < threads, k = 0 on the calling thread: std::jthread joins on unwinding too, and an
+// exception in a thread (no memory) is rethrown here once every thread has joined.
+template <class Work>
+void on_threads(unsigned threads, Work&& work) {
+    std::vector<std::exception_ptr> error(threads);
+    const auto guarded = [&](unsigned k) noexcept {
+        try {
+            work(k);
+        } catch (...) {
+            error[k] = std::current_exception();
+        }
+    };
+    {
+        std::vector<std::jthread> pool;
+        pool.reserve(threads - 1);
+        for (unsigned k = 1; k < threads; ++k) pool.emplace_back(guarded, k);
+        guarded(0);
+    }
+    for (const std::exception_ptr& e : error)
+        if (e) std::rethrow_exception(e);
+}
+
+// emit_welded_mesh in `threads` ranges of patches (rt::welded_range), one thread each: the same output as one
+// call (docs/algorithm.md §7.4, "Ranges"); one thread is the call without a range. The first failure is the
+// answer.
 rt::PipelineStatus emit_welded_threads(const rt::CpTableSet& cp, const rt::UniformTableSet& uniform,
                                        const rt::MeshView& view, const rt::PipelineOptions& options,
                                        std::span<const rt::WeldedEdge> edges,
@@ -335,26 +359,24 @@ rt::PipelineStatus emit_welded_threads(const rt::CpTableSet& cp, const rt::Unifo
     if (threads <= 1)
         return rt::emit_welded_mesh(cp, uniform, view, options, edges, patches, vertices, indices);
     std::vector<rt::PipelineStatus> status(threads, rt::PipelineStatus::ok);
-    std::vector<std::exception_ptr> error(threads);
-    const auto range = [&](unsigned k) noexcept {
-        try {
-            status[k] = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches,
-                                             rt::welded_range(view, patches, k, threads), vertices, indices);
-        } catch (...) {
-            error[k] = std::current_exception();
-        }
-    };
-    {
-        std::vector<std::jthread> pool;
-        pool.reserve(threads - 1);
-        for (unsigned k = 1; k < threads; ++k) pool.emplace_back(range, k);
-        range(0);
-    }
-    for (const std::exception_ptr& e : error)
-        if (e) std::rethrow_exception(e);
+    on_threads(threads, [&](unsigned k) {
+        status[k] = rt::emit_welded_mesh(cp, uniform, view, options, edges, patches,
+                                         rt::welded_range(view, patches, k, threads), vertices, indices);
+    });
     for (const rt::PipelineStatus s : status)
         if (s != rt::PipelineStatus::ok) return s;
     return rt::PipelineStatus::ok;
+}
+
+// The welded vertices before the mesh's layout takes them: malloc'd and not zeroed (the emit writes every
+// one, first touching the pages on its own threads; a zeroing pass took longer than the emit itself).
+struct FreeDeleter {
+    void operator()(void* p) const noexcept { std::free(p); }
+};
+std::unique_ptr<rt::TessVertex[], FreeDeleter> unzeroed_vertices(std::size_t count) {
+    void* p = std::malloc(std::max<std::size_t>(count, 1) * sizeof(rt::TessVertex));
+    if (p == nullptr) throw std::bad_alloc();
+    return std::unique_ptr<rt::TessVertex[], FreeDeleter>(static_cast<rt::TessVertex*>(p));
 }
 
 } // namespace
@@ -469,15 +491,19 @@ int run_mesh(int argc, char** argv) {
     std::string device;
     OutputChecksums checksums;
     bool shader_pipeline = false;
-    const auto copy_vertices = [&mesh](std::span<const rt::TessVertex> vertices) {
+    // Into the mesh's layout (position, normal, uv), in `slices` parts, one thread each.
+    const auto copy_vertices = [&mesh](std::span<const rt::TessVertex> vertices, unsigned slices = 1) {
         mesh.vertices.resize(8 * vertices.size());
-        for (std::size_t i = 0; i < vertices.size(); ++i) {
-            float* v = &mesh.vertices[8 * i];
-            const rt::TessVertex& t = vertices[i];
-            v[0] = t.position[0], v[1] = t.position[1], v[2] = t.position[2];
-            v[3] = t.normal[0], v[4] = t.normal[1], v[5] = t.normal[2];
-            v[6] = t.uv[0], v[7] = t.uv[1];
-        }
+        const std::size_t n = vertices.size();
+        on_threads(slices, [&](unsigned k) {
+            for (std::size_t i = n * k / slices; i < n * (k + 1) / slices; ++i) {
+                float* v = &mesh.vertices[8 * i];
+                const rt::TessVertex& t = vertices[i];
+                v[0] = t.position[0], v[1] = t.position[1], v[2] = t.position[2];
+                v[3] = t.normal[0], v[4] = t.normal[1], v[5] = t.normal[2];
+                v[6] = t.uv[0], v[7] = t.uv[1];
+            }
+        });
     };
     if (backend.unwelded) {
         const UnweldedPlan plan = unwelded_plan(view, options);
@@ -521,7 +547,7 @@ int run_mesh(int argc, char** argv) {
         }
         checksums = output_checksums(output);
         copy_vertices(output.vertices);
-        mesh.triangles = std::move(output.indices);
+        mesh.triangles.assign(output.indices.begin(), output.indices.end());
         seconds.emit = seconds_since(start);
     } else {
         start = Clock::now();
@@ -549,13 +575,14 @@ int run_mesh(int argc, char** argv) {
         seconds.setup = seconds_since(start);
 
         start = Clock::now();
-        std::vector<rt::TessVertex> vertices(totals.vertices);
+        const auto storage = unzeroed_vertices(totals.vertices);
+        const std::span<rt::TessVertex> vertices(storage.get(), totals.vertices);
         mesh.triangles.resize(3 * std::size_t{totals.triangles});
         status = emit_welded_threads(cp, uniform, view, options, edges, patches, vertices, mesh.triangles,
                                      threads);
         if (status != rt::PipelineStatus::ok)
             throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(status)));
-        copy_vertices(vertices);
+        copy_vertices(vertices, threads);
         seconds.emit = seconds_since(start);
     }
 

@@ -1,8 +1,10 @@
 #include "model_formats.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,11 +22,17 @@ std::string one_line(std::string_view text) {
     return s;
 }
 
-template <class T>
-void append_bytes(std::string& out, const T& value) {
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T)); // little-endian host (x86-64, AArch64): PLY and glTF are LE
-    out.append(bytes, sizeof(T));
+// The files' binary parts are written with memcpy of whole values and runs of values: the host is
+// little-endian (x86-64, AArch64), as PLY's binary_little_endian and glTF are.
+static_assert(std::endian::native == std::endian::little);
+
+// Floats `first` to `first + count - 1` of every 8-float vertex, packed, from `to` on (a glTF accessor's
+// data).
+unsigned char* copy_columns(std::span<const float> vertices, std::size_t first, std::size_t count,
+                            unsigned char* to) {
+    for (std::size_t i = 0; i < vertices.size() / 8; ++i, to += 4 * count)
+        std::memcpy(to, &vertices[8 * i + first], 4 * count);
+    return to;
 }
 
 } // namespace
@@ -52,11 +60,19 @@ std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment) {
                                   "property float s\nproperty float t\nelement face {}\n"
                                   "property list uchar uint vertex_indices\nend_header\n",
                                   one_line(comment), mesh.vertex_count(), mesh.triangle_count());
+    // The vertices as they are (x y z nx ny nz s t, float32), then per face a count byte and three uint32,
+    // appended in blocks (no zeroing of the whole string first).
     out.reserve(out.size() + mesh.vertices.size() * 4 + mesh.triangle_count() * 13);
-    for (const float f : mesh.vertices) append_bytes(out, f);
-    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
-        out.push_back(3);
-        for (int k = 0; k < 3; ++k) append_bytes(out, mesh.triangles[t + k]);
+    out.append(reinterpret_cast<const char*>(mesh.vertices.data()), mesh.vertices.size() * 4);
+    constexpr std::size_t block = 1024;
+    char faces[13 * block];
+    for (std::size_t t = 0; t < mesh.triangle_count(); t += block) {
+        const std::size_t count = std::min(block, mesh.triangle_count() - t);
+        for (std::size_t k = 0; k < count; ++k) {
+            faces[13 * k] = 3;
+            std::memcpy(&faces[13 * k + 1], &mesh.triangles[3 * (t + k)], 12);
+        }
+        out.append(faces, 13 * count);
     }
     return out;
 }
@@ -76,23 +92,20 @@ std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment) {
     model.asset.version = "2.0";
     model.asset.generator = one_line(comment);
     tinygltf::Buffer buffer;
-    std::string bytes;
-    bytes.reserve(n * 32 + mesh.triangles.size() * 4);
+    buffer.data.resize(n * 32 + mesh.triangles.size() * 4);
     std::vector<double> lo(3, std::numeric_limits<double>::infinity()),
         hi(3, -std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k) {
             const float f = mesh.vertices[8 * i + k];
-            append_bytes(bytes, f);
             lo[k] = std::min<double>(lo[k], f);
             hi[k] = std::max<double>(hi[k], f);
         }
-    for (std::size_t i = 0; i < n; ++i)
-        for (int k = 3; k < 6; ++k) append_bytes(bytes, mesh.vertices[8 * i + k]);
-    for (std::size_t i = 0; i < n; ++i)
-        for (int k = 6; k < 8; ++k) append_bytes(bytes, mesh.vertices[8 * i + k]);
-    for (const std::uint32_t index : mesh.triangles) append_bytes(bytes, index);
-    buffer.data.assign(bytes.begin(), bytes.end());
+    unsigned char* to = buffer.data.data();
+    to = copy_columns(mesh.vertices, 0, 3, to); // positions
+    to = copy_columns(mesh.vertices, 3, 3, to); // normals
+    to = copy_columns(mesh.vertices, 6, 2, to); // uvs
+    std::memcpy(to, mesh.triangles.data(), mesh.triangles.size() * 4);
     model.buffers.push_back(std::move(buffer));
 
     const auto add_view = [&](std::size_t offset, std::size_t length, int target) {

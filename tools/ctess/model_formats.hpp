@@ -2,17 +2,45 @@
 // which round-trips every float), binary little-endian PLY, or binary glTF 2.0 (.glb, through tinygltf).
 #pragma once
 #include <cstdint>
+#include <memory>
+#include <new>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace ctess::cli {
 
+// An allocator whose resize() leaves new floats and integers unwritten (default-initialised), so that the
+// tessellator writes the output's pages first, on its own threads, instead of after a zeroing pass (which
+// took as long as the emit). Every element is written before it is read: the welded emit fills every vertex
+// and index, copy_vertices every float (cmd_mesh.cpp).
+template <class T>
+struct UnzeroedAllocator : std::allocator<T> {
+    using value_type = T;
+    template <class U>
+    struct rebind {
+        using other = UnzeroedAllocator<U>;
+    };
+    UnzeroedAllocator() = default;
+    template <class U>
+    UnzeroedAllocator(const UnzeroedAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
 // One indexed triangle mesh: 8 floats per vertex (position xyz, normal xyz, uv), 3 indices per triangle,
 // counter-clockwise. The layout of models::Model and the pipeline's vertex attributes.
 struct OutputMesh {
-    std::vector<float> vertices;
-    std::vector<std::uint32_t> triangles;
+    std::vector<float, UnzeroedAllocator<float>> vertices;
+    std::vector<std::uint32_t, UnzeroedAllocator<std::uint32_t>> triangles;
     std::size_t vertex_count() const { return vertices.size() / 8; }
     std::size_t triangle_count() const { return triangles.size() / 3; }
 };
