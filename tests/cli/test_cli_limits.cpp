@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -121,6 +122,40 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary behin
     // Without the limit the file is replaced whole.
     REQUIRE(ctess_cli("pattern --factors 16,16,16 --format svg --out " + out).exit_code == 0);
     CHECK(contains(read_file(out), "</svg>"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE(
+    "ctess mesh --out .glb (streamed to the file): a failed write keeps the previous file, no temporary",
+    "[cli][limits]") {
+    const std::string dir = temp_path("atomic_glb");
+    std::filesystem::create_directories(dir);
+    const std::string model = dir + "/tetra.obj";
+    { std::ofstream(model) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"; }
+    const std::string out = dir + "/t.glb";
+    { std::ofstream(out) << "previous content\n"; }
+    // About 50 KB of .glb at factor 16 against a 4 KiB file-size limit: write() fails with EFBIG part-way.
+    const std::string mesh = std::string(CTESS_CLI) + " mesh --in " + model + " --factor 16 --out ";
+    const Run r = run_shell("trap '' XFSZ; ulimit -f 4; " + mesh + out + " 2>&1");
+    CHECK(r.exit_code == 1);
+    CHECK(contains(r.out, "cannot write '" + out + "': File too large"));
+    CHECK(read_file(out) == "previous content\n");
+    CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) ==
+          2);
+    // A device is written in place: a full one is the OS reason.
+    const std::string full = dir + "/full.glb";
+    std::filesystem::create_symlink("/dev/full", full);
+    const Run f = run_shell(mesh + full + " 2>&1");
+    CHECK(f.exit_code == 1);
+    CHECK(contains(f.out, "No space left on device"));
+    // Without the limit the file is replaced whole: a binary glTF header and its stated length.
+    REQUIRE(run_shell(mesh + out).exit_code == 0);
+    const std::string glb = read_file(out);
+    REQUIRE(glb.size() > 12);
+    CHECK(glb.substr(0, 4) == "glTF");
+    std::uint32_t length = 0;
+    std::memcpy(&length, glb.data() + 8, 4);
+    CHECK(length == glb.size());
     std::filesystem::remove_all(dir);
 }
 

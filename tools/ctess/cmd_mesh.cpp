@@ -589,9 +589,10 @@ int run_mesh(int argc, char** argv) {
     if (!out.empty()) {
         start = Clock::now();
         const std::string comment = fmt::format("ctess mesh --in {} --pattern {}", in, pattern);
-        write_text(out, format == "obj"   ? mesh_to_obj(mesh, comment)
-                        : format == "ply" ? mesh_to_ply(mesh, comment)
-                                          : mesh_to_glb(mesh, comment));
+        if (format == "glb")
+            write_stream(out, [&](std::ostream& stream) { write_glb(mesh, comment, stream); });
+        else
+            write_text(out, format == "obj" ? mesh_to_obj(mesh, comment) : mesh_to_ply(mesh, comment));
         seconds.write = seconds_since(start);
     }
     if (stats) {

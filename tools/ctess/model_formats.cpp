@@ -77,7 +77,7 @@ std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment) {
     return out;
 }
 
-std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment) {
+void write_glb(const OutputMesh& mesh, std::string_view comment, std::ostream& out) {
     // One buffer: positions, normals, uvs (each tightly packed, as glTF accessors with min/max on POSITION),
     // then the indices. glTF requires POSITION's min and max.
     const std::size_t n = mesh.vertex_count();
@@ -152,10 +152,14 @@ std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment) {
     model.scenes.push_back(scene);
     model.defaultScene = 0;
 
-    std::ostringstream stream;
     tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, stream, false, true))
+    if (!writer.WriteGltfSceneToStream(&model, out, false, true))
         throw std::runtime_error("tinygltf could not write the binary glTF");
+}
+
+std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment) {
+    std::ostringstream stream;
+    write_glb(mesh, comment, stream);
     return stream.str();
 }
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <new>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -49,5 +50,7 @@ struct OutputMesh {
 std::string mesh_to_obj(const OutputMesh& mesh, std::string_view comment);
 std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment);
 std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment);
+// The same .glb written to out (for write_stream: the file without a copy of it in memory).
+void write_glb(const OutputMesh& mesh, std::string_view comment, std::ostream& out);
 
 } // namespace ctess::cli
