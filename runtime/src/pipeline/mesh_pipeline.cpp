@@ -20,6 +20,7 @@
 #include <ctess/core/patch_concept.hpp>
 #include <ctess/cp/quad.hpp>
 #include <ctess/d3d11/tessellator.hpp>
+#include <ctess/runtime/cp/line_state.hpp>
 #include <ctess/runtime/displace/displace.hpp>
 #include <ctess/runtime/uniform/split.hpp>
 
@@ -257,7 +258,7 @@ struct CpFamily {
     void set_lines(PatchRecord& rec, const float (&f)[3]) const {
         for (unsigned k = 0; k < 3; ++k) {
             const cp::LineState s =
-                cp::clamp_line_state(cp::line_state(f[k], tables.max_factor), tables.max_factor);
+                cp::clamp_line_state(rt::line_state(f[k], tables.max_factor), tables.max_factor);
             rec.token[k] = s.token;
             rec.t16[k] = s.t16;
         }
@@ -315,7 +316,7 @@ struct CpFamily {
         out.finish();
     }
     void edge_params(float f, EdgeParams& out) const {
-        params_of_state(cp::line_state(f, tables.max_factor), out);
+        params_of_state(rt::line_state(f, tables.max_factor), out);
     }
     void record_edge_params(const PatchRecord& rec, unsigned k, EdgeParams& out) const {
         params_of_state(cp::LineState{rec.token[k], rec.t16[k]}, out);
