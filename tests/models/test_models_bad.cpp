@@ -77,6 +77,23 @@ TEST_CASE("bad file: every truncation of a .glb is an error") {
     }
 }
 
+TEST_CASE("bad file: a .glb whose BIN chunk runs past the end is refused (tinygltf would read past it)") {
+    // The file ends 8 bytes early and its header says so; the BIN chunk still claims its 44 bytes, which
+    // tinygltf's own check lets through (it forgets the chunk's 8-byte header) and then copies.
+    std::string bytes = triangle_glb();
+    bytes.resize(bytes.size() - 8);
+    const auto total = static_cast<std::uint32_t>(bytes.size());
+    std::memcpy(&bytes[8], &total, 4);
+    require_error(load_bytes(bytes, ModelKind::gltf_binary), "test", "second chunk runs past the end");
+    // One byte short of the whole chunk, too; the whole file loads.
+    bytes = triangle_glb();
+    bytes.pop_back();
+    const auto short_total = static_cast<std::uint32_t>(bytes.size());
+    std::memcpy(&bytes[8], &short_total, 4);
+    require_error(load_bytes(bytes, ModelKind::gltf_binary), "test", "second chunk runs past the end");
+    CHECK(load_bytes(triangle_glb(), ModelKind::gltf_binary).ok());
+}
+
 TEST_CASE("bad file: sizes claiming 2 GB are refused before allocating") {
     std::string header = triangle_glb();
     const std::uint32_t huge = 0x80000000u;

@@ -313,6 +313,18 @@ HeightMapResult decode(std::span<const std::uint8_t> bytes, const std::string& n
                    std::uint32_t{bytes[at + 2]} << 8 | bytes[at + 3];
         };
         if (std::string problem = size_problem(be32(16), be32(20)); !problem.empty()) return fail(problem);
+        // Every chunk (length, type, data, CRC) inside the file, up to IEND: stb_image allocates an IDAT
+        // chunk's claimed length before reading it (a 74-byte file claiming 1 GiB asked for 2 GiB,
+        // fuzz_height_map), so no claim may pass the bytes there are.
+        for (std::size_t at = 8; at + 8 <= bytes.size();) {
+            const std::uint64_t next = at + std::uint64_t{12} + be32(at);
+            if (next > bytes.size())
+                return fail("a PNG chunk runs past the end of the file (truncated or corrupt)");
+            if (std::equal(bytes.begin() + static_cast<std::ptrdiff_t>(at + 4),
+                           bytes.begin() + static_cast<std::ptrdiff_t>(at + 8), "IEND"))
+                break;
+            at = static_cast<std::size_t>(next);
+        }
     }
     int w = 0, h = 0, channels = 0;
     if (stbi_info_from_memory(bytes.data(), length, &w, &h, &channels) == 0)
