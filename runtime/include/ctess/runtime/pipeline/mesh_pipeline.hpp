@@ -217,7 +217,7 @@ constexpr const char* pipeline_status_message(PipelineStatus status) {
     case PipelineStatus::bad_option:
         return "an option (pattern, quad rule, surface) is outside its enum";
     case PipelineStatus::bad_range:
-        return "a range of patches lies outside the mesh's patches";
+        return "a range of patches lies outside the mesh's patches (a mesh without patches has no ranges)";
     }
     return "unknown status";
 }
