@@ -5,7 +5,6 @@
 #include <cstring>
 #include <limits>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -155,12 +154,6 @@ void write_glb(const OutputMesh& mesh, std::string_view comment, std::ostream& o
     tinygltf::TinyGLTF writer;
     if (!writer.WriteGltfSceneToStream(&model, out, false, true))
         throw std::runtime_error("tinygltf could not write the binary glTF");
-}
-
-std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment) {
-    std::ostringstream stream;
-    write_glb(mesh, comment, stream);
-    return stream.str();
 }
 
 } // namespace ctess::cli

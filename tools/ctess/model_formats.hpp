@@ -49,8 +49,7 @@ struct OutputMesh {
 // `comment` becomes the file's comment (OBJ, PLY) or asset.generator (glTF); one line, no newlines.
 std::string mesh_to_obj(const OutputMesh& mesh, std::string_view comment);
 std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment);
-std::string mesh_to_glb(const OutputMesh& mesh, std::string_view comment);
-// The same .glb written to out (for write_stream: the file without a copy of it in memory).
+// The .glb is written to a stream (write_stream: into the file, without a copy of it in memory).
 void write_glb(const OutputMesh& mesh, std::string_view comment, std::ostream& out);
 
 } // namespace ctess::cli

@@ -524,9 +524,9 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
-// The one check of a .glb's chunks tinygltf (2.5 to 2.8) lacks: it bounds the BIN chunk's data by the file
-// without the chunk's 8-byte header, so a BIN chunk whose length runs up to 8 bytes past the end of the file
-// is read past it (found by fuzz_models_glb). The GLB layout: a 12-byte header (magic, version, total
+// The one check of a .glb's chunks Debian 12's tinygltf (2.7) lacks: it bounds the BIN chunk's data by the
+// file without the chunk's 8-byte header, so a BIN chunk whose length runs up to 8 bytes past the end of the
+// file is read past it (found by fuzz_models_glb). The GLB layout: a 12-byte header (magic, version, total
 // length), then chunks of a 4-byte length, a 4-byte type and the data (glTF 2.0 specification, "GLB File
 // Format").
 void check_glb_chunks(std::span<const std::uint8_t> bytes) {
