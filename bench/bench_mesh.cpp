@@ -304,19 +304,19 @@ void torus_welded_ranges(benchmark::State& state) {
         return;
     }
     const auto threads = static_cast<std::uint32_t>(state.range(0));
+    // Range k starts where welded_range's part k starts (part `threads` is the empty range at the end).
+    const auto bound = [&](std::uint32_t k) {
+        return rt::welded_range(run.mesh, run.welded_patches, k, threads).first_patch;
+    };
     std::atomic<bool> ok = true;
     for (auto _ : state) {
-        std::vector<std::thread> pool;
-        const auto range = [&](std::uint32_t k) {
+        in_parallel(threads, bound, [&](std::uint32_t first, std::uint32_t end) {
             if (rt::emit_welded_mesh(tables(), run.mesh, run.options,
                                      std::span(run.edges).first(run.welded_totals.edges), run.welded_patches,
-                                     rt::welded_range(run.mesh, run.welded_patches, k, threads),
-                                     run.welded_vertices, run.welded_indices) != rt::PipelineStatus::ok)
+                                     rt::WeldedRange{first, end}, run.welded_vertices,
+                                     run.welded_indices) != rt::PipelineStatus::ok)
                 ok = false;
-        };
-        for (std::uint32_t k = 1; k < threads; ++k) pool.emplace_back(range, k);
-        range(0);
-        for (std::thread& t : pool) t.join();
+        });
         benchmark::ClobberMemory();
     }
     if (!ok) state.SkipWithError("the pipeline refused its own buffers");

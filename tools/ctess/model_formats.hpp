@@ -8,7 +8,6 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace ctess::cli {
@@ -20,20 +19,14 @@ namespace ctess::cli {
 template <class T>
 struct UnzeroedAllocator : std::allocator<T> {
     using value_type = T;
-    template <class U>
-    struct rebind {
-        using other = UnzeroedAllocator<U>;
-    };
     UnzeroedAllocator() = default;
     template <class U>
     UnzeroedAllocator(const UnzeroedAllocator<U>&) noexcept {}
+    // Value-initialisation (resize) becomes default-initialisation; every other construction is
+    // std::allocator_traits' own.
     template <class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
         ::new (static_cast<void*>(p)) U;
-    }
-    template <class U, class... Args>
-    void construct(U* p, Args&&... args) {
-        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 };
 
