@@ -198,60 +198,84 @@ TEST_CASE("uniform split: the provoking layout gives every triangle its own firs
         }
 }
 
-TEST_CASE("uniform split provoking: each leaf's block is its own pattern, whether leaves repeat or alternate",
-          "[uniform][split][provoking]") {
-    // emit() reuses the last leaf's points and indices when a leaf rounds alike (§3.5, "Leaf reuse"). Checked
-    // against each leaf's UniformPatch through random access (vertex(i), triangle(p): no bulk emit, no
-    // reuse): leaf k's indices are its triangles plus the vertices of the leaves before it, and its points
-    // its pattern's points on its corners, exact at depth 0 and 1, within half a unit (the rounding) below.
+TEST_CASE(
+    "uniform split provoking and leaves: each leaf's block is its own pattern, whether leaves repeat or "
+    "alternate",
+    "[uniform][split][provoking]") {
+    // emit() (provoking) and emit_leaves() (shared: the mesh pipeline's unwelded layout, §7.5) reuse the last
+    // leaf's points and indices when a leaf rounds alike (§3.5, "Leaf reuse"). Checked against each leaf's
+    // UniformPatch through random access (vertex(i), triangle(p): no bulk emit, no reuse): leaf k's indices
+    // are its triangles plus the vertices of the leaves before it, and its points its pattern's points on its
+    // corners, exact at depth 0 and 1, within half a unit (the rounding) below. The shared leaves' triangles
+    // are the welded emit()'s, position for position.
     std::size_t repeated = 0, changed = 0;
     for (const auto* set : {&ctess::rt::uniform_tables_11, &ctess::rt::uniform_tables_16})
-        for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw})
-            for (const auto& f : std::array<std::array<float, 3>, 5>{
-                     {{32, 32, 32}, {64, 40, 25}, {100, 3, 99}, {300, 280, 260}, {33, 17, 33}}}) {
-                INFO("max " << set->max_factor << " factors " << f[0] << "," << f[1] << "," << f[2]);
-                const UniformSplit split(*set, f[0], f[1], f[2], {ctess::Layout::provoking, winding});
-                const auto e = emit_all(split);
-                std::uint32_t base = 0, first = 0;
-                std::size_t wrong_indices = 0, wrong_points = 0, outside = 0;
-                std::array<std::uint32_t, 3> previous{};
-                split.for_each_leaf([&](const UniformSplit::Leaf& leaf) {
-                    const ctess::Counts n = leaf.patch.counts();
-                    const auto sorted = leaf.patch.sorted_factors();
-                    (sorted == previous ? repeated : changed) += 1;
-                    previous = sorted;
-                    if (std::size_t{base} + n.vertices > e.vertices.size() ||
-                        std::size_t{first} + n.index_count() > e.indices.size()) {
-                        ++outside;
-                        return;
+        for (const ctess::Layout layout : {ctess::Layout::provoking, ctess::Layout::shared})
+            for (const ctess::Winding winding : {ctess::Winding::ccw, ctess::Winding::cw})
+                for (const auto& f : std::array<std::array<float, 3>, 5>{
+                         {{32, 32, 32}, {64, 40, 25}, {100, 3, 99}, {300, 280, 260}, {33, 17, 33}}}) {
+                    INFO("max " << set->max_factor << " factors " << f[0] << "," << f[1] << "," << f[2]
+                                << (layout == ctess::Layout::shared ? " leaves" : " provoking"));
+                    const UniformSplit split(*set, f[0], f[1], f[2], {layout, winding});
+                    ctess::test::BasicEmitted<SplitPoint> e;
+                    if (layout == ctess::Layout::shared) {
+                        e.vertices.resize(split.leaf_counts().vertices);
+                        e.indices.resize(split.leaf_counts().index_count());
+                        REQUIRE(split.emit_leaves(e.vertices, e.indices));
+                        REQUIRE_FALSE(
+                            split.emit_leaves(std::span(e.vertices).first(e.vertices.size() - 1), e.indices));
+                        const auto welded = emit_all(split);
+                        REQUIRE(welded.indices.size() == e.indices.size());
+                        std::size_t moved = 0;
+                        for (std::size_t t = 0; t < e.indices.size(); ++t)
+                            moved += welded.vertices[welded.indices[t]] != e.vertices[e.indices[t]];
+                        CHECK(moved == 0);
+                        CHECK(split.leaf_counts().vertices > split.counts().vertices);
+                    } else {
+                        e = emit_all(split);
+                        CHECK(split.leaf_counts() == split.counts());
                     }
-                    for (std::uint32_t p = 0; p < n.triangles; ++p) {
-                        const auto t = leaf.patch.triangle(p);
-                        for (std::uint32_t c = 0; c < 3; ++c)
-                            wrong_indices += e.indices[first + 3 * p + c] != base + t[c];
-                    }
-                    constexpr std::int64_t one = ctess::uniform::fixed_one;
-                    for (std::uint32_t i = 0; i < n.vertices; ++i) {
-                        const auto d = leaf.patch.vertex(i);
-                        const std::int64_t w = one - d.u - d.v;
-                        for (int k = 0; k < 2; ++k) {
-                            const std::int64_t sum = w * leaf.corners[0][k] +
-                                                     std::int64_t{d.u} * leaf.corners[1][k] +
-                                                     std::int64_t{d.v} * leaf.corners[2][k];
-                            const std::int64_t got = k == 0 ? e.vertices[base + i].u : e.vertices[base + i].v;
-                            wrong_points += leaf.depth <= 1
-                                                ? sum % one != 0 || got != sum / one
-                                                : got * one - sum > one / 2 || sum - got * one > one / 2;
+                    std::uint32_t base = 0, first = 0;
+                    std::size_t wrong_indices = 0, wrong_points = 0, outside = 0;
+                    std::array<std::uint32_t, 3> previous{};
+                    split.for_each_leaf([&](const UniformSplit::Leaf& leaf) {
+                        const ctess::Counts n = leaf.patch.counts();
+                        const auto sorted = leaf.patch.sorted_factors();
+                        (sorted == previous ? repeated : changed) += 1;
+                        previous = sorted;
+                        if (std::size_t{base} + n.vertices > e.vertices.size() ||
+                            std::size_t{first} + n.index_count() > e.indices.size()) {
+                            ++outside;
+                            return;
                         }
-                    }
-                    base += n.vertices, first += n.index_count();
-                });
-                CHECK(outside == 0);
-                CHECK(wrong_indices == 0);
-                CHECK(wrong_points == 0);
-                CHECK(base == e.vertices.size());
-                CHECK(first == e.indices.size());
-            }
+                        for (std::uint32_t p = 0; p < n.triangles; ++p) {
+                            const auto t = leaf.patch.triangle(p);
+                            for (std::uint32_t c = 0; c < 3; ++c)
+                                wrong_indices += e.indices[first + 3 * p + c] != base + t[c];
+                        }
+                        constexpr std::int64_t one = ctess::uniform::fixed_one;
+                        for (std::uint32_t i = 0; i < n.vertices; ++i) {
+                            const auto d = leaf.patch.vertex(i);
+                            const std::int64_t w = one - d.u - d.v;
+                            for (int k = 0; k < 2; ++k) {
+                                const std::int64_t sum = w * leaf.corners[0][k] +
+                                                         std::int64_t{d.u} * leaf.corners[1][k] +
+                                                         std::int64_t{d.v} * leaf.corners[2][k];
+                                const std::int64_t got =
+                                    k == 0 ? e.vertices[base + i].u : e.vertices[base + i].v;
+                                wrong_points += leaf.depth <= 1
+                                                    ? sum % one != 0 || got != sum / one
+                                                    : got * one - sum > one / 2 || sum - got * one > one / 2;
+                            }
+                        }
+                        base += n.vertices, first += n.index_count();
+                    });
+                    CHECK(outside == 0);
+                    CHECK(wrong_indices == 0);
+                    CHECK(wrong_points == 0);
+                    CHECK(base == e.vertices.size());
+                    CHECK(first == e.indices.size());
+                }
     // Both paths ran: leaves that repeat the last one's pattern and leaves that change it.
     CHECK(repeated > 500);
     CHECK(changed > 100);

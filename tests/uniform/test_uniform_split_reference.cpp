@@ -1,7 +1,8 @@
 // UniformSplit (docs/algorithm.md §3.5) against golden digests of the code it was optimised from (the
 // reference implementation of commit 2407141f, whose outputs these digests were taken from before it was
-// removed from the tree). Counts, depth, subpatches, every emitted vertex and index, every leaf and the
-// longest edge enter one FNV-1a digest per table, layout, winding and interior tolerance, over fixed triples
+// removed from the tree). Counts, depth, subpatches, every emitted vertex and index, every leaf (corners,
+// depth, pattern, counts) and the longest edge enter one FNV-1a digest per table, layout, winding and
+// interior tolerance, over fixed triples
 // (clamped and bad input among them) and seeded random ones at every depth (0: within the table, 1 and 2:
 // split). The reference clamped factors to N^2; the inputs are clamped to N^2 here as it did, so the digests
 // show that every output up to N^2 is unchanged by the deeper splitting above it. A changed digest means a
@@ -58,7 +59,6 @@ void add_split(Digest& d, const ctess::rt::UniformSplit& s) {
     for (const auto& p : e.vertices) d.word(std::uint64_t{p.u} << 32 | p.v);
     for (std::uint32_t i : e.indices) d.word(i);
     s.for_each_leaf([&](const auto& leaf) {
-        for (double f : leaf.factors) d.real(f);
         for (const auto& c : leaf.corners)
             d.word(static_cast<std::uint64_t>(c[0])), d.word(static_cast<std::uint64_t>(c[1]));
         d.word(leaf.depth), d.word(leaf.patch.pattern_index());
@@ -75,7 +75,10 @@ struct Golden {
     std::array<int, 3> by_depth; // how many of the triples reach depth 0, 1, 2
 };
 
-// Taken from the reference implementation (commit 2407141f) over split_cases().
+// Taken from the reference implementation (commit 2407141f) over split_cases(), then again from f39a511
+// without the leaf factors' double bits (its outputs still had 2407141f's digests): the decisions read exact
+// squared factors since (§3.5, "Exact factors"), and the same outputs show that they decide as the doubles
+// did.
 constexpr Golden golden[] = {
 #include "uniform_split_golden.inc"
 };

@@ -401,14 +401,21 @@ class StoredPatch {
     std::vector<std::uint32_t> indices_;
 };
 
-// A UniformSplit (§3.5) in the pipeline's shared, counter-clockwise layout.
+// A UniformSplit (§3.5) in the pipeline's shared, counter-clockwise layout: leaf by leaf (the unwelded
+// output's layout, the shaders', §7.5) or welded within the patch (what the weld reads: fewer slots).
 class SplitPatch : public StoredPatch<uniform::SplitPoint> {
   public:
-    explicit SplitPatch(const UniformSplit& split) {
-        resize(split.counts());
-        // The spans are counts() long, so emit() writes them whole (split.hpp); anything else is a broken
+    enum class Points { leaves, welded };
+    SplitPatch(const UniformSplit& split, Points points) {
+        // The spans are the counts long, so the emit writes them whole (split.hpp); anything else is a broken
         // invariant, never an output with a silently empty or zeroed patch.
-        if (!split.emit(points_, indices_)) std::abort();
+        if (points == Points::leaves) {
+            resize(split.leaf_counts());
+            if (!split.emit_leaves(points_, indices_)) std::abort();
+        } else {
+            resize(split.counts());
+            if (!split.emit(points_, indices_)) std::abort();
+        }
     }
 };
 
@@ -449,15 +456,19 @@ struct UniformSplitFamily {
         counts = counts_of(rec);
         return true;
     }
-    patch_type patch(const PatchRecord& rec) const { return SplitPatch(split_of(tables, rec)); }
-    // The counts from the split's walk, without emitting; counts past 32 bits (which UniformSplit gives as
-    // {0, 0}; none with the shipped tables) as the most a record holds, so that the totals check refuses them
-    // (too_many_vertices) instead of losing the patch.
+    patch_type patch(const PatchRecord& rec) const {
+        return SplitPatch(split_of(tables, rec), SplitPatch::Points::leaves);
+    }
+    // The leaves' counts from the split's walk, without emitting; counts past 32 bits (which UniformSplit
+    // gives as {0, 0}; none with the shipped tables) as the most a record holds, so that the totals check
+    // refuses them (too_many_vertices) instead of losing the patch.
     Counts counts_of(const PatchRecord& rec) const {
-        const Counts c = split_of(tables, rec).counts();
+        const Counts c = split_of(tables, rec).leaf_counts();
         return c.triangles == 0 ? Counts{0xFFFFFFFFu, 0xFFFFFFFFu} : c;
     }
-    patch_type welded_patch(const PatchRecord& rec) const { return patch(rec); }
+    patch_type welded_patch(const PatchRecord& rec) const {
+        return SplitPatch(split_of(tables, rec), SplitPatch::Points::welded);
+    }
     static DomainPoint base_point(const patch_type& patch, const PatchRecord&, std::uint32_t i) {
         return to_base_weights(patch.vertex(i));
     }

@@ -1,8 +1,8 @@
 // UniformSplit's every decision (docs/algorithm.md §3.5): factor sanitising, edge pieces and the dice
-// limit, rounding, child factors, the walks that count and emit, longest_edge. Compiled once with
-// contraction and fast-math off (runtime/CMakeLists.txt, ctess_uniform_core), so that counts() and emit()
-// take the same decisions, and both patches of an edge the same, whatever flags the caller uses
-// (docs/api.md, "Crack-free evaluation").
+// limit, rounding, child factors, the walks that count and emit, longest_edge. The decisions read exact
+// squared factors in integers (uniform/split_factor.hpp), the shaders' arithmetic; the file is still compiled
+// with contraction and fast-math off (runtime/CMakeLists.txt, ctess_uniform_core) for longest_edge and the
+// real factors it reports (docs/api.md, "Crack-free evaluation").
 #include <ctess/runtime/uniform/split.hpp>
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include <ctess/uniform/factor.hpp>
 #include <ctess/uniform/metric.hpp>
 #include <ctess/uniform/pattern.hpp>
+#include <ctess/uniform/split_factor.hpp>
 
 namespace ctess::rt {
 
@@ -121,14 +122,15 @@ void add_copy(const std::uint32_t* from, std::uint32_t* to, std::size_t count, s
 struct UniformSplit::Impl {
     const UniformTableSet* tables_;
     PatchOptions options_;
-    std::array<double, 3> root_;
-    double tolerance_;
-    std::uint32_t depth_limit_; // leaves at this depth are diced (factors clamped to N), §3.5
+    std::array<double, 3> root_;                         // the rounded root factors, for longest_edge only
+    std::array<uniform::SquaredFactor, 3> root_squared_; // the same, exact: what the decisions read
+    std::uint64_t interior_limit_; // interior_limit_squared(N, tolerance): the interior dice limit
+    std::uint32_t depth_limit_;    // leaves at this depth are diced (factors clamped to N), §3.5
 
     using Point = std::array<std::int64_t, 2>; // units of 65534^2
     struct Sub {
         std::array<Point, 3> corner;
-        std::array<double, 3> factor;
+        std::array<uniform::SquaredFactor, 3> factor; // exact squares (split_factor.hpp)
         std::uint32_t depth;
     };
     // Counted in 64 bits: the constructor checks the totals against 32-bit counts (§3.5, "Counts").
@@ -206,7 +208,9 @@ struct UniformSplit::Impl {
         UniformSplit::LeafCallback callback;
         void* context;
         void patch(const UniformPatch& p, const Sub& s, const Impl&) const {
-            callback(context, UniformSplit::Leaf{p, s.factor, s.corner, s.depth});
+            const std::array<double, 3> real{uniform::factor_of(s.factor[0]), uniform::factor_of(s.factor[1]),
+                                             uniform::factor_of(s.factor[2])};
+            callback(context, UniformSplit::Leaf{p, real, s.factor, s.corner, s.depth});
         }
     };
     struct EdgeMeter {
@@ -294,18 +298,17 @@ struct UniformSplit::Impl {
         }
     }
 
-    // The intrinsic length of segment a-b (local units of 65534) in the metric whose sides are f.
-    static double edge_factor(const std::array<double, 3>& f, uniform::Point a, uniform::Point b) noexcept {
-        const double one = uniform::fixed_one;
-        return uniform::intrinsic_length(f, (double(b.u) - double(a.u)) / one,
-                                         (double(b.v) - double(a.v)) / one);
+    // The squared intrinsic length of segment a-b (local units of 65534) in the metric whose sides have the
+    // squared factors f, exact (split_factor.hpp).
+    static uniform::SquaredFactor edge_factor(const std::array<uniform::SquaredFactor, 3>& f,
+                                              uniform::Point a, uniform::Point b) noexcept {
+        return uniform::segment_squared_factor(f, std::int64_t{b.u} - std::int64_t{a.u},
+                                               std::int64_t{b.v} - std::int64_t{a.v});
     }
 
-    std::uint32_t rounded(double t) const noexcept {
-        const std::uint32_t n = tables_->max_factor;
-        if (!(t >= 1.5)) return 1u;
-        if (!(t < double(n) - 0.5)) return n;
-        return static_cast<std::uint32_t>(t + 0.5);
+    // A leaf's factor: rounded half up and clamped to [1, N].
+    std::uint32_t rounded(uniform::SquaredFactor s) const noexcept {
+        return uniform::rounded_factor_within(s, tables_->max_factor);
     }
 
     template <class Visitor>
@@ -314,15 +317,16 @@ struct UniformSplit::Impl {
     }
     Sub root() const noexcept {
         const std::int64_t one = uniform_split_fixed_one;
-        return Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_, 0};
+        return Sub{{Point{0, 0}, Point{one, 0}, Point{0, one}}, root_squared_, 0};
     }
 
-    // The dice limit of an edge at this depth: on the root's boundary N (+ rounding) at every depth (a
-    // piece of a root edge above 256 can be above N: 5000 / 16 / 16 = 19.5 must split again, not clamp),
-    // inside the root tolerance x N. Up to N^2 a root edge's pieces are at most N: outputs unchanged.
-    double dice_limit(std::uint32_t depth, bool on_root_boundary) const noexcept {
-        const double n = tables_->max_factor;
-        return depth == 0 || on_root_boundary ? n + 0.5 : n * tolerance_;
+    // Whether an edge is within the dice limit at this depth: on the root's boundary f < N + 1/2 at every
+    // depth (a piece of a root edge above 256 can be above N: 5000 / 16 / 16 = 19.5 must split again, not
+    // clamp), inside the root f < tolerance x N. Up to N^2 a root edge's pieces are at most N.
+    bool within_dice_limit(uniform::SquaredFactor s, std::uint32_t depth,
+                           bool on_root_boundary) const noexcept {
+        return depth == 0 || on_root_boundary ? uniform::below_half_past(s, tables_->max_factor)
+                                              : s < interior_limit_;
     }
     // Whether a subpatch's edge from corner a to b lies on the root's boundary (both on one root edge).
     static bool on_boundary(const Point& a, const Point& b) noexcept {
@@ -337,10 +341,11 @@ struct UniformSplit::Impl {
     // How many pieces a split divides an edge into: a function of the edge's own factor and depth only, so
     // the two patches that share the edge agree whether each of them is diced or split. An edge within the
     // dice limit stays whole (its patch may still split because of another edge).
-    std::uint32_t edge_pieces(double factor, std::uint32_t depth, bool on_root_boundary) const noexcept {
+    std::uint32_t edge_pieces(uniform::SquaredFactor factor, std::uint32_t depth,
+                              bool on_root_boundary) const noexcept {
         const std::uint32_t n = tables_->max_factor;
-        if (factor < dice_limit(depth, on_root_boundary)) return 1u;
-        const std::uint32_t t = static_cast<std::uint32_t>(std::floor(factor + 0.5));
+        if (within_dice_limit(factor, depth, on_root_boundary)) return 1u;
+        const std::uint32_t t = uniform::rounded_factor(factor);
         const std::uint32_t k = (t + n - 1) / n;
         return k < 1 ? 1 : k > n ? n : k;
     }
@@ -416,7 +421,8 @@ struct UniformSplit::Impl {
 
     // A child edge that is a whole parent edge (an edge that stayed whole) keeps the parent's factor exactly,
     // the value the neighbour across it sees; any other child edge is measured in the parent's metric.
-    static double child_edge_factor(const Sub& s, uniform::Point a, uniform::Point b) noexcept {
+    static uniform::SquaredFactor child_edge_factor(const Sub& s, uniform::Point a,
+                                                    uniform::Point b) noexcept {
         auto corner = [](uniform::Point p) -> int {
             constexpr std::uint32_t one = uniform::fixed_one;
             if (p.u == 0 && p.v == 0) return 0;
@@ -446,7 +452,8 @@ struct UniformSplit::Impl {
     // The points an edge of factor f at `depth` from a to b carries after a, b included: the decisions of
     // visit() and segments() (edge_pieces, the depth limit, piece_factor, rounded), in the edge's order.
     template <class Out>
-    void edge_walk(const Point& a, const Point& b, double f, std::uint32_t depth, Out& out) const noexcept {
+    void edge_walk(const Point& a, const Point& b, uniform::SquaredFactor f, std::uint32_t depth,
+                   Out& out) const noexcept {
         const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth, true);
         if (k == 1) {
             const std::uint32_t r = rounded(f);
@@ -466,7 +473,9 @@ struct UniformSplit::Impl {
     }
     // The points on root edge j, both corners included: root_edge_count(j) of them, written by the decisions
     // of segments() (edge_points, root_edge_points). False, nothing written, when out is too short.
-    std::uint32_t root_edge_count(std::uint32_t j) const noexcept { return segments(root_[j], 0, true) + 1; }
+    std::uint32_t root_edge_count(std::uint32_t j) const noexcept {
+        return segments(root_squared_[j], 0, true) + 1;
+    }
     bool write_root_edge(std::uint32_t j, std::span<uniform::SplitPoint> out) const noexcept {
         const std::uint32_t n = root_edge_count(j);
         if (out.size() < n) return false;
@@ -478,7 +487,7 @@ struct UniformSplit::Impl {
             ++written;
         };
         put(ends[0]);
-        edge_walk(ends[0], ends[1], root_[j], 0, put);
+        edge_walk(ends[0], ends[1], root_squared_[j], 0, put);
         return written == n; // the same decisions as segments(): always
     }
 
@@ -486,8 +495,9 @@ struct UniformSplit::Impl {
 
     // The final segments on an edge of factor f of a node at `depth`: a function of the edge alone, the same
     // walk as visit() (a piece of a split edge is f times its symmetric parameter span, as child_edge_factor
-    // computes it on any of the parent's edges, bit for bit).
-    std::uint32_t segments(double f, std::uint32_t depth, bool on_root_boundary) const noexcept {
+    // computes it on any of the parent's edges: the same integers).
+    std::uint32_t segments(uniform::SquaredFactor f, std::uint32_t depth,
+                           bool on_root_boundary) const noexcept {
         const std::uint32_t k = depth >= depth_limit_ ? 1u : edge_pieces(f, depth, on_root_boundary);
         if (k == 1) return rounded(f);
         std::uint32_t total = 0;
@@ -495,9 +505,10 @@ struct UniformSplit::Impl {
             total += segments(piece_factor(f, k, s), depth + 1, on_root_boundary);
         return total;
     }
-    static double piece_factor(double f, std::uint32_t k, std::uint32_t s) noexcept {
-        return edge_factor({f, f, f}, uniform::Point{uniform::edge_parameter(s, k), 0},
-                           uniform::Point{uniform::edge_parameter(s + 1, k), 0});
+    static uniform::SquaredFactor piece_factor(uniform::SquaredFactor f, std::uint32_t k,
+                                               std::uint32_t s) noexcept {
+        return uniform::piece_squared_factor(f, uniform::edge_parameter(s, k),
+                                             uniform::edge_parameter(s + 1, k));
     }
 
     // The points of one welded segment: at distance d (in segments) from its `first` end, d = 0 is first,
@@ -562,7 +573,7 @@ struct UniformSplit::Impl {
     void weld_root(Welder& w) const noexcept {
         // The root's corners 0, 1, 2, then the points of e0, e1, e2 in order: B numbers in all.
         std::array<std::uint32_t, 3> n{};
-        for (int j = 0; j < 3; ++j) n[j] = segments(root_[j], 0, true);
+        for (int j = 0; j < 3; ++j) n[j] = segments(root_squared_[j], 0, true);
         const Line e0{0, 1, 3, n[0]}, e1{1, 2, 3 + n[0] - 1, n[1]}, e2{0, 2, 3 + n[0] - 1 + n[1] - 1, n[2]};
         w.next = n[0] + n[1] + n[2];
         const std::array<EdgeRef, 3> edges{EdgeRef{e0, 0, n[0], true}, EdgeRef{e1, 0, n[1], true},
@@ -768,22 +779,38 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
     std::uint64_t vertices = c.vertices;
     if (impl.welded() && c.depth > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
         std::uint64_t boundary = 0;
-        for (int i = 0; i < 3; ++i) boundary += impl.segments(root_[i], 0, true);
+        for (int i = 0; i < 3; ++i) boundary += impl.segments(impl.root_squared_[i], 0, true);
         vertices = 1 + (c.triangles + boundary) / 2;
     }
     // Counts that do not fit 32 bits (3T indices, below the primitive-restart value) give an empty patch
-    // that emits nothing (§3.5, "Counts"): never a wrapped count.
+    // that emits nothing (§3.5, "Counts"): never a wrapped count. The same for the leaves' own vertices
+    // (leaf_counts(), emit_leaves()).
     if (vertices >= 0xFFFFFFFFu || 3 * c.triangles >= 0xFFFFFFFFu) {
         overflow_ = true;
         return;
     }
     counts_ = Counts{static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(c.triangles)};
+    if (c.vertices < 0xFFFFFFFFu)
+        leaf_counts_ =
+            Counts{static_cast<std::uint32_t>(c.vertices), static_cast<std::uint32_t>(c.triangles)};
     subpatches_ = c.subpatches;
     depth_ = c.depth;
 }
 
+// The walks' settings: the rounded root factors (integers in [1, 32768]) squared exactly, the interior dice
+// limit from the tolerance once (split_factor.hpp).
+UniformSplit::Impl UniformSplit::impl_of(const UniformTableSet& tables, PatchOptions options,
+                                         std::array<double, 3> root, double tolerance,
+                                         std::uint32_t depth_limit) noexcept {
+    std::array<uniform::SquaredFactor, 3> squared{};
+    for (int i = 0; i < 3; ++i) squared[i] = uniform::squared_factor(static_cast<std::uint32_t>(root[i]));
+    return Impl{
+        &tables,    options, root, squared, uniform::interior_limit_squared(tables.max_factor, tolerance),
+        depth_limit};
+}
+
 UniformSplit::Impl UniformSplit::make_impl() const noexcept {
-    return Impl{tables_, options_, root_, tolerance_, depth_limit_};
+    return impl_of(*tables_, options_, root_, tolerance_, depth_limit_);
 }
 
 std::uint32_t UniformSplit::edge_point_count(std::uint32_t edge) const noexcept {
@@ -796,12 +823,9 @@ bool UniformSplit::edge_points(std::uint32_t edge, std::span<point_type> out) co
 
 // A patch with every root edge of factor f: its edge 0 is any root edge of that factor (§3.5).
 UniformSplit::Impl UniformSplit::edge_impl(const UniformTableSet& tables, float f) noexcept {
-    const double r = uniform::round_factor(f, uniform_split_max_factor);
-    return Impl{&tables,
-                PatchOptions{},
-                {r, r, r},
-                uniform_split_interior_tolerance,
-                uniform_split_depth_limit(tables.max_factor, static_cast<std::uint32_t>(r))};
+    const std::uint32_t r = uniform::round_factor(f, uniform_split_max_factor);
+    return impl_of(tables, PatchOptions{}, {double(r), double(r), double(r)},
+                   uniform_split_interior_tolerance, uniform_split_depth_limit(tables.max_factor, r));
 }
 
 std::uint32_t UniformSplit::root_edge_point_count(const UniformTableSet& tables, float f) noexcept {
@@ -829,6 +853,17 @@ double UniformSplit::longest_edge() const noexcept {
 bool UniformSplit::emit(std::span<point_type> vertices, std::span<std::uint32_t> indices) const noexcept {
     if (vertices.size() < counts_.vertices || indices.size() < counts_.index_count()) return false;
     return uniform_split_detail::emit_checked(*this, vertices, indices);
+}
+
+bool UniformSplit::emit_leaves(std::span<point_type> vertices,
+                               std::span<std::uint32_t> indices) const noexcept {
+    if (overflow_ || leaf_counts_.triangles == 0 || vertices.size() < leaf_counts_.vertices ||
+        indices.size() < leaf_counts_.index_count())
+        return false;
+    const Impl impl = make_impl();
+    Impl::Writer w{vertices, indices};
+    impl.walk(w);
+    return w.ok && w.v == leaf_counts_.vertices && w.t == leaf_counts_.index_count();
 }
 
 namespace uniform_split_detail {

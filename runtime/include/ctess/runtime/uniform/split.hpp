@@ -75,6 +75,7 @@
 #include <ctess/core/patch_options.hpp>
 #include <ctess/uniform/metric.hpp>
 #include <ctess/uniform/pattern.hpp>
+#include <ctess/uniform/split_factor.hpp>
 
 #include "patch.hpp"
 
@@ -171,11 +172,13 @@ class UniformSplit {
     static bool root_edge_points(const UniformTableSet& tables, float f, std::span<point_type> out) noexcept;
 
     // One diced subpatch: its pattern (the table's, for its factors rounded and clamped to [1, N]), its
-    // factors before rounding (its edges' intrinsic lengths in the root's metric), its corners on the root
-    // (units of uniform_split_fixed_one; exact at depth 1) and its depth.
+    // factors before rounding (its edges' intrinsic lengths in its parent's metric) as doubles and as the
+    // exact squares the decisions read (uniform/split_factor.hpp: f^2 * 2^32), its corners on the root (units
+    // of uniform_split_fixed_one; exact at depth 1) and its depth.
     struct Leaf {
         const UniformPatch& patch;
         std::array<double, 3> factors;
+        std::array<uniform::SquaredFactor, 3> squared_factors;
         std::array<std::array<std::int64_t, 2>, 3> corners;
         std::uint32_t depth;
     };
@@ -200,8 +203,19 @@ class UniformSplit {
     // returns false with a partial output inside the spans and nothing past them.
     bool emit(std::span<point_type> vertices, std::span<std::uint32_t> indices) const noexcept;
 
+    // The leaves' own points: every diced subpatch's pattern in the patch's layout, leaf after leaf in walk
+    // order, each mapped into the root, so a point on an edge between leaves is written once per leaf that
+    // holds it. For the provoking layout this is emit(); for the shared one it is the mesh pipeline's
+    // unwelded layout, which the shaders write leaf by leaf (docs/algorithm.md §7.5). leaf_counts() is its
+    // counts() ({0, 0} past 32 bits, as counts()); emit_leaves() writes nothing and returns false when a span
+    // is shorter, and checks every leaf against the spans as emit() does.
+    Counts leaf_counts() const noexcept { return leaf_counts_; }
+    bool emit_leaves(std::span<point_type> vertices, std::span<std::uint32_t> indices) const noexcept;
+
   private:
     struct Impl; // split.cpp
+    static Impl impl_of(const UniformTableSet& tables, PatchOptions options, std::array<double, 3> root,
+                        double tolerance, std::uint32_t depth_limit) noexcept;
     Impl make_impl() const noexcept;
     static Impl edge_impl(const UniformTableSet& tables,
                           float f) noexcept; // all three root edges of factor f
@@ -212,7 +226,7 @@ class UniformSplit {
     PatchOptions options_;
     std::array<double, 3> root_{1, 1, 1};
     double tolerance_ = uniform_split_interior_tolerance;
-    Counts counts_;
+    Counts counts_, leaf_counts_;
     std::uint32_t subpatches_ = 0, depth_ = 0, depth_limit_ = 2;
     bool overflow_ = false; // counts beyond 32 bits: counts() {0, 0}, emit() false
 };
