@@ -24,6 +24,7 @@ layout(std430, set = 0, binding = 6) writeonly buffer OutIndices { uint out_indi
 
 uint patch_count() { return params[PARAM_PATCH_COUNT]; }
 bool uniform_pattern() { return params[PARAM_PATTERN] == PATTERN_UNIFORM; }
+bool split_pattern() { return params[PARAM_PATTERN] == PATTERN_UNIFORM_SPLIT; }
 
 // ---- 64-bit helpers (GLSL 4.50 core has no 64-bit integers): x = (lo, hi) ----
 uvec2 mul_wide(uint a, uint b) {
@@ -1188,16 +1189,18 @@ SurfacePoint quad_interior(Corner q[4], vec3 adj_from[4], vec3 adj_to[4], bool a
 // bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
 // on give UNIFORM_MAX_FACTOR, else the nearest integer, halves up (UNIFORM_ROUND_FROM_BITS = 1.5f and
 // F32_INFINITY_BITS are generated from that function's checks).
-uint uniform_factor(float f) {
+uint round_factor(float f, uint max_factor) {
     uint bits = floatBitsToUint(f);
     if (bits < UNIFORM_ROUND_FROM_BITS || bits > F32_INFINITY_BITS) return 1u;
     uint exponent = (bits >> 23) - 127u; // f in [2^exponent, 2^(exponent + 1)), exponent >= 0
-    if (exponent >= 23u) return UNIFORM_MAX_FACTOR;
+    if (exponent >= 23u) return max_factor;
     uint mantissa = (bits & 0x7FFFFFu) | 0x800000u; // f = mantissa * 2^(exponent - 23)
     uint shift = 23u - exponent;
     uint rounded = (mantissa + (1u << (shift - 1u))) >> shift; // halves up, exact
-    return min(rounded, UNIFORM_MAX_FACTOR);
+    return min(rounded, max_factor);
 }
+// The table's factor (Pattern::uniform), or the split's up to SPLIT_MAX_FACTOR (Pattern::uniform_split).
+uint uniform_factor(float f) { return round_factor(f, split_pattern() ? SPLIT_MAX_FACTOR : UNIFORM_MAX_FACTOR); }
 uint uniform_edge_parameter(uint i, uint f) {
     uint small_ = min(i, f - i);
     uint q = (2u * small_ * UNIFORM_ONE + f) / (2u * f);
@@ -1230,7 +1233,8 @@ uvec2 uniform_setup(uint f[3], out uvec3 words) {
 uvec3 uniform_words(uint rec) {
     return uvec3(patches[rec + SETUP + USETUP_PATTERN], patches[rec + SETUP + USETUP_SORTED], patches[rec + SETUP + USETUP_CORNERS]);
 }
-uvec2 uniform_vertex(uvec3 words, uint i) {
+// Vertex i in the pattern's own weights (w1, w2), units of 65534 (UniformPatch::vertex).
+uvec2 uniform_local(uvec3 words, uint i) {
     uint index = words.x, sorted = words.y, corners = words.z;
     uint f0 = sorted & 255u, f1 = (sorted >> 8) & 255u, f2 = sorted >> 16;
     uvec2 c;
@@ -1242,13 +1246,374 @@ uvec2 uniform_vertex(uvec3 words, uint i) {
         c = uvec2(word & 0xFFFFu, word >> 16);
     }
     uint weight[3] = uint[3](UNIFORM_ONE - c.x - c.y, c.x, c.y);
-    return uvec2(uniform_to_fixed(weight[(corners >> 4) & 3u]), uniform_to_fixed(weight[(corners >> 8) & 3u]));
+    return uvec2(weight[(corners >> 4) & 3u], weight[(corners >> 8) & 3u]);
+}
+uvec2 uniform_vertex(uvec3 words, uint i) {
+    uvec2 c = uniform_local(words, i);
+    return uvec2(uniform_to_fixed(c.x), uniform_to_fixed(c.y));
 }
 uint uniform_index_byte(uint b) { return (tables[UNIFORM_TRIANGLE + (b >> 2)] >> ((b & 3u) * 8u)) & 255u; }
 uvec3 uniform_triangle(uvec3 words, uint p) {
     uint b = 3u * ((tables[UNIFORM_OFFSET + words.x] >> 16) + p);
     uvec3 t = uvec3(uniform_index_byte(b), uniform_index_byte(b + 1u), uniform_index_byte(b + 2u));
     return (words.z & 4096u) != 0u ? t.xzy : t;
+}
+
+// ---- uniform splitting (Pattern::uniform_split; docs/shaders.md, "Splitting"; docs/algorithm.md §3.5) ----
+// UniformSplit's decisions on the exact squared factors of constexpr/ctess/uniform/split_factor.hpp, in 32-bit
+// words: a square s = f^2 2^32 as uvec2 (lo, hi), a product below 2^96 as uvec3 (low word first).
+bool less64(uvec2 a, uvec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+uvec3 add96(uvec3 a, uvec3 b) {
+    uint x = a.x + b.x;
+    uint y = a.y + b.y;
+    uint carry = y < a.y ? 1u : 0u;
+    uint y1 = y + (x < a.x ? 1u : 0u);
+    carry += y1 < y ? 1u : 0u;
+    return uvec3(x, y1, a.z + b.z + carry);
+}
+bool less96(uvec3 a, uvec3 b) { return a.z != b.z ? a.z < b.z : a.y != b.y ? a.y < b.y : a.x < b.x; }
+uvec3 sub96(uvec3 a, uvec3 b) { // a >= b
+    uint x = a.x - b.x;
+    uint y = a.y - b.y;
+    uint borrow = a.y < b.y ? 1u : 0u;
+    uint y1 = y - (a.x < b.x ? 1u : 0u);
+    borrow += y < y1 ? 1u : 0u;
+    return uvec3(x, y1, a.z - b.z - borrow);
+}
+uvec3 mul96(uvec2 s, uint c) { // s c, s < 2^64
+    uvec2 lo = mul_wide(s.x, c), hi = mul_wide(s.y, c);
+    uint mid = lo.y + hi.x;
+    return uvec3(lo.x, mid, hi.y + (mid < lo.y ? 1u : 0u));
+}
+// floor(x / 65534) in 16-bit digits from the top: every step's dividend is below 65534 x 2^16 + 2^16 < 2^32.
+uint div_digit(inout uint r, uint digit) {
+    uint n = (r << 16) | digit;
+    uint q = n / UNIFORM_ONE;
+    r = n - q * UNIFORM_ONE;
+    return q;
+}
+uvec3 div96_unit(uvec3 x) {
+    uint r = 0u;
+    uint zh = div_digit(r, x.z >> 16), zl = div_digit(r, x.z & 0xFFFFu);
+    uint yh = div_digit(r, x.y >> 16), yl = div_digit(r, x.y & 0xFFFFu);
+    uint xh = div_digit(r, x.x >> 16), xl = div_digit(r, x.x & 0xFFFFu);
+    return uvec3((xh << 16) | xl, (yh << 16) | yl, (zh << 16) | zl);
+}
+// segment_squared_factor: floor(max(0, q) / 65534^2), q = -s2 dv dw - s0 dw du - s1 du dv, dw = -du - dv.
+uvec2 segment_squared(uvec2 s[3], int du, int dv) {
+    int dw = -du - dv;
+    int a[3] = int[3](dw, du, dv), b[3] = int[3](du, dv, dw); // coefficient k is -a[k] b[k]
+    uvec3 positive = uvec3(0u), negative = uvec3(0u);
+    for (uint k = 0u; k < 3u; ++k) {
+        uint magnitude = uint(abs(a[k])) * uint(abs(b[k])); // at most 65534^2 < 2^32
+        uvec3 term = mul96(s[k], magnitude);
+        if ((a[k] < 0) == (b[k] < 0)) negative = add96(negative, term);
+        else positive = add96(positive, term);
+    }
+    if (!less96(negative, positive)) return uvec2(0u);
+    return div96_unit(div96_unit(sub96(positive, negative))).xy; // below 2^64
+}
+// floor(2f): the largest m with m^2 2^30 <= s (at most 65536), from a float guess corrected exactly.
+bool twice_fits(uvec2 s, uint m) {
+    uvec2 square = mul_wide(m, m);
+    return !less64(s, uvec2(square.x << 30, (square.y << 30) | (square.x >> 2)));
+}
+uint floor_twice_factor(uvec2 s) {
+    float guess = sqrt(float(s.y) * 4294967296.0 + float(s.x)) * (1.0 / 32768.0);
+    uint m = guess >= 65536.0 ? 65536u : uint(max(guess, 0.0));
+    while (m > 0u && !twice_fits(s, m)) --m;
+    while (m < 65536u && twice_fits(s, m + 1u)) ++m;
+    return m;
+}
+uint rounded_split_factor(uvec2 s) { return (floor_twice_factor(s) + 1u) / 2u; }
+// (2k - 1)^2 2^30: f rounds to k or more from this square on.
+uvec2 half_below_squared(uint k) {
+    uint v = (2u * k - 1u) * (2u * k - 1u);
+    return uvec2(v << 30, v >> 2);
+}
+// A leaf's factor: rounded, clamped to [1, UNIFORM_MAX_FACTOR], by a binary search of the squares.
+uint leaf_factor(uvec2 s) {
+    uint low = 1u, high = UNIFORM_MAX_FACTOR;
+    while (low < high) {
+        uint mid = (low + high + 1u) / 2u;
+        if (less64(s, half_below_squared(mid))) high = mid - 1u;
+        else low = mid;
+    }
+    return low;
+}
+// A split node's pieces of an edge (UniformSplit edge_pieces): whole within the dice limit (f < N + 1/2 at
+// depth 0 and on the root's boundary, else below the interior limit), else ceil(round(f) / N) clamped to [1, N].
+uint edge_pieces(uvec2 s, uint depth, bool boundary) {
+    uint n = UNIFORM_MAX_FACTOR;
+    bool whole = depth == 0u || boundary ? less64(s, half_below_squared(n + 1u))
+                                         : less64(s, uvec2(SPLIT_INTERIOR_LIMIT_LO, SPLIT_INTERIOR_LIMIT_HI));
+    if (whole) return 1u;
+    return clamp((rounded_split_factor(s) + n - 1u) / n, 1u, n);
+}
+// uniform_split_depth_limit(N, largest root factor): one level more than its edges need, in [2, bound].
+uint split_depth_limit(uint largest) {
+    uint reach = UNIFORM_MAX_FACTOR, levels = 0u;
+    for (; reach < largest; ++levels) reach *= UNIFORM_MAX_FACTOR;
+    return max(min(levels + 1u, SPLIT_DEPTH_BOUND), 2u);
+}
+
+// A node of the split area (rt::gpu::split_node_word): corners on the root in units of SPLIT_FIXED_ONE.
+struct SplitNode {
+    uint patch_, info;
+    uvec2 corner[3];
+    uvec2 squared[3];
+};
+uint split_area() { return patch_count() * PATCH_WORDS + TOTALS_WORDS; }
+uint split_header(uint w) { return split_area() + w; }
+// Node i of the region of `level` (the levels alternate between two regions of PARAM_SPLIT_CAPACITY nodes).
+uint split_node(uint level, uint i) {
+    return split_area() + SPLIT_HEADER_WORDS + ((level & 1u) * params[PARAM_SPLIT_CAPACITY] + i) * NODE_WORDS;
+}
+SplitNode load_node(uint n) {
+    SplitNode s;
+    s.patch_ = patches[n + NODE_PATCH];
+    s.info = patches[n + NODE_INFO];
+    for (uint k = 0u; k < 3u; ++k) {
+        s.corner[k] = uvec2(patches[n + NODE_CORNER + 2u * k], patches[n + NODE_CORNER + 2u * k + 1u]);
+        s.squared[k] = uvec2(patches[n + NODE_SQUARED + 2u * k], patches[n + NODE_SQUARED + 2u * k + 1u]);
+    }
+    return s;
+}
+void store_node(uint n, SplitNode s) {
+    patches[n + NODE_PATCH] = s.patch_;
+    patches[n + NODE_INFO] = s.info;
+    for (uint k = 0u; k < 3u; ++k) {
+        patches[n + NODE_CORNER + 2u * k] = s.corner[k].x;
+        patches[n + NODE_CORNER + 2u * k + 1u] = s.corner[k].y;
+        patches[n + NODE_SQUARED + 2u * k] = s.squared[k].x;
+        patches[n + NODE_SQUARED + 2u * k + 1u] = s.squared[k].y;
+    }
+}
+// The root edges a point lies on: bit 0 e0 (v = 0), bit 1 e1 (u + v = 65534^2), bit 2 e2 (u = 0).
+uint root_edges_of(uvec2 p) {
+    return (p.y == 0u ? 1u : 0u) | (p.x + p.y == SPLIT_FIXED_ONE ? 2u : 0u) | (p.x == 0u ? 4u : 0u);
+}
+bool split_edge_on_boundary(SplitNode s, uint e) {
+    uint a = e == 2u ? 0u : e, b = e == 0u ? 1u : 2u;
+    return (root_edges_of(s.corner[a]) & root_edges_of(s.corner[b])) != 0u;
+}
+// The point of node s at local (u, v) (units of 65534) on the root: the exact sum over the corners divided by
+// 65534, rounded half up, ties on a root edge to even (UniformSplit map and map32: each corner is 65534 a + b,
+// so the sum is 65534 (w a0 + u a1 + v a2) + (w b0 + u b1 + v b2), both parts below 2^32).
+uvec2 split_map(SplitNode s, uvec2 d) {
+    uint w = UNIFORM_ONE - d.x - d.y;
+    uint edges = (w == 0u ? 7u : root_edges_of(s.corner[0])) & (d.x == 0u ? 7u : root_edges_of(s.corner[1])) &
+                 (d.y == 0u ? 7u : root_edges_of(s.corner[2]));
+    uvec2 r;
+    for (uint k = 0u; k < 2u; ++k) {
+        uint c0 = s.corner[0][k], c1 = s.corner[1][k], c2 = s.corner[2][k];
+        uint a0 = c0 / UNIFORM_ONE, a1 = c1 / UNIFORM_ONE, a2 = c2 / UNIFORM_ONE;
+        uint q = w * a0 + d.x * a1 + d.y * a2;
+        uint b = w * (c0 - a0 * UNIFORM_ONE) + d.x * (c1 - a1 * UNIFORM_ONE) + d.y * (c2 - a2 * UNIFORM_ONE);
+        q += b / UNIFORM_ONE;
+        uint rest = b % UNIFORM_ONE, half_ = UNIFORM_ONE / 2u;
+        r[k] = q + (rest > half_ || (rest == half_ && (edges == 0u || (q & 1u) != 0u)) ? 1u : 0u);
+    }
+    return r;
+}
+// to_base_weights: a root coordinate to 2^-24 units, (c 2^24 + 65534^2 / 2) / 65534^2 (no ties).
+uint split_base_weight(uint c) {
+    uint x = min(c, SPLIT_FIXED_ONE);
+    uvec2 n = add_wide(uvec2(x << 24, x >> 8), SPLIT_FIXED_ONE / 2u);
+    return div96_unit(div96_unit(uvec3(n, 0u))).x;
+}
+int pattern_corner(uvec2 p) {
+    return p == uvec2(0u) ? 0 : p == uvec2(UNIFORM_ONE, 0u) ? 1 : p == uvec2(0u, UNIFORM_ONE) ? 2 : -1;
+}
+// A child edge from a to b (pattern points of s): a whole edge of s keeps its square, any other is measured in
+// s's metric (UniformSplit child_edge_factor).
+uvec2 child_squared(SplitNode s, uvec2 a, uvec2 b) {
+    int ca = pattern_corner(a), cb = pattern_corner(b);
+    if (ca >= 0 && cb >= 0 && ca != cb) {
+        int lo = min(ca, cb), hi = max(ca, cb);
+        return s.squared[lo == 0 && hi == 1 ? 0 : lo == 1 && hi == 2 ? 1 : 2];
+    }
+    return segment_squared(s.squared, int(b.x) - int(a.x), int(b.y) - int(a.y));
+}
+// The indirect dispatch of a pass over n items: SPLIT_GROUP invocations a workgroup, at most
+// MAX_DISPATCH_WORKGROUPS (the passes stride over the rest).
+void split_dispatch(uint n) {
+    patches[split_header(SPLIT_DISPATCH)] = max(1u, min((n + SPLIT_GROUP - 1u) / SPLIT_GROUP, MAX_DISPATCH_WORKGROUPS));
+    patches[split_header(SPLIT_DISPATCH + 1u)] = 1u;
+    patches[split_header(SPLIT_DISPATCH + 2u)] = 1u;
+}
+uint split_stride() { return gl_NumWorkGroups.x * gl_WorkGroupSize.x; }
+
+// Pass: the roots of level 0, one per base triangle, two per quad (halves A and B), in patch order, from the
+// records' rounded factors (a culled patch's are 0: a culled root).
+void ctess_split_roots() {
+    uint triangles = triangle_count(), roots = triangles + 2u * params[PARAM_QUAD_COUNT];
+    uint capacity = params[PARAM_SPLIT_CAPACITY];
+    if (gl_GlobalInvocationID.x == 0u) {
+        patches[split_header(SPLIT_LEVEL)] = 0u;
+        patches[split_header(SPLIT_NODES)] = min(roots, capacity);
+        patches[split_header(SPLIT_PARENTS)] = 0u;
+        patches[split_header(SPLIT_NEEDED)] = roots;
+        patches[split_header(SPLIT_OVERFLOW)] = roots > capacity ? 1u : 0u;
+        split_dispatch(min(roots, capacity));
+    }
+    for (uint r = gl_GlobalInvocationID.x; r < min(roots, capacity); r += split_stride()) {
+        uint t = r < triangles ? r : triangles + (r - triangles) / 2u;
+        uint half_ = r < triangles ? 0u : (r - triangles) & 1u;
+        uint rec = t * PATCH_WORDS;
+        SplitNode s;
+        s.patch_ = t;
+        uint largest = 0u;
+        for (uint k = 0u; k < 3u; ++k) {
+            uint f = patches[rec + (half_ == 0u ? REC_TOKEN : SETUP + QSETUP_B_TOKEN) + k];
+            s.squared[k] = uvec2(0u, f * f); // f^2 2^32
+            largest = max(largest, f);
+        }
+        s.info = (split_depth_limit(largest) << NODE_LIMIT_SHIFT) | (half_ << NODE_HALF_SHIFT) | (largest == 0u ? NODE_CULLED : 0u);
+        s.corner[0] = uvec2(0u);
+        s.corner[1] = uvec2(SPLIT_FIXED_ONE, 0u);
+        s.corner[2] = uvec2(0u, SPLIT_FIXED_ONE);
+        store_node(split_node(0u, r), s);
+    }
+}
+
+// Pass: decides every node of the current level. A leaf (every edge whole, or the depth limit): its pattern
+// from its factors rounded to [1, N], its counts, one child (itself). A split node: the pattern of its pieces,
+// whose triangles are its children.
+void ctess_split_count() {
+    uint level = patches[split_header(SPLIT_LEVEL)], nodes = patches[split_header(SPLIT_NODES)];
+    for (uint i = gl_GlobalInvocationID.x; i < nodes; i += split_stride()) {
+        uint n = split_node(level, i);
+        SplitNode s = load_node(n);
+        uvec2 counts = uvec2(0u);
+        uvec3 words = uvec3(0u);
+        uint children = 0u;
+        if ((s.info & NODE_CULLED) == 0u) {
+            uint depth = s.info & NODE_DEPTH_MASK;
+            uint pieces[3] = uint[3](1u, 1u, 1u);
+            if (depth < ((s.info >> NODE_LIMIT_SHIFT) & NODE_DEPTH_MASK))
+                for (uint e = 0u; e < 3u; ++e) pieces[e] = edge_pieces(s.squared[e], depth, split_edge_on_boundary(s, e));
+            if (pieces[0] == 1u && pieces[1] == 1u && pieces[2] == 1u) {
+                uint r[3] = uint[3](leaf_factor(s.squared[0]), leaf_factor(s.squared[1]), leaf_factor(s.squared[2]));
+                counts = uniform_setup(r, words);
+                children = 1u;
+                patches[n + NODE_INFO] = s.info | NODE_LEAF;
+            } else {
+                children = uniform_setup(pieces, words).y;
+            }
+        }
+        patches[n + NODE_CHILDREN] = children;
+        patches[n + NODE_PATTERN] = words.x;
+        patches[n + NODE_PATTERN + 1u] = words.y;
+        patches[n + NODE_PATTERN + 2u] = words.z;
+        patches[n + NODE_VERTICES] = counts.x;
+        patches[n + NODE_TRIANGLES] = counts.y;
+    }
+}
+
+// Pass, one workgroup of SCAN_GROUP: exclusive prefix sums of the level's children and counts (the children's
+// slots in the next level, a leaf's first vertex and triangle), then the header moves to the next level: its
+// nodes are the children, at most PARAM_SPLIT_CAPACITY (beyond it SPLIT_OVERFLOW and no node).
+shared uvec3 split_sum[SCAN_GROUP];
+void ctess_split_scan() {
+    uint level = patches[split_header(SPLIT_LEVEL)], n = patches[split_header(SPLIT_NODES)];
+    uint lane = gl_LocalInvocationID.x;
+    uint per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
+    uint begin = min(n, lane * per), end = min(n, begin + per);
+    uvec3 sum = uvec3(0u);
+    for (uint i = begin; i < end; ++i) {
+        uint node = split_node(level, i);
+        sum += uvec3(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
+    }
+    split_sum[lane] = sum;
+    barrier();
+    for (uint d = 1u; d < SCAN_GROUP; d <<= 1) {
+        uvec3 add = lane >= d ? split_sum[lane - d] : uvec3(0u);
+        barrier();
+        split_sum[lane] += add;
+        barrier();
+    }
+    uvec3 base = split_sum[lane] - sum;
+    for (uint i = begin; i < end; ++i) {
+        uint node = split_node(level, i);
+        patches[node + NODE_FIRST_CHILD] = base.x;
+        patches[node + NODE_FIRST_VERTEX] = base.y;
+        patches[node + NODE_FIRST_TRIANGLE] = base.z;
+        base += uvec3(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
+    }
+    if (lane == SCAN_GROUP - 1u) {
+        uint children = split_sum[SCAN_GROUP - 1u].x, capacity = params[PARAM_SPLIT_CAPACITY];
+        bool over = children > capacity || patches[split_header(SPLIT_OVERFLOW)] != 0u;
+        patches[split_header(SPLIT_NEEDED)] = max(patches[split_header(SPLIT_NEEDED)], children);
+        patches[split_header(SPLIT_OVERFLOW)] = over ? 1u : 0u;
+        patches[split_header(SPLIT_LEVEL)] = level + 1u;
+        patches[split_header(SPLIT_PARENTS)] = n;
+        patches[split_header(SPLIT_NODES)] = over ? 0u : children;
+        split_dispatch(over ? 0u : children);
+    }
+}
+
+// Pass: child slot j of the next level from its parent (the last node whose first child is at most j): a leaf
+// is copied, a split node's child k is its split pattern's triangle k, its corners mapped on the root and its
+// edges' squares from the parent's (UniformSplit child).
+void ctess_split_expand() {
+    uint level = patches[split_header(SPLIT_LEVEL)], nodes = patches[split_header(SPLIT_NODES)];
+    uint parents = patches[split_header(SPLIT_PARENTS)];
+    for (uint j = gl_GlobalInvocationID.x; j < nodes; j += split_stride()) {
+        uint low = 0u, high = parents - 1u;
+        while (low < high) {
+            uint mid = (low + high + 1u) / 2u;
+            if (patches[split_node(level - 1u, mid) + NODE_FIRST_CHILD] <= j) low = mid;
+            else high = mid - 1u;
+        }
+        uint p = split_node(level - 1u, low);
+        SplitNode s = load_node(p);
+        SplitNode c = s;
+        c.info = s.info & ~NODE_LEAF;
+        if ((s.info & NODE_LEAF) == 0u) {
+            uvec3 words = uvec3(patches[p + NODE_PATTERN], patches[p + NODE_PATTERN + 1u], patches[p + NODE_PATTERN + 2u]);
+            uvec3 tri = uniform_triangle(words, j - patches[p + NODE_FIRST_CHILD]);
+            uvec2 a = uniform_local(words, tri.x), b = uniform_local(words, tri.y), d = uniform_local(words, tri.z);
+            c.info = (s.info & ~(NODE_LEAF | NODE_DEPTH_MASK)) | ((s.info & NODE_DEPTH_MASK) + 1u);
+            c.corner[0] = split_map(s, a);
+            c.corner[1] = split_map(s, b);
+            c.corner[2] = split_map(s, d);
+            c.squared[0] = child_squared(s, a, b);
+            c.squared[1] = child_squared(s, b, d);
+            c.squared[2] = child_squared(s, a, d);
+        }
+        store_node(split_node(level, j), c);
+    }
+}
+
+// The leaves after the last scan: the region of the level before the header's, as many as its parents.
+uint split_leaves() { return patches[split_header(SPLIT_PARENTS)]; }
+uint split_leaf(uint i) { return split_node(patches[split_header(SPLIT_LEVEL)] - 1u, i); }
+
+// Pass: each patch's counts from its leaves (they lie together, in patch order): the last leaf of a patch
+// writes the record's counts, from the first one's prefix sums to its own end.
+void ctess_split_records() {
+    uint leaves = split_leaves();
+    for (uint i = gl_GlobalInvocationID.x; i < leaves; i += split_stride()) {
+        uint n = split_leaf(i), t = patches[n + NODE_PATCH];
+        if (i + 1u < leaves && patches[split_leaf(i + 1u) + NODE_PATCH] == t) continue;
+        uint low = 0u, high = i;
+        while (low < high) {
+            uint mid = (low + high) / 2u;
+            if (patches[split_leaf(mid) + NODE_PATCH] < t) low = mid + 1u;
+            else high = mid;
+        }
+        uint f = split_leaf(low), rec = t * PATCH_WORDS;
+        patches[rec + REC_VERTEX_COUNT] = patches[n + NODE_FIRST_VERTEX] + patches[n + NODE_VERTICES] - patches[f + NODE_FIRST_VERTEX];
+        patches[rec + REC_TRIANGLE_COUNT] = patches[n + NODE_FIRST_TRIANGLE] + patches[n + NODE_TRIANGLES] - patches[f + NODE_FIRST_TRIANGLE];
+    }
+}
+// A leaf's vertex i as the pipeline's base weights (2^-24): its pattern's point mapped on the root, then
+// to_base_weights.
+uvec2 split_vertex(uint n, uint i) {
+    SplitNode s = load_node(n);
+    uvec2 p = split_map(s, uniform_local(uvec3(patches[n + NODE_PATTERN], patches[n + NODE_PATTERN + 1u], patches[n + NODE_PATTERN + 2u]), i));
+    return uvec2(split_base_weight(p.x), split_base_weight(p.y));
 }
 
 // ---- patch records (PatchRecord) ----
@@ -1373,7 +1738,7 @@ void setup_one_quad(uint t) {
     }
     for (uint k = 0u; k < 3u; ++k) patches[rec + REC_FACTOR + k] = floatBitsToUint(f[k]);
     patches[rec + SETUP + QSETUP_Q3_FACTOR] = floatBitsToUint(f[3]);
-    bool uniform_ = uniform_pattern();
+    bool uniform_ = uniform_pattern() || split_pattern();
     uint r;
     float diagonal;
     if (uniform_) {
@@ -1396,8 +1761,8 @@ void setup_one_quad(uint t) {
             patches[rec + SETUP + QSETUP_B_TOKEN + k] = ib[k];
         }
         uvec3 words;
-        uvec2 ca = uniform_setup(ia, words);
-        counts = saturating_add(ca, uniform_setup(ib, words));
+        // A split quad's counts come from its halves' leaves (ctess_split_records).
+        counts = split_pattern() ? uvec2(0u) : saturating_add(uniform_setup(ia, words), uniform_setup(ib, words));
     } else {
         // One loop over the halves: one copy of patch_setup in the compiled pass, not two.
         counts = uvec2(0u);
@@ -1473,13 +1838,14 @@ void setup_one_patch(uint t) {
         precise vec3 d = b - a;
         length2[k] = dot3(d, d);
     }
-    if (uniform_pattern()) {
+    if (uniform_pattern() || split_pattern()) {
         uint f[3];
         for (uint k = 0u; k < 3u; ++k) {
             f[k] = uniform_factor(factor[k]);
             patches[rec + REC_TOKEN + k] = f[k];
             patches[rec + REC_FACTOR + k] = floatBitsToUint(factor[k]);
         }
+        if (split_pattern()) return; // no setup words; the counts come from the leaves (ctess_split_records)
         uvec3 words;
         uvec2 counts = uniform_setup(f, words);
         patches[rec + REC_VERTEX_COUNT] = counts.x;
@@ -1572,9 +1938,16 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     bool displace = displaced;
     if (displacement_on() != displaced) return;
     if (displaced && displacement_vector_mode() != vector_) return;
-    for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    // Split (docs/shaders.md, "Splitting"): a workgroup per leaf instead of per patch, skipping the leaves of
+    // patches outside [first_patch, end); a leaf's vertices are its pattern's, mapped on the root.
+    bool split_ = split_pattern();
+    uint items = split_ ? split_leaves() : end;
+    for (uint item = (split_ ? 0u : first_patch) + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
+        uint leaf = split_ ? split_leaf(item) : 0u;
+        uint t = split_ ? patches[leaf + NODE_PATCH] : item;
+        if (t < first_patch || t >= end) continue;
         uint rec = t * PATCH_WORDS;
-        uint count = patches[rec + REC_VERTEX_COUNT];
+        uint count = split_ ? patches[leaf + NODE_VERTICES] : patches[rec + REC_VERTEX_COUNT];
         if (count == 0u) continue;
         bool quad = quad_pass;
         uint rot = patches[rec + REC_ROTATION];
@@ -1599,7 +1972,8 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
                 adj_to[k] = q[(k + 1u) % 4u].normal;
                 if (aen) adjacent_normals(face + (m >= 2u ? 1u : 0u), m >= 2u ? m - 1u : m, q[k], q[(k + 1u) % 4u], adj_from[k], adj_to[k]);
             }
-            vertices_a = quad_halves(rec, halves, words).x;
+            if (split_) vertices_a = ((patches[leaf + NODE_INFO] >> NODE_HALF_SHIFT) & 1u) == 0u ? count : 0u;
+            else vertices_a = quad_halves(rec, halves, words).x;
             if (displace) {
                 // Mesh corners q0, q1, q2 are slots 0-2 of face (q0, q1, q2), q3 slot 2 of (q0, q2, q3); mesh edges
                 // 0 and 1 are edges 0 and 1 of the first, 2 and 3 edges 1 and 2 of the second (mesh_pipeline.cpp).
@@ -1626,17 +2000,18 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
                 adj_to[e] = q[(e + 1u) % 3u].normal;
                 if (aen) adjacent_normals(t, e, q[e], q[(e + 1u) % 3u], adj_from[e], adj_to[e]);
             }
-            halves[0] = uniform_ ? patch_zero() : record_patch(rec);
+            halves[0] = uniform_ || split_ ? patch_zero() : record_patch(rec);
             words[0] = uniform_words(rec);
             if (displace)
                 dp = displacement_patch(3u, uint[4](w.x, w.y, w.z, 0u), uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u),
                                         uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u), vector_);
         }
-        uint first = patches[rec + REC_FIRST_VERTEX];
+        uint first = split_ ? patches[leaf + NODE_FIRST_VERTEX] : patches[rec + REC_FIRST_VERTEX];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uint side = i < vertices_a ? 0u : 1u;
             uint local = side == 0u ? i : i - vertices_a;
-            uvec2 d = uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local);
+            uvec2 d = split_ ? split_vertex(leaf, local)
+                      : uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local);
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
             // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
             // q_k+2) with weights (1 - r, r, 0), the operations the neighbour across the edge runs (quad_vertex on
@@ -1694,25 +2069,34 @@ void emit_triangles(bool quad_pass) {
     uint first_patch = quad_pass ? max(params[PARAM_FIRST_PATCH], triangle_count()) : params[PARAM_FIRST_PATCH];
     uint end = min(params[PARAM_END_PATCH], quad_pass ? patch_count() : triangle_count());
     bool uniform_ = uniform_pattern();
-    for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    // Split: a workgroup per leaf, its pattern's triangles after its own first vertex (as emit_vertices).
+    bool split_ = split_pattern();
+    uint items = split_ ? split_leaves() : end;
+    for (uint item = (split_ ? 0u : first_patch) + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
+        uint leaf = split_ ? split_leaf(item) : 0u;
+        uint t = split_ ? patches[leaf + NODE_PATCH] : item;
+        if (t < first_patch || t >= end) continue;
         uint rec = t * PATCH_WORDS;
-        uint count = patches[rec + REC_TRIANGLE_COUNT];
+        uint count = split_ ? patches[leaf + NODE_TRIANGLES] : patches[rec + REC_TRIANGLE_COUNT];
         if (count == 0u) continue;
         Patch halves[2];
         uvec3 words[2];
         uvec2 counts_a = uvec2(0u, count);
-        if (quad_pass) {
+        if (split_) {
+            words[0] = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+            halves[0] = patch_zero();
+        } else if (quad_pass) {
             counts_a = quad_halves(rec, halves, words);
         } else {
             halves[0] = uniform_ ? patch_zero() : record_patch(rec);
             words[0] = uniform_words(rec);
         }
-        uint vfirst = patches[rec + REC_FIRST_VERTEX];
-        uint tfirst = patches[rec + REC_FIRST_TRIANGLE];
+        uint vfirst = split_ ? patches[leaf + NODE_FIRST_VERTEX] : patches[rec + REC_FIRST_VERTEX];
+        uint tfirst = split_ ? patches[leaf + NODE_FIRST_TRIANGLE] : patches[rec + REC_FIRST_TRIANGLE];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uint side = i < counts_a.y ? 0u : 1u;
             uint local = side == 0u ? i : i - counts_a.y;
-            uvec3 tri = uniform_ ? uniform_triangle(words[side], local) : patch_triangle(side == 0u ? halves[0] : halves[1], local);
+            uvec3 tri = uniform_ || split_ ? uniform_triangle(words[side], local) : patch_triangle(side == 0u ? halves[0] : halves[1], local);
             tri += uvec3(vfirst + (side == 0u ? 0u : counts_a.x));
             uint o = 3u * (tfirst + i);
             out_indices[o] = tri.x;

@@ -21,6 +21,7 @@
 
 fn patch_count() -> u32 { return params[PARAM_PATCH_COUNT]; }
 fn uniform_pattern() -> bool { return params[PARAM_PATTERN] == PATTERN_UNIFORM; }
+fn split_pattern() -> bool { return params[PARAM_PATTERN] == PATTERN_UNIFORM_SPLIT; }
 
 // ---- 64-bit helpers: x = (lo, hi) ----
 fn mul_wide(a: u32, b: u32) -> vec2<u32> {
@@ -1179,16 +1180,18 @@ fn quad_interior(corners: array<Corner, 4>, edges: array<EdgeNormals, 4>, aen: b
 // bits with integers only: NaN, negatives and anything below 1.5 give 1, +inf and from UNIFORM_MAX_FACTOR - 0.5
 // on give UNIFORM_MAX_FACTOR, else the nearest integer, halves up (UNIFORM_ROUND_FROM_BITS = 1.5f and
 // F32_INFINITY_BITS are generated from that function's checks).
-fn uniform_factor(f: f32) -> u32 {
+fn round_factor(f: f32, max_factor: u32) -> u32 {
     let bits = bitcast<u32>(f);
     if (bits < UNIFORM_ROUND_FROM_BITS || bits > F32_INFINITY_BITS) { return 1u; }
     let exponent = (bits >> 23u) - 127u; // f in [2^exponent, 2^(exponent + 1)), exponent >= 0
-    if (exponent >= 23u) { return UNIFORM_MAX_FACTOR; }
+    if (exponent >= 23u) { return max_factor; }
     let mantissa = (bits & 0x7FFFFFu) | 0x800000u; // f = mantissa * 2^(exponent - 23)
     let shift = 23u - exponent;
     let rounded = (mantissa + (1u << (shift - 1u))) >> shift; // halves up, exact
-    return min(rounded, UNIFORM_MAX_FACTOR);
+    return min(rounded, max_factor);
 }
+// The table's factor (Pattern::uniform), or the split's up to SPLIT_MAX_FACTOR (Pattern::uniform_split).
+fn uniform_factor(f: f32) -> u32 { return round_factor(f, select(UNIFORM_MAX_FACTOR, SPLIT_MAX_FACTOR, split_pattern())); }
 fn uniform_edge_parameter(i: u32, f: u32) -> u32 {
     let nearer = min(i, f - i);
     let q = (2u * nearer * UNIFORM_ONE + f) / (2u * f);
@@ -1221,8 +1224,8 @@ fn uniform_setup(f: array<u32, 3>, words: ptr<function, vec3<u32>>) -> vec2<u32>
 fn uniform_words(rec: u32) -> vec3<u32> {
     return vec3<u32>(patches[rec + SETUP + USETUP_PATTERN], patches[rec + SETUP + USETUP_SORTED], patches[rec + SETUP + USETUP_CORNERS]);
 }
-// Vertex i as base weights (w1, w2), units of 2^-24.
-fn uniform_vertex(words: vec3<u32>, i: u32) -> vec2<u32> {
+// Vertex i in the pattern's own weights (w1, w2), units of 65534 (UniformPatch::vertex).
+fn uniform_local(words: vec3<u32>, i: u32) -> vec2<u32> {
     let index = words.x;
     let sorted = words.y;
     let corners = words.z;
@@ -1240,7 +1243,12 @@ fn uniform_vertex(words: vec3<u32>, i: u32) -> vec2<u32> {
         c = vec2<u32>(word & 0xFFFFu, word >> 16u);
     }
     var weight = array<u32, 3>(UNIFORM_ONE - c.x - c.y, c.x, c.y);
-    return vec2<u32>(uniform_to_fixed(weight[(corners >> 4u) & 3u]), uniform_to_fixed(weight[(corners >> 8u) & 3u]));
+    return vec2<u32>(weight[(corners >> 4u) & 3u], weight[(corners >> 8u) & 3u]);
+}
+// Vertex i as base weights (w1, w2), units of 2^-24.
+fn uniform_vertex(words: vec3<u32>, i: u32) -> vec2<u32> {
+    let c = uniform_local(words, i);
+    return vec2<u32>(uniform_to_fixed(c.x), uniform_to_fixed(c.y));
 }
 fn uniform_index_byte(b: u32) -> u32 { return (tables[UNIFORM_TRIANGLE + (b >> 2u)] >> ((b & 3u) * 8u)) & 255u; }
 fn uniform_triangle(words: vec3<u32>, p: u32) -> vec3<u32> {
@@ -1251,7 +1259,8 @@ fn uniform_triangle(words: vec3<u32>, p: u32) -> vec3<u32> {
 }
 
 // The uniform pattern's record (setup pass, pattern 1) from base edges E0, E1, E2's factors, into a zeroed record:
-// rotation 0, the integer factors as tokens, the factor bits, the counts and the three setup words.
+// rotation 0, the integer factors as tokens, the factor bits, the counts and the three setup words. A split
+// patch's (pattern 2) has no setup words, and its counts come from its leaves (ctess_split_records).
 fn store_uniform_record(rec: u32, factor: array<f32, 3>) {
     var f: array<u32, 3>;
     for (var k = 0u; k < 3u; k++) {
@@ -1259,6 +1268,7 @@ fn store_uniform_record(rec: u32, factor: array<f32, 3>) {
         patches[rec + REC_TOKEN + k] = f[k];
         patches[rec + REC_FACTOR + k] = bitcast<u32>(factor[k]);
     }
+    if (split_pattern()) { return; }
     var words: vec3<u32>;
     let counts = uniform_setup(f, &words);
     patches[rec + REC_VERTEX_COUNT] = counts.x;
@@ -1365,7 +1375,7 @@ fn setup_one_patch(t: u32) {
         let d = b - a;
         length2[k] = dot3(d, d);
     }
-    if (uniform_pattern()) {
+    if (uniform_pattern() || split_pattern()) {
         store_uniform_record(rec, factor);
         return;
     }
@@ -1383,6 +1393,400 @@ fn setup_one_patch(t: u32) {
     patches[rec + REC_TRIANGLE_COUNT] = p.triangles;
     store_setup_block(rec, p);
 }
+// ---- uniform splitting (Pattern::uniform_split; docs/shaders.md, "Splitting"; docs/algorithm.md §3.5) ----
+// UniformSplit's decisions on the exact squared factors of constexpr/ctess/uniform/split_factor.hpp, in 32-bit
+// words: a square s = f^2 2^32 as vec2<u32> (lo, hi), a product below 2^96 as vec3<u32> (low word first).
+fn less64(a: vec2<u32>, b: vec2<u32>) -> bool { return select(a.x < b.x, a.y < b.y, a.y != b.y); }
+fn add96(a: vec3<u32>, b: vec3<u32>) -> vec3<u32> {
+    let x = a.x + b.x;
+    let y = a.y + b.y;
+    var carry = select(0u, 1u, y < a.y);
+    let y1 = y + select(0u, 1u, x < a.x);
+    carry += select(0u, 1u, y1 < y);
+    return vec3<u32>(x, y1, a.z + b.z + carry);
+}
+fn less96(a: vec3<u32>, b: vec3<u32>) -> bool {
+    if (a.z != b.z) { return a.z < b.z; }
+    return less64(a.xy, b.xy);
+}
+fn sub96(a: vec3<u32>, b: vec3<u32>) -> vec3<u32> { // a >= b
+    let x = a.x - b.x;
+    let y = a.y - b.y;
+    var borrow = select(0u, 1u, a.y < b.y);
+    let y1 = y - select(0u, 1u, a.x < b.x);
+    borrow += select(0u, 1u, y < y1);
+    return vec3<u32>(x, y1, a.z - b.z - borrow);
+}
+fn mul96(s: vec2<u32>, c: u32) -> vec3<u32> { // s c, s < 2^64
+    let lo = mul_wide(s.x, c);
+    let hi = mul_wide(s.y, c);
+    let mid = lo.y + hi.x;
+    return vec3<u32>(lo.x, mid, hi.y + select(0u, 1u, mid < lo.y));
+}
+// floor(x / 65534) in 16-bit digits from the top: every step's dividend is below 65534 x 2^16 + 2^16 < 2^32.
+fn div_digit(r: ptr<function, u32>, digit: u32) -> u32 {
+    let n = (*r << 16u) | digit;
+    let q = n / UNIFORM_ONE;
+    *r = n - q * UNIFORM_ONE;
+    return q;
+}
+fn div96_unit(x: vec3<u32>) -> vec3<u32> {
+    var r = 0u;
+    let zh = div_digit(&r, x.z >> 16u); let zl = div_digit(&r, x.z & 0xFFFFu);
+    let yh = div_digit(&r, x.y >> 16u); let yl = div_digit(&r, x.y & 0xFFFFu);
+    let xh = div_digit(&r, x.x >> 16u); let xl = div_digit(&r, x.x & 0xFFFFu);
+    return vec3<u32>((xh << 16u) | xl, (yh << 16u) | yl, (zh << 16u) | zl);
+}
+// segment_squared_factor: floor(max(0, q) / 65534^2), q = -s2 dv dw - s0 dw du - s1 du dv, dw = -du - dv.
+fn segment_squared(s: array<vec2<u32>, 3>, du: i32, dv: i32) -> vec2<u32> {
+    let dw = -du - dv;
+    var squares = s;
+    var a = array<i32, 3>(dw, du, dv); // coefficient k is -a[k] b[k]
+    var b = array<i32, 3>(du, dv, dw);
+    var positive = vec3<u32>(0u);
+    var negative = vec3<u32>(0u);
+    for (var k = 0u; k < 3u; k++) {
+        let magnitude = u32(abs(a[k])) * u32(abs(b[k])); // at most 65534^2 < 2^32
+        let term = mul96(squares[k], magnitude);
+        if ((a[k] < 0) == (b[k] < 0)) { negative = add96(negative, term); } else { positive = add96(positive, term); }
+    }
+    if (!less96(negative, positive)) { return vec2<u32>(0u); }
+    return div96_unit(div96_unit(sub96(positive, negative))).xy; // below 2^64
+}
+// floor(2f): the largest m with m^2 2^30 <= s (at most 65536), from a float guess corrected exactly.
+fn twice_fits(s: vec2<u32>, m: u32) -> bool {
+    let square = mul_wide(m, m);
+    return !less64(s, vec2<u32>(square.x << 30u, (square.y << 30u) | (square.x >> 2u)));
+}
+fn floor_twice_factor(s: vec2<u32>) -> u32 {
+    let guess = sqrt(f32(s.y) * 4294967296.0 + f32(s.x)) * (1.0 / 32768.0);
+    var m = select(u32(max(guess, 0.0)), 65536u, guess >= 65536.0);
+    while (m > 0u && !twice_fits(s, m)) { m--; }
+    while (m < 65536u && twice_fits(s, m + 1u)) { m++; }
+    return m;
+}
+fn rounded_split_factor(s: vec2<u32>) -> u32 { return (floor_twice_factor(s) + 1u) / 2u; }
+// (2k - 1)^2 2^30: f rounds to k or more from this square on.
+fn half_below_squared(k: u32) -> vec2<u32> {
+    let v = (2u * k - 1u) * (2u * k - 1u);
+    return vec2<u32>(v << 30u, v >> 2u);
+}
+// A leaf's factor: rounded, clamped to [1, UNIFORM_MAX_FACTOR], by a binary search of the squares.
+fn leaf_factor(s: vec2<u32>) -> u32 {
+    var low = 1u;
+    var high = UNIFORM_MAX_FACTOR;
+    while (low < high) {
+        let mid = (low + high + 1u) / 2u;
+        if (less64(s, half_below_squared(mid))) { high = mid - 1u; } else { low = mid; }
+    }
+    return low;
+}
+// A split node's pieces of an edge (UniformSplit edge_pieces): whole within the dice limit (f < N + 1/2 at
+// depth 0 and on the root's boundary, else below the interior limit), else ceil(round(f) / N) clamped to [1, N].
+fn edge_pieces(s: vec2<u32>, depth: u32, boundary: bool) -> u32 {
+    let n = UNIFORM_MAX_FACTOR;
+    var whole: bool;
+    if (depth == 0u || boundary) { whole = less64(s, half_below_squared(n + 1u)); }
+    else { whole = less64(s, vec2<u32>(SPLIT_INTERIOR_LIMIT_LO, SPLIT_INTERIOR_LIMIT_HI)); }
+    if (whole) { return 1u; }
+    return clamp((rounded_split_factor(s) + n - 1u) / n, 1u, n);
+}
+// uniform_split_depth_limit(N, largest root factor): one level more than its edges need, in [2, bound].
+fn split_depth_limit(largest: u32) -> u32 {
+    var reach = UNIFORM_MAX_FACTOR;
+    var levels = 0u;
+    for (; reach < largest; levels++) { reach *= UNIFORM_MAX_FACTOR; }
+    return max(min(levels + 1u, SPLIT_DEPTH_BOUND), 2u);
+}
+
+// A node of the split area (rt::gpu::split_node_word): corners on the root in units of SPLIT_FIXED_ONE.
+struct SplitNode {
+    patch_: u32,
+    info: u32,
+    corner: array<vec2<u32>, 3>,
+    squared: array<vec2<u32>, 3>,
+}
+fn split_area() -> u32 { return patch_count() * PATCH_WORDS + TOTALS_WORDS; }
+fn split_header(w: u32) -> u32 { return split_area() + w; }
+// Node i of the region of `level` (the levels alternate between two regions of PARAM_SPLIT_CAPACITY nodes).
+fn split_node(level: u32, i: u32) -> u32 {
+    return split_area() + SPLIT_HEADER_WORDS + ((level & 1u) * params[PARAM_SPLIT_CAPACITY] + i) * NODE_WORDS;
+}
+fn load_node(n: u32) -> SplitNode {
+    var s: SplitNode;
+    s.patch_ = patches[n + NODE_PATCH];
+    s.info = patches[n + NODE_INFO];
+    for (var k = 0u; k < 3u; k++) {
+        s.corner[k] = vec2<u32>(patches[n + NODE_CORNER + 2u * k], patches[n + NODE_CORNER + 2u * k + 1u]);
+        s.squared[k] = vec2<u32>(patches[n + NODE_SQUARED + 2u * k], patches[n + NODE_SQUARED + 2u * k + 1u]);
+    }
+    return s;
+}
+fn store_node(n: u32, s: SplitNode) {
+    var node = s;
+    patches[n + NODE_PATCH] = node.patch_;
+    patches[n + NODE_INFO] = node.info;
+    for (var k = 0u; k < 3u; k++) {
+        patches[n + NODE_CORNER + 2u * k] = node.corner[k].x;
+        patches[n + NODE_CORNER + 2u * k + 1u] = node.corner[k].y;
+        patches[n + NODE_SQUARED + 2u * k] = node.squared[k].x;
+        patches[n + NODE_SQUARED + 2u * k + 1u] = node.squared[k].y;
+    }
+}
+// The root edges a point lies on: bit 0 e0 (v = 0), bit 1 e1 (u + v = 65534^2), bit 2 e2 (u = 0).
+fn root_edges_of(p: vec2<u32>) -> u32 {
+    return select(0u, 1u, p.y == 0u) | select(0u, 2u, p.x + p.y == SPLIT_FIXED_ONE) | select(0u, 4u, p.x == 0u);
+}
+fn split_edge_on_boundary(s: SplitNode, e: u32) -> bool {
+    var node = s;
+    let a = select(e, 0u, e == 2u);
+    let b = select(2u, 1u, e == 0u);
+    return (root_edges_of(node.corner[a]) & root_edges_of(node.corner[b])) != 0u;
+}
+// The point of node s at local (u, v) (units of 65534) on the root: the exact sum over the corners divided by
+// 65534, rounded half up, ties on a root edge to even (UniformSplit map and map32: each corner is 65534 a + b,
+// so the sum is 65534 (w a0 + u a1 + v a2) + (w b0 + u b1 + v b2), both parts below 2^32).
+fn split_map(s: SplitNode, d: vec2<u32>) -> vec2<u32> {
+    var node = s;
+    let w = UNIFORM_ONE - d.x - d.y;
+    let edges = select(root_edges_of(node.corner[0]), 7u, w == 0u) & select(root_edges_of(node.corner[1]), 7u, d.x == 0u) &
+                select(root_edges_of(node.corner[2]), 7u, d.y == 0u);
+    var r: vec2<u32>;
+    for (var k = 0u; k < 2u; k++) {
+        let c0 = node.corner[0][k]; let c1 = node.corner[1][k]; let c2 = node.corner[2][k];
+        let a0 = c0 / UNIFORM_ONE; let a1 = c1 / UNIFORM_ONE; let a2 = c2 / UNIFORM_ONE;
+        var q = w * a0 + d.x * a1 + d.y * a2;
+        let b = w * (c0 - a0 * UNIFORM_ONE) + d.x * (c1 - a1 * UNIFORM_ONE) + d.y * (c2 - a2 * UNIFORM_ONE);
+        q += b / UNIFORM_ONE;
+        let rest = b % UNIFORM_ONE;
+        let half_ = UNIFORM_ONE / 2u;
+        r[k] = q + select(0u, 1u, rest > half_ || (rest == half_ && (edges == 0u || (q & 1u) != 0u)));
+    }
+    return r;
+}
+// to_base_weights: a root coordinate to 2^-24 units, (c 2^24 + 65534^2 / 2) / 65534^2 (no ties).
+fn split_base_weight(c: u32) -> u32 {
+    let x = min(c, SPLIT_FIXED_ONE);
+    let n = add_wide(vec2<u32>(x << 24u, x >> 8u), SPLIT_FIXED_ONE / 2u);
+    return div96_unit(div96_unit(vec3<u32>(n, 0u))).x;
+}
+fn pattern_corner(p: vec2<u32>) -> i32 {
+    if (all(p == vec2<u32>(0u))) { return 0; }
+    if (all(p == vec2<u32>(UNIFORM_ONE, 0u))) { return 1; }
+    if (all(p == vec2<u32>(0u, UNIFORM_ONE))) { return 2; }
+    return -1;
+}
+// A child edge from a to b (pattern points of s): a whole edge of s keeps its square, any other is measured in
+// s's metric (UniformSplit child_edge_factor).
+fn child_squared(s: SplitNode, a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    var node = s;
+    let ca = pattern_corner(a);
+    let cb = pattern_corner(b);
+    if (ca >= 0 && cb >= 0 && ca != cb) {
+        let lo = min(ca, cb);
+        let hi = max(ca, cb);
+        if (lo == 0 && hi == 1) { return node.squared[0]; }
+        if (lo == 1 && hi == 2) { return node.squared[1]; }
+        return node.squared[2];
+    }
+    return segment_squared(node.squared, i32(b.x) - i32(a.x), i32(b.y) - i32(a.y));
+}
+// The indirect dispatch of a pass over n items: SPLIT_GROUP invocations a workgroup, at most
+// MAX_DISPATCH_WORKGROUPS (the passes stride over the rest).
+fn split_dispatch(n: u32) {
+    patches[split_header(SPLIT_DISPATCH)] = max(1u, min((n + SPLIT_GROUP - 1u) / SPLIT_GROUP, MAX_DISPATCH_WORKGROUPS));
+    patches[split_header(SPLIT_DISPATCH + 1u)] = 1u;
+    patches[split_header(SPLIT_DISPATCH + 2u)] = 1u;
+}
+
+// Pass: the roots of level 0, one per base triangle, two per quad (halves A and B), in patch order, from the
+// records' rounded factors (a culled patch's are 0: a culled root).
+@compute @workgroup_size(SPLIT_GROUP)
+fn ctess_split_roots(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let triangles = triangle_count();
+    let roots = triangles + 2u * params[PARAM_QUAD_COUNT];
+    let capacity = params[PARAM_SPLIT_CAPACITY];
+    if (gid.x == 0u) {
+        patches[split_header(SPLIT_LEVEL)] = 0u;
+        patches[split_header(SPLIT_NODES)] = min(roots, capacity);
+        patches[split_header(SPLIT_PARENTS)] = 0u;
+        patches[split_header(SPLIT_NEEDED)] = roots;
+        patches[split_header(SPLIT_OVERFLOW)] = select(0u, 1u, roots > capacity);
+        split_dispatch(min(roots, capacity));
+    }
+    for (var r = gid.x; r < min(roots, capacity); r += groups.x * SPLIT_GROUP) {
+        let t = select(triangles + (r - triangles) / 2u, r, r < triangles);
+        let half_ = select((r - triangles) & 1u, 0u, r < triangles);
+        let rec = t * PATCH_WORDS;
+        var s: SplitNode;
+        s.patch_ = t;
+        var largest = 0u;
+        for (var k = 0u; k < 3u; k++) {
+            let f = patches[rec + select(SETUP + QSETUP_B_TOKEN, REC_TOKEN, half_ == 0u) + k];
+            s.squared[k] = vec2<u32>(0u, f * f); // f^2 2^32
+            largest = max(largest, f);
+        }
+        s.info = (split_depth_limit(largest) << NODE_LIMIT_SHIFT) | (half_ << NODE_HALF_SHIFT) | select(0u, NODE_CULLED, largest == 0u);
+        s.corner[0] = vec2<u32>(0u);
+        s.corner[1] = vec2<u32>(SPLIT_FIXED_ONE, 0u);
+        s.corner[2] = vec2<u32>(0u, SPLIT_FIXED_ONE);
+        store_node(split_node(0u, r), s);
+    }
+}
+
+// Pass: decides every node of the current level. A leaf (every edge whole, or the depth limit): its pattern
+// from its factors rounded to [1, N], its counts, one child (itself). A split node: the pattern of its pieces,
+// whose triangles are its children.
+@compute @workgroup_size(SPLIT_GROUP)
+fn ctess_split_count(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let level = patches[split_header(SPLIT_LEVEL)];
+    let nodes = patches[split_header(SPLIT_NODES)];
+    for (var i = gid.x; i < nodes; i += groups.x * SPLIT_GROUP) {
+        let n = split_node(level, i);
+        var s = load_node(n);
+        var counts = vec2<u32>(0u);
+        var words = vec3<u32>(0u);
+        var children = 0u;
+        if ((s.info & NODE_CULLED) == 0u) {
+            let depth = s.info & NODE_DEPTH_MASK;
+            var pieces = array<u32, 3>(1u, 1u, 1u);
+            if (depth < ((s.info >> NODE_LIMIT_SHIFT) & NODE_DEPTH_MASK)) {
+                for (var e = 0u; e < 3u; e++) { pieces[e] = edge_pieces(s.squared[e], depth, split_edge_on_boundary(s, e)); }
+            }
+            if (pieces[0] == 1u && pieces[1] == 1u && pieces[2] == 1u) {
+                let r = array<u32, 3>(leaf_factor(s.squared[0]), leaf_factor(s.squared[1]), leaf_factor(s.squared[2]));
+                counts = uniform_setup(r, &words);
+                children = 1u;
+                patches[n + NODE_INFO] = s.info | NODE_LEAF;
+            } else {
+                children = uniform_setup(pieces, &words).y;
+            }
+        }
+        patches[n + NODE_CHILDREN] = children;
+        patches[n + NODE_PATTERN] = words.x;
+        patches[n + NODE_PATTERN + 1u] = words.y;
+        patches[n + NODE_PATTERN + 2u] = words.z;
+        patches[n + NODE_VERTICES] = counts.x;
+        patches[n + NODE_TRIANGLES] = counts.y;
+    }
+}
+
+// Pass, one workgroup of SCAN_GROUP: exclusive prefix sums of the level's children and counts (the children's
+// slots in the next level, a leaf's first vertex and triangle), then the header moves to the next level: its
+// nodes are the children, at most PARAM_SPLIT_CAPACITY (beyond it SPLIT_OVERFLOW and no node).
+var<workgroup> split_sum: array<vec3<u32>, SCAN_GROUP>;
+@compute @workgroup_size(SCAN_GROUP)
+fn ctess_split_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
+    let level = patches[split_header(SPLIT_LEVEL)];
+    let n = patches[split_header(SPLIT_NODES)];
+    let lane = lid.x;
+    let per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
+    let begin = min(n, lane * per);
+    let end = min(n, begin + per);
+    var sum = vec3<u32>(0u);
+    for (var i = begin; i < end; i++) {
+        let node = split_node(level, i);
+        sum += vec3<u32>(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
+    }
+    split_sum[lane] = sum;
+    workgroupBarrier();
+    for (var d = 1u; d < SCAN_GROUP; d <<= 1u) {
+        var add = vec3<u32>(0u);
+        if (lane >= d) { add = split_sum[lane - d]; }
+        workgroupBarrier();
+        split_sum[lane] += add;
+        workgroupBarrier();
+    }
+    var base = split_sum[lane] - sum;
+    for (var i = begin; i < end; i++) {
+        let node = split_node(level, i);
+        patches[node + NODE_FIRST_CHILD] = base.x;
+        patches[node + NODE_FIRST_VERTEX] = base.y;
+        patches[node + NODE_FIRST_TRIANGLE] = base.z;
+        base += vec3<u32>(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
+    }
+    if (lane == SCAN_GROUP - 1u) {
+        let children = split_sum[SCAN_GROUP - 1u].x;
+        let over = children > params[PARAM_SPLIT_CAPACITY] || patches[split_header(SPLIT_OVERFLOW)] != 0u;
+        patches[split_header(SPLIT_NEEDED)] = max(patches[split_header(SPLIT_NEEDED)], children);
+        patches[split_header(SPLIT_OVERFLOW)] = select(0u, 1u, over);
+        patches[split_header(SPLIT_LEVEL)] = level + 1u;
+        patches[split_header(SPLIT_PARENTS)] = n;
+        patches[split_header(SPLIT_NODES)] = select(children, 0u, over);
+        split_dispatch(select(children, 0u, over));
+    }
+}
+
+// Pass: child slot j of the next level from its parent (the last node whose first child is at most j): a leaf
+// is copied, a split node's child k is its split pattern's triangle k, its corners mapped on the root and its
+// edges' squares from the parent's (UniformSplit child).
+@compute @workgroup_size(SPLIT_GROUP)
+fn ctess_split_expand(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let level = patches[split_header(SPLIT_LEVEL)];
+    let nodes = patches[split_header(SPLIT_NODES)];
+    let parents = patches[split_header(SPLIT_PARENTS)];
+    for (var j = gid.x; j < nodes; j += groups.x * SPLIT_GROUP) {
+        var low = 0u;
+        var high = parents - 1u;
+        while (low < high) {
+            let mid = (low + high + 1u) / 2u;
+            if (patches[split_node(level - 1u, mid) + NODE_FIRST_CHILD] <= j) { low = mid; } else { high = mid - 1u; }
+        }
+        let p = split_node(level - 1u, low);
+        let s = load_node(p);
+        var c = s;
+        c.info = s.info & ~NODE_LEAF;
+        if ((s.info & NODE_LEAF) == 0u) {
+            let words = vec3<u32>(patches[p + NODE_PATTERN], patches[p + NODE_PATTERN + 1u], patches[p + NODE_PATTERN + 2u]);
+            let tri = uniform_triangle(words, j - patches[p + NODE_FIRST_CHILD]);
+            let a = uniform_local(words, tri.x);
+            let b = uniform_local(words, tri.y);
+            let d = uniform_local(words, tri.z);
+            c.info = (s.info & ~(NODE_LEAF | NODE_DEPTH_MASK)) | ((s.info & NODE_DEPTH_MASK) + 1u);
+            c.corner[0] = split_map(s, a);
+            c.corner[1] = split_map(s, b);
+            c.corner[2] = split_map(s, d);
+            c.squared[0] = child_squared(s, a, b);
+            c.squared[1] = child_squared(s, b, d);
+            c.squared[2] = child_squared(s, a, d);
+        }
+        store_node(split_node(level, j), c);
+    }
+}
+
+// The leaves after the last scan: the region of the level before the header's, as many as its parents.
+fn split_leaves() -> u32 { return patches[split_header(SPLIT_PARENTS)]; }
+fn split_leaf(i: u32) -> u32 { return split_node(patches[split_header(SPLIT_LEVEL)] - 1u, i); }
+
+// Pass: each patch's counts from its leaves (they lie together, in patch order): the last leaf of a patch
+// writes the record's counts, from the first one's prefix sums to its own end.
+@compute @workgroup_size(SPLIT_GROUP)
+fn ctess_split_records(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let leaves = split_leaves();
+    for (var i = gid.x; i < leaves; i += groups.x * SPLIT_GROUP) {
+        let n = split_leaf(i);
+        let t = patches[n + NODE_PATCH];
+        if (i + 1u < leaves && patches[split_leaf(i + 1u) + NODE_PATCH] == t) { continue; }
+        var low = 0u;
+        var high = i;
+        while (low < high) {
+            let mid = (low + high) / 2u;
+            if (patches[split_leaf(mid) + NODE_PATCH] < t) { low = mid + 1u; } else { high = mid; }
+        }
+        let f = split_leaf(low);
+        let rec = t * PATCH_WORDS;
+        patches[rec + REC_VERTEX_COUNT] = patches[n + NODE_FIRST_VERTEX] + patches[n + NODE_VERTICES] - patches[f + NODE_FIRST_VERTEX];
+        patches[rec + REC_TRIANGLE_COUNT] = patches[n + NODE_FIRST_TRIANGLE] + patches[n + NODE_TRIANGLES] - patches[f + NODE_FIRST_TRIANGLE];
+    }
+}
+// A leaf's vertex i as the pipeline's base weights (2^-24): its pattern's point mapped on the root, then
+// to_base_weights.
+fn split_vertex(n: u32, i: u32) -> vec2<u32> {
+    let s = load_node(n);
+    let p = split_map(s, uniform_local(vec3<u32>(patches[n + NODE_PATTERN], patches[n + NODE_PATTERN + 1u], patches[n + NODE_PATTERN + 2u]), i));
+    return vec2<u32>(split_base_weight(p.x), split_base_weight(p.y));
+}
+
 // ---- quads (docs/algorithm.md §7.2, §7.3): two triangle halves along a diagonal ----
 fn mesh_eye() -> vec3<f32> {
     return vec3<f32>(bitcast<f32>(params[PARAM_EYE]), bitcast<f32>(params[PARAM_EYE + 1u]), bitcast<f32>(params[PARAM_EYE + 2u]));
@@ -1431,7 +1835,7 @@ fn setup_one_quad(t: u32) {
     }
     for (var k = 0u; k < 3u; k++) { patches[rec + REC_FACTOR + k] = bitcast<u32>(f[k]); }
     patches[rec + SETUP + QSETUP_Q3_FACTOR] = bitcast<u32>(f[3]);
-    let uniform_ = uniform_pattern();
+    let uniform_ = uniform_pattern() || split_pattern();
     var r: u32;
     var diagonal: f32;
     if (uniform_) {
@@ -1455,7 +1859,8 @@ fn setup_one_quad(t: u32) {
             patches[rec + SETUP + QSETUP_B_TOKEN + k] = ib[k];
         }
         var words: vec3<u32>;
-        counts = saturating_add(uniform_setup(ia, &words), uniform_setup(ib, &words));
+        // A split quad's counts come from its halves' leaves (ctess_split_records).
+        if (split_pattern()) { counts = vec2<u32>(0u); } else { counts = saturating_add(uniform_setup(ia, &words), uniform_setup(ib, &words)); }
     } else {
         // One loop over the halves: one copy of patch_setup in the compiled pass, not two.
         counts = vec2<u32>(0u);
@@ -1582,9 +1987,27 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
     let displace = displaced;
     if (displacement_on() != displaced) { return; }
     if (displaced && displacement_vector_mode() != vector_) { return; }
-    for (var t = first_patch + wid.x; t < end; t += groups.x) {
+    // Split (docs/shaders.md, "Splitting"): a workgroup per leaf instead of per patch, skipping the leaves of
+    // patches outside [first_patch, end); a leaf's vertices are its pattern's, mapped on the root.
+    let split_ = split_pattern();
+    var items = end;
+    var start = first_patch;
+    if (split_) {
+        items = split_leaves();
+        start = 0u;
+    }
+    for (var item = start + wid.x; item < items; item += groups.x) {
+        // (select() would read both sides: the split words only exist in a split run.)
+        var leaf = 0u;
+        var t = item;
+        if (split_) {
+            leaf = split_leaf(item);
+            t = patches[leaf + NODE_PATCH];
+        }
+        if (t < first_patch || t >= end) { continue; }
         let rec = t * PATCH_WORDS;
-        let count = patches[rec + REC_VERTEX_COUNT];
+        var count = patches[rec + REC_VERTEX_COUNT];
+        if (split_) { count = patches[leaf + NODE_VERTICES]; }
         if (count == 0u) { continue; }
         let quad = quad_pass;
         let rot = patches[rec + REC_ROTATION];
@@ -1609,7 +2032,8 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
                 en[k] = EdgeNormals(q[k].normal, q[(k + 1u) % 4u].normal);
                 if (aen) { en[k] = adjacent_normals(face + select(0u, 1u, m >= 2u), select(m, m - 1u, m >= 2u), q[k], q[(k + 1u) % 4u]); }
             }
-            vertices_a = quad_halves(rec, &halves, &words).x;
+            if (split_) { vertices_a = select(0u, count, ((patches[leaf + NODE_INFO] >> NODE_HALF_SHIFT) & 1u) == 0u); }
+            else { vertices_a = quad_halves(rec, &halves, &words).x; }
             if (displace) {
                 // Mesh corners q0, q1, q2 are slots 0-2 of face (q0, q1, q2), q3 slot 2 of (q0, q2, q3); mesh edges
                 // 0 and 1 are edges 0 and 1 of the first, 2 and 3 edges 1 and 2 of the second (mesh_pipeline.cpp).
@@ -1636,7 +2060,7 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
                 en[e] = EdgeNormals(q[e].normal, q[(e + 1u) % 3u].normal);
                 if (aen) { en[e] = adjacent_normals(t, e, q[e], q[(e + 1u) % 3u]); }
             }
-            if (!uniform_) { halves[0] = record_patch(rec); }
+            if (!uniform_ && !split_) { halves[0] = record_patch(rec); }
             words[0] = uniform_words(rec);
             if (displace) {
                 dp = displacement_patch(3u, array<u32, 4>(w.x, w.y, w.z, 0u), array<u32, 4>(t, t, t, t),
@@ -1644,12 +2068,14 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
                                         vector_);
             }
         }
-        let first = patches[rec + REC_FIRST_VERTEX];
+        var first = patches[rec + REC_FIRST_VERTEX];
+        if (split_) { first = patches[leaf + NODE_FIRST_VERTEX]; }
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
             let side = select(1u, 0u, i < vertices_a);
             let local = select(i - vertices_a, i, side == 0u);
             var d: vec2<u32>;
-            if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
+            if (split_) { d = split_vertex(leaf, local); }
+            else if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
             // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
             // q_k+2) with weights (1 - r, r, 0), the operations the neighbour across the edge runs (quad_vertex on
@@ -1738,26 +2164,48 @@ fn emit_triangles(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<
     let first_patch = select(params[PARAM_FIRST_PATCH], max(params[PARAM_FIRST_PATCH], triangle_count()), quad_pass);
     let end = min(params[PARAM_END_PATCH], select(triangle_count(), patch_count(), quad_pass));
     let uniform_ = uniform_pattern();
-    for (var t = first_patch + wid.x; t < end; t += groups.x) {
+    // Split: a workgroup per leaf, its pattern's triangles after its own first vertex (as emit_vertices).
+    let split_ = split_pattern();
+    var items = end;
+    var start = first_patch;
+    if (split_) {
+        items = split_leaves();
+        start = 0u;
+    }
+    for (var item = start + wid.x; item < items; item += groups.x) {
+        var leaf = 0u;
+        var t = item;
+        if (split_) {
+            leaf = split_leaf(item);
+            t = patches[leaf + NODE_PATCH];
+        }
+        if (t < first_patch || t >= end) { continue; }
         let rec = t * PATCH_WORDS;
-        let count = patches[rec + REC_TRIANGLE_COUNT];
+        var count = patches[rec + REC_TRIANGLE_COUNT];
+        if (split_) { count = patches[leaf + NODE_TRIANGLES]; }
         if (count == 0u) { continue; }
         var halves: array<Patch, 2>;
         var words: array<vec3<u32>, 2>;
         var counts_a = vec2<u32>(0u, count);
-        if (quad_pass) {
+        if (split_) {
+            words[0] = vec3<u32>(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        } else if (quad_pass) {
             counts_a = quad_halves(rec, &halves, &words);
         } else {
             if (!uniform_) { halves[0] = record_patch(rec); }
             words[0] = uniform_words(rec);
         }
-        let vfirst = patches[rec + REC_FIRST_VERTEX];
-        let tfirst = patches[rec + REC_FIRST_TRIANGLE];
+        var vfirst = patches[rec + REC_FIRST_VERTEX];
+        var tfirst = patches[rec + REC_FIRST_TRIANGLE];
+        if (split_) {
+            vfirst = patches[leaf + NODE_FIRST_VERTEX];
+            tfirst = patches[leaf + NODE_FIRST_TRIANGLE];
+        }
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
             let side = select(1u, 0u, i < counts_a.y);
             let local = select(i - counts_a.y, i, side == 0u);
             var tri: vec3<u32>;
-            if (uniform_) { tri = uniform_triangle(words[side], local); } else { tri = patch_triangle(&halves[side], local); }
+            if (uniform_ || split_) { tri = uniform_triangle(words[side], local); } else { tri = patch_triangle(&halves[side], local); }
             tri += vec3<u32>(vfirst + select(counts_a.x, 0u, side == 0u));
             let o = 3u * (tfirst + i);
             out_indices[o] = tri.x;

@@ -82,7 +82,8 @@ export class MeshPipeline {
     // The table blob a pattern binds, uploaded once: CP binds ctess_mesh_<max>.tables.bin, uniform density the
     // uniform blob (the same CP sections, then the uniform ones), whose table's N is maxFactor.
     tables(pattern) {
-        const uniform = pattern === 'uniform' || pattern === this.constants.PATTERN_UNIFORM;
+        const C = this.constants;
+        const uniform = ['uniform', 'uniform-split', C.PATTERN_UNIFORM, C.PATTERN_UNIFORM_SPLIT].includes(pattern);
         const key = uniform ? 'uniform' : 'cp';
         if (!this.blobs.has(key)) {
             const base = `ctess_mesh_${this.maxFactor}${uniform ? '.uniform' : ''}`;
@@ -105,11 +106,12 @@ export class MeshPipeline {
         return buffer;
     }
 
-    async read(buffer, words) {
+    // words u32 of buffer from word `at` on.
+    async read(buffer, words, at = 0) {
         const size = Math.max(16, words * 4);
         const staging = this.device.createBuffer({ size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
         const enc = this.device.createCommandEncoder();
-        enc.copyBufferToBuffer(buffer, 0, staging, 0, size);
+        enc.copyBufferToBuffer(buffer, at * 4, staging, 0, size);
         this.device.queue.submit([enc.finish()]);
         await staging.mapAsync(GPUMapMode.READ);
         const out = new Uint32Array(staging.getMappedRange().slice(0, words * 4));
@@ -118,19 +120,27 @@ export class MeshPipeline {
         return out;
     }
 
-    // Encodes passes ([pipeline, workgroups] each, one compute pass each) on the seven buffers, submits them and
-    // resolves when the queue is done, with the milliseconds from submit.
+    // Encodes passes ([pipeline, workgroups] each, one compute pass each; workgroups a count, or [buffer, offset]
+    // for an indirect dispatch of the three words at that byte offset; or {copy: [source, offset, target,
+    // offset, bytes]} between passes) on the seven buffers, submits them and resolves when the queue is done, with
+    // the milliseconds from submit.
     async dispatch(buffers, passes) {
         const bindGroup = this.device.createBindGroup({
             layout: this.layout,
             entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
         });
         const enc = this.device.createCommandEncoder();
-        for (const [pipeline, groups] of passes) {
+        for (const step of passes) {
+            if (step.copy) {
+                enc.copyBufferToBuffer(...step.copy);
+                continue;
+            }
+            const [pipeline, groups] = step;
             const pass = enc.beginComputePass();
             pass.setPipeline(pipeline);
             pass.setBindGroup(0, bindGroup);
-            pass.dispatchWorkgroups(groups);
+            if (Array.isArray(groups)) pass.dispatchWorkgroupsIndirect(groups[0], groups[1]);
+            else pass.dispatchWorkgroups(groups);
             pass.end();
         }
         const start = performance.now();
@@ -141,7 +151,7 @@ export class MeshPipeline {
 
     // The params words (the layout's PARAM_*), with `extra` zero words after them: {patchCount (triangles +
     // quads), surface ('flat', 'pn', 'phong' or the code), alpha, factorScale, eye: [x, y, z], meshVertexCount,
-    // first, end, pattern ('cp', 'uniform' or the code), quadCount (the last patches; meshIndices holds the
+    // first, end, pattern ('cp', 'uniform', 'uniform-split' or the code), quadCount (the last patches; meshIndices holds the
     // triangles' 3 indices each, then the quads' 4), quadRule ('longer-pair', the default, or 'as-labelled')}.
     // Surface names: 'flat', 'pn', 'phong', 'pn-aen'. An unknown name throws.
     // displacement (docs/shaders.md, "Displacement"): {scale, factor, offset, normalStep,
@@ -168,7 +178,8 @@ export class MeshPipeline {
         p[C.PARAM_MESH_VERTEX_COUNT] = f.meshVertexCount;
         p[C.PARAM_FIRST_PATCH] = f.first ?? 0;
         p[C.PARAM_END_PATCH] = f.end ?? f.patchCount;
-        p[C.PARAM_PATTERN] = code(f.pattern ?? 'cp', 'pattern', { cp: C.PATTERN_CP, uniform: C.PATTERN_UNIFORM });
+        p[C.PARAM_PATTERN] = code(f.pattern ?? 'cp', 'pattern',
+                                  { cp: C.PATTERN_CP, uniform: C.PATTERN_UNIFORM, 'uniform-split': C.PATTERN_UNIFORM_SPLIT });
         p[C.PARAM_QUAD_COUNT] = f.quadCount ?? 0;
         p[C.PARAM_QUAD_RULE] = code(f.quadRule ?? 'longer-pair', 'quad rule',
                                     { 'longer-pair': C.QUAD_RULE_LONGER_PAIR, 'as-labelled': C.QUAD_RULE_AS_LABELLED });
@@ -200,6 +211,12 @@ export class MeshPipeline {
     // floats each in vector mode) and, when the params name them, options.directions (3 floats per mesh vertex)
     // and in vector mode options.tangents (4 floats per mesh vertex, glTF TANGENT's layout) go after the mesh's
     // own data.
+    // Splitting (pattern 'uniform-split'; docs/shaders.md, "Splitting"): between the setup and the prefix sum run
+    // the split passes, SPLIT_DEPTH_BOUND levels of them, on split regions of options.splitCapacity nodes (default
+    // at least 65,536 and the roots; the host sets the params' capacity word); a level that needs more runs the
+    // levels again on regions grown to what it needed (at least twice the nodes), up to options.maxSplitCapacity
+    // (default: the device's binding size), past which run() throws, naming the nodes needed. The result then
+    // also has splitLeaves and splitCapacity.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
@@ -221,6 +238,20 @@ export class MeshPipeline {
         const patchWords = n * this.patchWords + C.TOTALS_WORDS;
         for (const [what, words] of [['mesh vertices', meshVertices.length], ['mesh indices', meshIndices.length], ['patch records', patchWords]])
             if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
+        // Splitting: binding 4 holds the split area after the totals (rt::gpu::split_buffer_words).
+        const split = params[C.PARAM_PATTERN] === C.PATTERN_UNIFORM_SPLIT;
+        const roots = n + quads; // one per base triangle, two per quad
+        let capacity = split ? Math.max(options.splitCapacity || 65536, roots, 1) : 0;
+        const splitWords = (nodes) => {
+            const words = patchWords + C.SPLIT_HEADER_WORDS + 2 * nodes * C.NODE_WORDS;
+            if (words * 4 > maxBinding)
+                throw new Error(`splitting needs ${nodes} nodes per region: binding 4 would be ${words * 4} bytes, past the device's ${maxBinding}`);
+            if (options.maxSplitCapacity && nodes > options.maxSplitCapacity)
+                throw new Error(`splitting needs ${nodes} nodes per region, past the run's maxSplitCapacity (${options.maxSplitCapacity})`);
+            return words;
+        };
+        const splitPasses = split ? await Promise.all(['split_roots', 'split_count', 'split_scan', 'split_expand', 'split_records']
+            .map((name) => this.pipelineOf(name))) : [];
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
         // Displaced vertices come from their own entry points (the others write none for such params).
         const triangles = n - quads;
@@ -250,15 +281,48 @@ export class MeshPipeline {
             const bParams = keep(this.storage(params));
             const bMesh = keep(this.storage(meshVertices));
             const bIndices = keep(this.storage(meshIndices));
-            const bPatches = keep(this.storage(null, patchWords));
             const none = [keep(this.storage(null, 4)), keep(this.storage(null, 4))];
             const setup = options.setup ? [this.extra[options.setup.entry], options.setup.groups]
                                         : [this.setup, Math.max(1, Math.min(Math.ceil(n / this.setupGroup), maxGroups))];
-            let milliseconds = await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], [setup, [this.scan, 1]]);
-            const patches = await this.read(bPatches, patchWords);
+            let bPatches, patches, splitLeaves = 0, milliseconds = 0;
+            // The split passes' indirect dispatches read a copy of the header's dispatch words: a buffer bound as
+            // writable storage cannot be a dispatch's indirect buffer too.
+            const bDispatch = split ? keep(this.storage(null, 4, GPUBufferUsage.INDIRECT)) : null;
+            for (;;) { // once, or again with larger split regions until the levels fit them
+                bPatches = keep(this.storage(null, split ? splitWords(capacity) : patchWords));
+                const passes = [setup];
+                if (split) {
+                    const runParams = params.slice();
+                    runParams[C.PARAM_SPLIT_CAPACITY] = capacity;
+                    this.device.queue.writeBuffer(bParams, 0, runParams);
+                    const [roots_, count, scan, expand, records] = splitPasses;
+                    const indirect = { copy: [bPatches, (patchWords + C.SPLIT_DISPATCH) * 4, bDispatch, 0, 12] };
+                    passes.push([roots_, Math.max(1, Math.min(Math.ceil(roots / C.SPLIT_GROUP), maxGroups))], indirect);
+                    for (let level = 0; level <= C.SPLIT_DEPTH_BOUND; level++)
+                        passes.push([count, [bDispatch, 0]], [scan, 1], indirect, [level < C.SPLIT_DEPTH_BOUND ? expand : records, [bDispatch, 0]]);
+                }
+                passes.push([this.scan, 1]);
+                milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, ...none], passes);
+                patches = await this.read(bPatches, patchWords);
+                if (!split) break;
+                const header = await this.read(bPatches, C.SPLIT_HEADER_WORDS, patchWords);
+                if (header[C.SPLIT_OVERFLOW] === 0) {
+                    splitLeaves = header[C.SPLIT_PARENTS];
+                    break;
+                }
+                // A level asked for more nodes than a region holds: grow to what it asked, at least twice.
+                let grown = Math.max(header[C.SPLIT_NEEDED], 2 * capacity);
+                if (options.maxSplitCapacity && grown > options.maxSplitCapacity && capacity < options.maxSplitCapacity)
+                    grown = Math.max(options.maxSplitCapacity, header[C.SPLIT_NEEDED]);
+                splitWords(grown); // throws past the device's binding size or the run's limit
+                capacity = grown;
+                temporary.splice(temporary.indexOf(bPatches), 1);
+                bPatches.destroy();
+            }
             const totalV = patches[n * this.patchWords], totalT = patches[n * this.patchWords + 1];
+            const splitInfo = split ? { splitLeaves, splitCapacity: capacity } : {};
             if (options.countsOnly)
-                return await scoped({ patches, vertexCount: totalV, triangleCount: totalT, vertices: null, indices: null, milliseconds });
+                return await scoped({ patches, vertexCount: totalV, triangleCount: totalT, vertices: null, indices: null, milliseconds, ...splitInfo });
             // The u32 totals wrap (the shader then writes TOTALS_OVERFLOW): recount them exactly before sizing.
             let sumV = 0, sumT = 0;
             for (let t = 0; t < n; t++) {
@@ -277,6 +341,7 @@ export class MeshPipeline {
             // that streams a large mesh would use it.
             const batch = options.batchVertices ?? Infinity;
             const batchParams = params.slice();
+            batchParams[C.PARAM_SPLIT_CAPACITY] = capacity; // the split regions the counts were made in
             for (let first = first0; first < end0;) {
                 let end = first, count = 0;
                 while (end < end0 && (end === first || count + patches[end * this.patchWords + C.REC_VERTEX_COUNT] <= batch))
@@ -284,15 +349,16 @@ export class MeshPipeline {
                 batchParams[C.PARAM_FIRST_PATCH] = first;
                 batchParams[C.PARAM_END_PATCH] = end;
                 this.device.queue.writeBuffer(bParams, 0, batchParams);
-                // The batch's triangles and quads go to their own entry points (the quads are the last patches).
+                // The batch's triangles and quads go to their own entry points (the quads are the last patches); a
+                // split run's passes take a workgroup per leaf, skipping the leaves of patches outside the batch.
                 const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
-                    .map((count) => Math.min(count, maxGroups));
+                    .map((count) => Math.min(count && split ? splitLeaves : count, maxGroups));
                 const passes = [[emitVertices, groups[0]], [emitTriangles, groups[0]],
                                 [emitQuadVertices, groups[1]], [emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
                 milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
                 first = end;
             }
-            return await scoped({ patches, vertexCount, triangleCount, vertices, indices, milliseconds });
+            return await scoped({ patches, vertexCount, triangleCount, vertices, indices, milliseconds, ...splitInfo });
         } catch (e) {
             for (; scopes > 0; scopes--) await this.device.popErrorScope().catch(() => {});
             throw e;

@@ -53,7 +53,12 @@ constexpr Pass passes[] = {
     {"emit_displaced_quad_vertices", "ctess_emit_displaced_quad_vertices", ctess::gen::emit_workgroup},
     {"emit_vector_displaced_vertices", "ctess_emit_vector_displaced_vertices", ctess::gen::emit_workgroup},
     {"emit_vector_displaced_quad_vertices", "ctess_emit_vector_displaced_quad_vertices",
-     ctess::gen::emit_workgroup}};
+     ctess::gen::emit_workgroup},
+    {"split_roots", "ctess_split_roots", ctess::gen::split_workgroup},
+    {"split_count", "ctess_split_count", ctess::gen::split_workgroup},
+    {"split_scan", "ctess_split_scan", ctess::gen::scan_workgroup},
+    {"split_expand", "ctess_split_expand", ctess::gen::split_workgroup},
+    {"split_records", "ctess_split_records", ctess::gen::split_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -22,8 +22,10 @@
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 #include <ctess/runtime/surface/eval.hpp>
 #include <ctess/runtime/uniform/pipeline_words.hpp>
+#include <ctess/runtime/uniform/split.hpp>
 #include <ctess/uniform/factor.hpp>
 #include <ctess/uniform/quantise.hpp>
+#include <ctess/uniform/split_factor.hpp>
 
 namespace ctess::gen {
 
@@ -32,6 +34,7 @@ namespace param_word = rt::gpu::param_word;
 using rt::gpu::emit_workgroup;
 using rt::gpu::scan_workgroup;
 using rt::gpu::setup_workgroup;
+using rt::gpu::split_workgroup;
 using rt::gpu::totals_overflow;
 using rt::gpu::totals_words;
 
@@ -47,6 +50,12 @@ static_assert(uniform::round_factor(std::bit_cast<float>(f32_infinity_bits), 16)
               uniform::round_factor(std::bit_cast<float>(f32_infinity_bits + 1), 16) == 1);
 static_assert(rt::uniform_factor(3.4999998f, 16) ==
               uniform::round_factor(3.4999998f, 16)); // the C++ callers' rule
+
+// Splitting (docs/shaders.md, "Splitting"): the interior dice limit of the pipeline's tolerance (the default)
+// as the exact square the shaders compare with (uniform/split_factor.hpp), for the configured table.
+inline constexpr std::uint64_t split_interior_limit =
+    uniform::interior_limit_squared(CTESS_UNIFORM_MAX_FACTOR, rt::uniform_split_interior_tolerance);
+static_assert(rt::uniform_split_fixed_one == std::uint64_t{uniform::fixed_one} * uniform::fixed_one);
 
 #define CTESS_WORD_OF(type, member) static_cast<std::uint32_t>(offsetof(type, member) / 4)
 
@@ -147,6 +156,7 @@ inline constexpr std::array shader_constants = {
                    "rt::gpu::param_word::height_map_height"},
     ShaderConstant{"PARAM_HEIGHT_MAP_ADDRESS", param_word::height_map_address,
                    "rt::gpu::param_word::height_map_address"},
+    ShaderConstant{"PARAM_SPLIT_CAPACITY", param_word::split_capacity, "rt::gpu::param_word::split_capacity"},
     ShaderConstant{"PARAMS_WORDS", param_word::words, "rt::gpu::param_word::words"},
     // the displacement flags (params word PARAM_DISPLACEMENT_FLAGS) and the height map's address modes
     ShaderConstant{"DISPLACEMENT_ON", rt::gpu::displacement_flag::on, "rt::gpu::displacement_flag::on"},
@@ -164,6 +174,8 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"PATTERN_CP", static_cast<std::uint32_t>(rt::Pattern::cp), "rt::Pattern::cp"},
     ShaderConstant{"PATTERN_UNIFORM", static_cast<std::uint32_t>(rt::Pattern::uniform),
                    "rt::Pattern::uniform"},
+    ShaderConstant{"PATTERN_UNIFORM_SPLIT", static_cast<std::uint32_t>(rt::Pattern::uniform_split),
+                   "rt::Pattern::uniform_split"},
     ShaderConstant{"QUAD_RULE_LONGER_PAIR", static_cast<std::uint32_t>(rt::QuadRule::longer_pair),
                    "rt::QuadRule::longer_pair"},
     ShaderConstant{"QUAD_RULE_AS_LABELLED", static_cast<std::uint32_t>(rt::QuadRule::as_labelled),
@@ -180,6 +192,49 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"MAX_DISPATCH_WORKGROUPS", rt::max_dispatch_workgroups, "rt::max_dispatch_workgroups"},
     ShaderConstant{"TOTALS_WORDS", totals_words, "rt::gpu::totals_words"},
     ShaderConstant{"TOTALS_OVERFLOW", totals_overflow, "rt::gpu::totals_overflow"},
+    // splitting (rt::gpu::split_word, rt::gpu::split_node_word, uniform/split_factor.hpp)
+    ShaderConstant{"SPLIT_GROUP", rt::gpu::split_workgroup, "rt::gpu::split_workgroup"},
+    ShaderConstant{"SPLIT_LEVEL", rt::gpu::split_word::level, "rt::gpu::split_word::level"},
+    ShaderConstant{"SPLIT_NODES", rt::gpu::split_word::nodes, "rt::gpu::split_word::nodes"},
+    ShaderConstant{"SPLIT_PARENTS", rt::gpu::split_word::parents, "rt::gpu::split_word::parents"},
+    ShaderConstant{"SPLIT_DISPATCH", rt::gpu::split_word::dispatch, "rt::gpu::split_word::dispatch"},
+    ShaderConstant{"SPLIT_NEEDED", rt::gpu::split_word::needed, "rt::gpu::split_word::needed"},
+    ShaderConstant{"SPLIT_OVERFLOW", rt::gpu::split_word::overflow, "rt::gpu::split_word::overflow"},
+    ShaderConstant{"SPLIT_HEADER_WORDS", rt::gpu::split_word::header_words,
+                   "rt::gpu::split_word::header_words"},
+    ShaderConstant{"NODE_PATCH", rt::gpu::split_node_word::patch, "rt::gpu::split_node_word::patch"},
+    ShaderConstant{"NODE_INFO", rt::gpu::split_node_word::info, "rt::gpu::split_node_word::info"},
+    ShaderConstant{"NODE_CORNER", rt::gpu::split_node_word::corner, "rt::gpu::split_node_word::corner"},
+    ShaderConstant{"NODE_SQUARED", rt::gpu::split_node_word::squared, "rt::gpu::split_node_word::squared"},
+    ShaderConstant{"NODE_CHILDREN", rt::gpu::split_node_word::children, "rt::gpu::split_node_word::children"},
+    ShaderConstant{"NODE_PATTERN", rt::gpu::split_node_word::pattern, "rt::gpu::split_node_word::pattern"},
+    ShaderConstant{"NODE_VERTICES", rt::gpu::split_node_word::vertices, "rt::gpu::split_node_word::vertices"},
+    ShaderConstant{"NODE_TRIANGLES", rt::gpu::split_node_word::triangles,
+                   "rt::gpu::split_node_word::triangles"},
+    ShaderConstant{"NODE_FIRST_CHILD", rt::gpu::split_node_word::first_child,
+                   "rt::gpu::split_node_word::first_child"},
+    ShaderConstant{"NODE_FIRST_VERTEX", rt::gpu::split_node_word::first_vertex,
+                   "rt::gpu::split_node_word::first_vertex"},
+    ShaderConstant{"NODE_FIRST_TRIANGLE", rt::gpu::split_node_word::first_triangle,
+                   "rt::gpu::split_node_word::first_triangle"},
+    ShaderConstant{"NODE_WORDS", rt::gpu::split_node_word::words, "rt::gpu::split_node_word::words"},
+    ShaderConstant{"NODE_DEPTH_MASK", rt::gpu::split_node_info::depth_mask,
+                   "rt::gpu::split_node_info::depth_mask"},
+    ShaderConstant{"NODE_LIMIT_SHIFT", rt::gpu::split_node_info::limit_shift,
+                   "rt::gpu::split_node_info::limit_shift"},
+    ShaderConstant{"NODE_HALF_SHIFT", rt::gpu::split_node_info::half_shift,
+                   "rt::gpu::split_node_info::half_shift"},
+    ShaderConstant{"NODE_LEAF", rt::gpu::split_node_info::leaf, "rt::gpu::split_node_info::leaf"},
+    ShaderConstant{"NODE_CULLED", rt::gpu::split_node_info::culled, "rt::gpu::split_node_info::culled"},
+    ShaderConstant{"SPLIT_MAX_FACTOR", rt::uniform_split_max_factor, "rt::uniform_split_max_factor"},
+    ShaderConstant{"SPLIT_DEPTH_BOUND", rt::uniform_split_depth_bound(CTESS_UNIFORM_MAX_FACTOR),
+                   "rt::uniform_split_depth_bound(N)"},
+    ShaderConstant{"SPLIT_FIXED_ONE", static_cast<std::uint32_t>(rt::uniform_split_fixed_one),
+                   "rt::uniform_split_fixed_one (65534^2)"},
+    ShaderConstant{"SPLIT_INTERIOR_LIMIT_LO", static_cast<std::uint32_t>(split_interior_limit),
+                   "uniform::interior_limit_squared(N, rt::uniform_split_interior_tolerance), low word"},
+    ShaderConstant{"SPLIT_INTERIOR_LIMIT_HI", static_cast<std::uint32_t>(split_interior_limit >> 32),
+                   "uniform::interior_limit_squared(N, rt::uniform_split_interior_tolerance), high word"},
     // the uniform-factor rule (the shaders' uniform_factor)
     ShaderConstant{"UNIFORM_ROUND_FROM_BITS", uniform_round_from_bits, "uniform::round_factor: 1.5f"},
     ShaderConstant{"F32_INFINITY_BITS", f32_infinity_bits, "uniform::round_factor: +inf"},

@@ -35,9 +35,10 @@ std::vector<std::uint32_t> read_result_words(const std::string& path) {
 } // namespace
 
 PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits limits) {
-    const vulkan::Output gpu =
-        runner.tessellate(scene.view(), pipeline_params(scene), {limits.max_workgroups, limits.counts_only},
-                          scene.options.displacement);
+    const vulkan::Output gpu = runner.tessellate(
+        scene.view(), pipeline_params(scene),
+        {limits.max_workgroups, limits.counts_only, limits.split_capacity, limits.max_split_capacity},
+        scene.options.displacement);
     PipelineOutput out;
     out.milliseconds = gpu.milliseconds;
     out.counts_milliseconds = gpu.counts_milliseconds;
@@ -97,6 +98,8 @@ std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string&
                                      const std::string& shader_dir, unsigned max_factor,
                                      const std::vector<DawnJob>& jobs, RunLimits limits) {
     std::string cmd = "CTESS_MAX_WORKGROUPS=" + std::to_string(limits.max_workgroups) +
+                      " CTESS_SPLIT_CAPACITY=" + std::to_string(limits.split_capacity) +
+                      " CTESS_MAX_SPLIT_CAPACITY=" + std::to_string(limits.max_split_capacity) +
                       (limits.counts_only ? " CTESS_COUNTS_ONLY=1 " : " ") + node + " " + script + " " +
                       shader_dir + " " + std::to_string(max_factor);
     for (const DawnJob& job : jobs) {

@@ -20,6 +20,9 @@ namespace ctess::gpu_test {
 struct RunLimits {
     std::uint32_t max_workgroups = rt::max_dispatch_workgroups;
     bool counts_only = false;
+    // Pattern::uniform_split: the split regions' first capacity and their limit (0: the hosts' defaults).
+    std::uint32_t split_capacity = 0;
+    std::uint32_t max_split_capacity = 0;
 };
 // The totals a prefix sum writes when a mesh's vertex or triangle total does not fit in u32.
 inline constexpr std::uint32_t totals_overflow = gen::totals_overflow;

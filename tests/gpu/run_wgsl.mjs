@@ -5,7 +5,8 @@
 // (Dawn's Vulkan backend rejects bookworm's lavapipe 22.3, docs/shaders.md). CTESS_DAWN_BACKEND
 // overrides the backend flag (e.g. "vulkan" on a machine with a newer driver).
 // CTESS_MAX_WORKGROUPS caps every dispatch (the passes stride over the rest; default MAX_DISPATCH_WORKGROUPS,
-// the one-dispatch limit); CTESS_COUNTS_ONLY=1 runs only the setup and prefix-sum passes and returns no outputs.
+// the one-dispatch limit); CTESS_COUNTS_ONLY=1 runs only the setup and prefix-sum passes and returns no outputs;
+// CTESS_SPLIT_CAPACITY and CTESS_MAX_SPLIT_CAPACITY are run()'s splitCapacity and maxSplitCapacity (0: defaults).
 // The passes run through the installed host module ctess_webgpu.mjs beside the shaders (docs/shaders.md,
 // "Hosts"), which takes every layout number from the generated ctess_mesh_<max>.layout.json. File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message (also when the mesh's totals do
 // not fit in 32 bits: the prefix sum then writes 0xFFFFFFFF).
@@ -41,7 +42,9 @@ const C = pipeline.constants;
 const countsOnly = process.env.CTESS_COUNTS_ONLY === '1';
 const info = adapter.info ?? {};
 for (let job = 0; job < files.length; job += 2) {
-    const scene = new Uint32Array(readFileSync(files[job]).buffer.slice(0));
+    // (A small file's Buffer is a view into Node's shared pool: copy its own bytes, not the pool's.)
+    const bytes = readFileSync(files[job]);
+    const scene = new Uint32Array(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.length));
     if (scene[0] !== 0x43535443 || scene[1] !== 3) fail('bad scene file');
     const sizes = 2 + C.PARAMS_WORDS;
     const params = scene.slice(2, sizes);
@@ -70,6 +73,7 @@ for (let job = 0; job < files.length; job += 2) {
     try {
         out = await pipeline.run(params, meshVertices, meshIndices, {
             maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly, batchVertices: 1 << 17,
+            splitCapacity: Number(process.env.CTESS_SPLIT_CAPACITY ?? 0), maxSplitCapacity: Number(process.env.CTESS_MAX_SPLIT_CAPACITY ?? 0),
             ...displacement });
     } catch (e) {
         console.error(`run_wgsl: ${e.message}`);

@@ -108,7 +108,7 @@ const char* surface_name(rt::Surface s) {
 }
 
 const char* pattern_name(rt::Pattern p) {
-    return p == rt::Pattern::cp ? "CP" : "uniform";
+    return p == rt::Pattern::cp ? "CP" : p == rt::Pattern::uniform ? "uniform" : "uniform split";
 }
 
 // The uniform pattern's factors sweep [1, N] of the configured uniform tables, which every blob carries.
@@ -171,6 +171,91 @@ void check_watertight(unsigned max_factor, rt::Surface surface, rt::Pattern patt
 }
 
 } // namespace
+
+namespace {
+// Splitting (docs/shaders.md, "Splitting"): the depths the leaves of a CPU output reach, from its records'
+// factors (each quad half is a split of its own).
+std::array<std::uint32_t, 5> split_depths(const Scene& scene, const PipelineOutput& cpu) {
+    std::array<std::uint32_t, 5> by_depth{};
+    const std::size_t triangles = scene.indices.size() / 3;
+    const auto* records = reinterpret_cast<const rt::PatchRecord*>(cpu.patches.data());
+    for (std::size_t p = 0; p < scene.patch_count(); ++p)
+        for (unsigned half = 0; half < (p < triangles ? 1u : 2u); ++half) {
+            const auto factor = [&](unsigned k) {
+                return static_cast<float>(half == 0 ? records[p].uniform_factor(k)
+                                                    : records[p].setup[rt::quad_setup_word::b_token + k]);
+            };
+            if (factor(0) == 0) continue; // culled
+            rt::UniformSplit(rt::uniform_tables, factor(0), factor(1), factor(2),
+                             rt::uniform_pipeline_options)
+                .for_each_leaf([&](const rt::UniformSplit::Leaf& leaf) { ++by_depth[leaf.depth]; });
+        }
+    return by_depth;
+}
+
+// A long thin triangle whose long edges split three levels deep at N = 16 (a piece of a root edge above
+// 16.5 x 256 splits again at depth 2): width 1 / 2,500, seen from above, its long edges about 4,400
+// DiceRates, its short one 1 (about 75,000 triangles).
+Scene split_strip(rt::Surface surface) {
+    Scene s;
+    const rt::Vec3 up{0, 0, 1};
+    for (const float x : {0.0f, 1.0f})
+        for (const float y : {0.0f, 0.0004f}) detail::push_vertex(s, {x, y, 0.0f}, up, x, y);
+    s.indices = {0, 2, 3}; // (0, 0), (1, 0), (1, 0.0004)
+    s.options.dice.eye = {0.5f, 0.0f, 0.5f};
+    s.options.dice.dice_rate = 1.0f;
+    s.options.dice.projection_scale = 2200.0f;
+    s.options.surface = {surface, 0.75f};
+    s.options.pattern = rt::Pattern::uniform_split;
+    return s;
+}
+
+} // namespace
+
+TEST_CASE(
+    "GPU parity, uniform split: leaves of depth 0 to 3, triangles and quads, the split regions regrown") {
+    // A factor sweep up to 3 x 400 with every third cell a quad (depths 0 to 2), PN, and the strip (depth 3):
+    // every record, barycentric and index the CPU's. Both run from 100 nodes a region (the levels need
+    // thousands: grown and run again) and 7 workgroups a dispatch (the passes stride over every node and
+    // leaf).
+    Scene sweep = factor_sweep_grid(400, 8, rt::Surface::pn_triangles, 3);
+    sweep.options.pattern = rt::Pattern::uniform_split;
+    const Scene strip = split_strip(rt::Surface::flat);
+    const std::vector<std::pair<const char*, Scene>> scenes = {{"split_sweep", sweep},
+                                                               {"split_strip", strip}};
+    std::vector<PipelineOutput> gpu;
+    if (backend() == Backend::vulkan)
+        for (const auto& [name, scene] : scenes)
+            gpu.push_back(run_gpu(64, scene, name, RunLimits{7, false, 100}));
+    else
+        gpu = run_dawn(
+            node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, 64,
+            {{&sweep, dawn_work_file(64, "split_sweep")}, {&strip, dawn_work_file(64, "split_strip")}},
+            RunLimits{7, false, 100});
+    std::array<std::uint32_t, 5> depths{};
+    for (std::size_t k = 0; k < scenes.size(); ++k) {
+        const Scene& scene = scenes[k].second;
+        const PipelineOutput cpu = run_cpu(rt::cp_tables_64, scene);
+        const std::array<std::uint32_t, 5> d = split_depths(scene, cpu);
+        for (std::size_t j = 0; j < d.size(); ++j) depths[j] += d[j];
+        const Comparison c = compare(cpu, gpu[k]);
+        std::printf(
+            "%s, uniform split, %s: %u patches (%zu quads), leaves of depth 0-3: %u %u %u %u, %u vertices, "
+            "%u triangles; GPU %.1f ms; max position error %.2g\n",
+            backend_name(), scenes[k].first, scene.patch_count(), scene.quads.size() / 4, d[0], d[1], d[2],
+            d[3], cpu.total_vertices(), cpu.total_triangles(), gpu[k].milliseconds, c.max_position_error);
+        INFO(scenes[k].first << ": " << c.first_difference);
+        CHECK(c.equal());
+    }
+    for (std::size_t j = 0; j < 4; ++j) CHECK(depths[j] > 0);
+}
+
+TEST_CASE("GPU uniform split: a level past the run's node limit is an error naming the nodes, never a short "
+          "output") {
+    CHECK_THROWS_WITH(
+        run_gpu(64, split_strip(rt::Surface::flat), "split_limit", RunLimits{7, false, 100, 1000}),
+        Catch::Contains("nodes per region"));
+}
 
 TEST_CASE("GPU parity: 1152-patch factor sweep, max 64, flat, PN and Phong") {
     check_parity(64, rt::Surface::flat);
@@ -256,9 +341,6 @@ TEST_CASE("Vulkan host: options the shaders do not run, bad params and missing f
     };
     rt::PipelineOptions options = scene.options;
     options.pattern = rt::Pattern::d3d11_fractional_even;
-    refused(options, scene.view());
-    options = scene.options;
-    options.pattern = rt::Pattern::uniform_split;
     refused(options, scene.view());
     options = scene.options;
     options.dice.mode = rt::FactorMode::constant;

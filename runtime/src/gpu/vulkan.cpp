@@ -1,5 +1,7 @@
 #include <ctess/runtime/gpu/vulkan.hpp>
 
+#include <ctess/runtime/uniform/split.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -48,7 +50,15 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
                                                            "_emit_displaced_vertices.spv",
                                                            "_emit_displaced_quad_vertices.spv",
                                                            "_emit_vector_displaced_vertices.spv",
-                                                           "_emit_vector_displaced_quad_vertices.spv"};
+                                                           "_emit_vector_displaced_quad_vertices.spv",
+                                                           "_split_roots.spv",
+                                                           "_split_count.spv",
+                                                           "_split_scan.spv",
+                                                           "_split_expand.spv",
+                                                           "_split_records.spv"};
+// The split passes' indices in pass_suffix.
+constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass = 12, split_expand_pass = 13,
+                   split_records_pass = 14;
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -56,6 +66,16 @@ void compute_barrier(VkCommandBuffer cmd) {
     barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                          1, &barrier, 0, nullptr, 0, nullptr);
+}
+// The same, and the dispatch words a pass wrote read by the next indirect dispatch.
+void indirect_barrier(VkCommandBuffer cmd) {
+    auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask =
+        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1,
+                         &barrier, 0, nullptr, 0, nullptr);
 }
 
 } // namespace
@@ -226,6 +246,59 @@ void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::ui
     }
 }
 
+void MeshPipeline::record_split_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                                       std::uint32_t roots, VkBuffer patches, VkDeviceSize patches_offset,
+                                       std::uint32_t max_workgroups) const {
+    if (max_workgroups == 0) max_workgroups = 1;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    const std::uint32_t groups = rt::gpu::setup_workgroups(patch_count, max_workgroups);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(0));
+    vkCmdDispatch(cmd, groups > 0 ? groups : 1, 1, 1);
+    compute_barrier(cmd);
+    const std::uint32_t root_groups =
+        roots / rt::gpu::split_workgroup + (roots % rt::gpu::split_workgroup != 0);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(split_roots_pass));
+    vkCmdDispatch(cmd, std::max(1u, std::min(root_groups, max_workgroups)), 1, 1);
+    indirect_barrier(cmd);
+    const VkDeviceSize dispatch =
+        patches_offset + 4 * (rt::gpu::split_area_word(patch_count) + rt::gpu::split_word::dispatch);
+    // The levels, then the leaves' count and scan: every node at the bound's depth is a leaf.
+    const std::uint32_t levels = rt::uniform_split_depth_bound(CTESS_UNIFORM_MAX_FACTOR);
+    for (std::uint32_t level = 0; level <= levels; ++level) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(split_count_pass));
+        vkCmdDispatchIndirect(cmd, patches, dispatch);
+        compute_barrier(cmd);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(split_scan_pass));
+        vkCmdDispatch(cmd, 1, 1, 1);
+        indirect_barrier(cmd);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipeline(level < levels ? split_expand_pass : split_records_pass));
+        vkCmdDispatchIndirect(cmd, patches, dispatch);
+        compute_barrier(cmd);
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(1));
+    vkCmdDispatch(cmd, 1, 1, 1);
+    compute_barrier(cmd);
+}
+
+void MeshPipeline::record_split_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t leaves,
+                                     bool triangles, bool quads, std::uint32_t max_workgroups, bool displaced,
+                                     bool vector) const {
+    if (leaves == 0 || (!triangles && !quads)) return;
+    if (max_workgroups == 0) max_workgroups = 1;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    compute_barrier(cmd);
+    const std::uint32_t groups = std::min(leaves, max_workgroups);
+    for (unsigned kind = 0; kind < 2; ++kind) {
+        if (!(kind == 0 ? triangles : quads)) continue;
+        const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
+        vkCmdDispatch(cmd, groups, 1, 1);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(3 + 2 * kind));
+        vkCmdDispatch(cmd, groups, 1, 1);
+    }
+}
+
 // ---- Runner ----
 
 struct Runner::Device {
@@ -335,7 +408,7 @@ struct Runner::Device {
                         std::to_string(limits.maxStorageBufferRange) + ")");
         auto bci = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
         bci.size = bytes;
-        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
         bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         check(vkCreateBuffer(device, &bci, nullptr, &b.buffer), "vkCreateBuffer");
         VkMemoryRequirements req;
@@ -488,7 +561,8 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         throw Error("the params' emit range [first, end) is not inside [0, patch count]");
     if (const rt::PipelineStatus st = rt::check_pipeline_size(n, 0, 0); st != rt::PipelineStatus::ok)
         throw Error(rt::pipeline_status_message(st));
-    const bool uniform = params[pw::pattern] == static_cast<std::uint32_t>(rt::Pattern::uniform);
+    const bool split = params[pw::pattern] == static_cast<std::uint32_t>(rt::Pattern::uniform_split);
+    const bool uniform = split || params[pw::pattern] == static_cast<std::uint32_t>(rt::Pattern::uniform);
     std::vector<std::uint32_t>& tables = device_->tables[uniform ? 1 : 0];
     if (tables.empty())
         tables = load_table_blob(shader_dir_, max_factor_, uniform ? rt::Pattern::uniform : rt::Pattern::cp);
@@ -504,7 +578,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
             vkResetDescriptorPool(d.device, d.descriptor_pool, 0);
         }
     } release{d, owned};
-    owned.reserve(8); // make() never reallocates, so a created buffer is always owned
+    owned.reserve(16); // make() never reallocates, so a created buffer is always owned
     const auto make = [&](std::uint64_t bytes, const void* data, std::size_t data_bytes) {
         owned.push_back(d.create_buffer(bytes));
         if (data_bytes != 0) std::memcpy(owned.back().mapped, data, data_bytes);
@@ -542,7 +616,11 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         throw Error("binding 2 (mesh vertices, directions and tangents) would be " +
                     std::to_string(vertex_binding) + " bytes, past this device's maxStorageBufferRange (" +
                     std::to_string(d.limits.maxStorageBufferRange) + ")");
-    const std::uint64_t patch_words = rt::gpu::patch_buffer_words(n);
+    // Split (docs/shaders.md, "Splitting"): the regions' nodes, from the run's or a default of at least
+    // 65,536 and the roots; the params' capacity word is the Runner's.
+    const std::uint32_t roots = static_cast<std::uint32_t>(rt::gpu::split_roots(n - quads, quads));
+    std::uint32_t capacity = !split ? 0u : run.split_capacity != 0 ? run.split_capacity : 65536u;
+    capacity = split ? std::max(capacity, std::max(roots, 1u)) : 0u;
     const Device::Buffer b_params = make(sizeof params, params.data(), sizeof params);
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
     const Device::Buffer b_mesh = make(vertex_binding, mesh.vertices, vertex_bytes);
@@ -563,8 +641,22 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         std::memcpy(index_bytes + triangle_bytes + quad_bytes + std::size_t{n - quads} * 48,
                     mesh.adjacency + std::size_t{mesh.triangle_count} * 12, std::size_t{quads} * 96);
     }
-    const Device::Buffer b_patches = make(patch_words * 4, nullptr, 0);
     const Device::Buffer b_none = make(16, nullptr, 0);
+    Device::Buffer b_patches;
+    // The split area's words for a capacity, refused past the device's range with what the run needed.
+    const auto split_words = [&](std::uint64_t nodes) {
+        const std::uint64_t words = rt::gpu::split_buffer_words(n, nodes);
+        if (words * 4 > d.limits.maxStorageBufferRange)
+            throw Error("splitting needs " + std::to_string(nodes) +
+                        " nodes per region: binding 4 would be " + std::to_string(words * 4) +
+                        " bytes, past this device's maxStorageBufferRange (" +
+                        std::to_string(d.limits.maxStorageBufferRange) + ")");
+        if (run.max_split_capacity != 0 && nodes > run.max_split_capacity)
+            throw Error("splitting needs " + std::to_string(nodes) +
+                        " nodes per region, past the run's max_split_capacity (" +
+                        std::to_string(run.max_split_capacity) + ")");
+        return words;
+    };
 
     const auto descriptor_set = [&](VkBuffer vertices, VkBuffer indices) {
         VkDescriptorSetLayout layout = d.pipeline->set_layout();
@@ -582,11 +674,41 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     };
 
     Output out;
-    const VkDescriptorSet counts_set = descriptor_set(b_none.buffer, b_none.buffer);
-    out.counts_milliseconds = d.submit(
-        [&](VkCommandBuffer cmd) { d.pipeline->record_counts(cmd, counts_set, n, run.max_workgroups); });
+    const std::uint32_t* words = nullptr;
+    for (;;) { // once, or again with larger split regions until the levels fit them
+        const std::uint64_t patch_words = split ? split_words(capacity) : rt::gpu::patch_buffer_words(n);
+        b_patches = make(patch_words * 4, nullptr, 0);
+        static_cast<std::uint32_t*>(b_params.mapped)[pw::split_capacity] = capacity;
+        const VkDescriptorSet counts_set = descriptor_set(b_none.buffer, b_none.buffer);
+        const double ms = d.submit([&](VkCommandBuffer cmd) {
+            if (split)
+                d.pipeline->record_split_counts(cmd, counts_set, n, roots, b_patches.buffer, 0,
+                                                run.max_workgroups);
+            else
+                d.pipeline->record_counts(cmd, counts_set, n, run.max_workgroups);
+        });
+        out.counts_milliseconds += ms;
+        words = static_cast<const std::uint32_t*>(b_patches.mapped);
+        if (!split) break;
+        const std::uint32_t* header = words + rt::gpu::split_area_word(n);
+        if (header[rt::gpu::split_word::overflow] == 0) {
+            out.split_leaves = header[rt::gpu::split_word::parents];
+            out.split_capacity = capacity;
+            break;
+        }
+        // A level asked for more nodes than a region holds: grow to what it asked, at least twice (a deeper
+        // level may ask for more again), within the device's range, and run the levels again.
+        std::uint64_t grown = std::max<std::uint64_t>(header[rt::gpu::split_word::needed], 2ull * capacity);
+        if (run.max_split_capacity != 0 && grown > run.max_split_capacity &&
+            capacity < run.max_split_capacity)
+            grown = std::max<std::uint64_t>(run.max_split_capacity, header[rt::gpu::split_word::needed]);
+        split_words(grown); // throws past the device's range or the run's limit
+        capacity = static_cast<std::uint32_t>(grown);
+        owned.pop_back(); // b_patches, the last buffer made
+        d.destroy(b_patches);
+        vkResetDescriptorPool(d.device, d.descriptor_pool, 0);
+    }
     out.milliseconds = out.counts_milliseconds;
-    const auto* words = static_cast<const std::uint32_t*>(b_patches.mapped);
     out.patches.resize(n);
     if (n != 0)
         std::memcpy(static_cast<void*>(out.patches.data()), words, std::size_t{n} * sizeof(rt::PatchRecord));
@@ -618,9 +740,13 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         const std::uint32_t first = params[pw::first_patch], end = params[pw::end_patch],
                             triangles = n - quads;
         const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
-        d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
-                                end > quad_first ? end - quad_first : 0, run.max_workgroups, displace,
-                                vector);
+        if (split)
+            d.pipeline->record_split_emit(cmd, emit_set, out.split_leaves, triangle_end > first,
+                                          end > quad_first, run.max_workgroups, displace, vector);
+        else
+            d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
+                                    end > quad_first ? end - quad_first : 0, run.max_workgroups, displace,
+                                    vector);
     });
     out.vertices.resize(out.totals.vertices);
     if (!out.vertices.empty())

@@ -56,10 +56,13 @@ inline constexpr std::uint32_t displacement_factor_bound = 18;
 inline constexpr std::uint32_t height_map_width = 19; // 0 with height 0: an empty map (height 0)
 inline constexpr std::uint32_t height_map_height = 20;
 inline constexpr std::uint32_t height_map_address = 21; // rt::AddressMode; other values read as clamp
-inline constexpr std::uint32_t words = 22;
+// Pattern::uniform_split (docs/shaders.md, "Splitting"): the nodes each of the split area's two regions holds
+// (split_capacity below); 0 for the other patterns.
+inline constexpr std::uint32_t split_capacity = 22;
+inline constexpr std::uint32_t words = 23;
 } // namespace param_word
 static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
-              param_word::height_map_address + 1 == param_word::words);
+              param_word::split_capacity + 1 == param_word::words);
 
 // The bits of param_word::displacement_flags.
 namespace displacement_flag {
@@ -96,6 +99,63 @@ constexpr std::uint64_t patch_buffer_words(std::uint64_t patch_count) {
     return patch_count * patch_words + totals_words;
 }
 
+// Splitting on the GPU (Pattern::uniform_split; docs/shaders.md, "Splitting"; docs/algorithm.md §3.5): after
+// the totals binding 4 holds the split area, a header, then two regions of split_capacity nodes each. Level 0
+// is the roots (one per base triangle, two per quad: halves A and B), in patch order. Each level's count pass
+// decides every node (a leaf: its pattern and counts; a split node: its split pattern and children), the scan
+// numbers the children (prefix sums), and the expand pass writes them into the other region, a leaf as
+// itself, so that after split_depth_bound levels the last region holds every leaf in the CPU's walk order.
+// A level past the capacity sets split_word::overflow and writes nothing more: the host refuses the run or
+// runs it again with split_word::needed nodes (never a dropped patch).
+namespace split_word {                       // relative to split_area_word(patch_count)
+inline constexpr std::uint32_t level = 0;    // the level the next count pass decides
+inline constexpr std::uint32_t nodes = 1;    // the nodes of that level
+inline constexpr std::uint32_t parents = 2;  // the nodes of the level before (the expand pass's parents)
+inline constexpr std::uint32_t dispatch = 3; // 3 words: the indirect dispatch of the next count or expand
+inline constexpr std::uint32_t needed =
+    6; // the most nodes a level asked for (at least the capacity on overflow)
+inline constexpr std::uint32_t overflow = 7; // 1 when a level asked for more nodes than split_capacity
+inline constexpr std::uint32_t header_words = 8;
+} // namespace split_word
+// A node's words (split_node_word::words each). Corners in units of uniform_split_fixed_one (65534^2) on the
+// root, squared factors as uniform::SquaredFactor (low word first), pattern words as
+// rt::uniform_setup_word's.
+namespace split_node_word {
+inline constexpr std::uint32_t patch = 0;     // the patch (record index)
+inline constexpr std::uint32_t info = 1;      // split_node_info bits
+inline constexpr std::uint32_t corner = 2;    // 6 words: x0 y0 x1 y1 x2 y2
+inline constexpr std::uint32_t squared = 8;   // 6 words: s0 s1 s2, two words each
+inline constexpr std::uint32_t children = 14; // 1 for a leaf, its split pattern's triangles for a split node
+inline constexpr std::uint32_t pattern = 15; // 3 words: the leaf's pattern, or the split node's split pattern
+inline constexpr std::uint32_t vertices = 18; // a leaf's counts (0 for a split node)
+inline constexpr std::uint32_t triangles = 19;
+inline constexpr std::uint32_t first_child = 20; // the scan's exclusive prefix sums
+inline constexpr std::uint32_t first_vertex = 21;
+inline constexpr std::uint32_t first_triangle = 22;
+inline constexpr std::uint32_t words = 24;
+} // namespace split_node_word
+// The bits of split_node_word::info.
+namespace split_node_info {
+inline constexpr std::uint32_t depth_mask = 15; // the node's depth (the root's is 0)
+inline constexpr std::uint32_t limit_shift = 4; // its patch's depth limit (uniform_split_depth_limit), 4 bits
+inline constexpr std::uint32_t half_shift = 8;  // a quad's half (0: A, 1: B)
+inline constexpr std::uint32_t leaf = 1u << 9;  // set by the count pass on a leaf
+inline constexpr std::uint32_t culled = 1u << 10; // a root of a culled patch: no children, no leaf
+} // namespace split_node_info
+inline constexpr std::uint32_t split_workgroup = 64; // the roots, count, expand and records passes
+
+constexpr std::uint64_t split_area_word(std::uint64_t patch_count) {
+    return patch_buffer_words(patch_count);
+}
+// Words of binding 4 with the split area for capacity nodes per region.
+constexpr std::uint64_t split_buffer_words(std::uint64_t patch_count, std::uint64_t capacity) {
+    return split_area_word(patch_count) + split_word::header_words + 2 * capacity * split_node_word::words;
+}
+// The roots of level 0: one per base triangle, two per quad.
+constexpr std::uint64_t split_roots(std::uint64_t triangles, std::uint64_t quads) {
+    return triangles + 2 * quads;
+}
+
 // Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride
 // over the rest; rt::max_dispatch_workgroups is the one-dispatch limit every Vulkan and WebGPU device
 // allows).
@@ -109,15 +169,16 @@ constexpr std::uint32_t emit_workgroups(std::uint32_t patch_count,
     return patch_count < max_workgroups ? patch_count : max_workgroups;
 }
 
-// The params of a run over mesh's patches (base triangles, then quads) with options (the split and D3D11
-// patterns are CPU only: a host refuses them, see gpu_options_status), the emit range covering every patch.
+// The params of a run over mesh's patches (base triangles, then quads) with options (the D3D11 patterns are
+// CPU only: a host refuses them, see gpu_options_status), the emit range covering every patch; split_capacity
+// nodes per split region for Pattern::uniform_split.
 // Binding 3 then holds mesh.indices (3 per triangle) followed by mesh.quad_indices (4 per quad) and, for
 // PN-AEN or displacement, mesh.adjacency (12 per face triangle: the triangles, then each quad's two;
 // docs/shaders.md, "PN-AEN"), then with displacement the map's texels (texel_floats each); binding 2 holds
 // the mesh vertices, then with displacement and Displacement::directions the directions, then in vector mode
 // Displacement::tangents (docs/shaders.md, "Displacement").
-inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshView& mesh,
-                                                                    const PipelineOptions& options) {
+inline std::array<std::uint32_t, param_word::words>
+pipeline_params(const MeshView& mesh, const PipelineOptions& options, std::uint32_t split_capacity = 0) {
     const auto bits = [](float f) {
         std::uint32_t u;
         std::memcpy(&u, &f, 4);
@@ -138,6 +199,7 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
     p[param_word::pattern] = static_cast<std::uint32_t>(options.pattern);
     p[param_word::quad_count] = mesh.quad_count;
     p[param_word::quad_rule] = static_cast<std::uint32_t>(options.quad_rule);
+    p[param_word::split_capacity] = options.pattern == Pattern::uniform_split ? split_capacity : 0u;
     if (const Displacement* d = options.displacement; d != nullptr) {
         const bool empty = d->map.texels == nullptr || d->map.width == 0 || d->map.height == 0;
         p[param_word::displacement_flags] =
@@ -156,8 +218,8 @@ inline std::array<std::uint32_t, param_word::words> pipeline_params(const MeshVi
     return p;
 }
 
-// Whether the shaders run mesh with options: ok, or bad_option for what they do not run (the uniform_split
-// and D3D11 patterns, factors other than FactorMode::camera, MeshView::position_ids: the shaders order shared
+// Whether the shaders run mesh with options: ok, or bad_option for what they do not run (the D3D11
+// patterns, factors other than FactorMode::camera, MeshView::position_ids: the shaders order shared
 // edges by vertex index, so a seam between different indices would not get the CPU's bits; displacement by a
 // HeightFunction or a VectorFunction, which are CPU code) and for a QuadRule outside its enum, a
 // Displacement that displacement_valid refuses (as the CPU pipeline does: among others vector mode without
@@ -171,7 +233,8 @@ inline PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOpt
     if (options.quad_rule != QuadRule::longer_pair && options.quad_rule != QuadRule::as_labelled)
         return PipelineStatus::bad_option;
     if (options.dice.mode != FactorMode::camera) return PipelineStatus::bad_option;
-    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform)
+    if (options.pattern != Pattern::cp && options.pattern != Pattern::uniform &&
+        options.pattern != Pattern::uniform_split)
         return PipelineStatus::bad_option;
     const Surface surface = options.surface.surface;
     if (surface != Surface::flat && surface != Surface::pn_triangles && surface != Surface::phong &&
