@@ -280,10 +280,9 @@ BackendRequest backend_request_from(const Args& args, unsigned max) {
 
 // What --unwelded runs. Where the generated shaders run the options (rt::gpu::gpu_options_status), it is
 // their pipeline, so that every backend writes the same file: shared edges ordered by vertex index (the
-// shaders take no position ids, docs/shaders.md "Hosts"; docs/algorithm.md §7.3) and uniform density clamped
-// to [1, N] instead of split (§7.5), as `--stats`' `gpu` block. Elsewhere (the D3D11 patterns, --factor,
-// --edge-length) it is the library's unwelded output as `ctess serve`'s /api/tessellate computes it, on the
-// CPU only.
+// shaders take no position ids, docs/shaders.md "Hosts"; docs/algorithm.md §7.3), uniform density split at
+// any factor leaf by leaf (§7.5). Elsewhere (the D3D11 patterns, --factor, --edge-length) it is the
+// library's unwelded output as `ctess serve`'s /api/tessellate computes it, on the CPU only.
 struct UnweldedPlan {
     rt::MeshView view;
     rt::PipelineOptions options;
@@ -295,8 +294,7 @@ UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& 
     UnweldedPlan plan{view, options};
     rt::MeshView gpu_view = view;
     gpu_view.position_ids = nullptr;
-    rt::PipelineOptions gpu_options = options;
-    if (gpu_options.pattern == rt::Pattern::uniform_split) gpu_options.pattern = rt::Pattern::uniform;
+    const rt::PipelineOptions gpu_options = options;
     plan.gpu_status = rt::gpu::gpu_options_status(gpu_view, gpu_options);
     if (plan.gpu_status == rt::PipelineStatus::ok) {
         plan.view = gpu_view;
