@@ -9,7 +9,7 @@
 //   WGSL ctess_mesh_<max>.uniform.tables.bin  the same plus the uniform-density sections, for GLSL
 //   ctess_mesh_<max>.uniform.layout.json  the uniform blob's size and its uniform sections' offsets
 //   ctess_mesh_<max>_<pass>.comp    GLSL 4.50, one file per entry point (a GLSL module has one main)
-//   ctess_mesh_<max>.wgsl           WGSL, all four entry points in one module
+//   ctess_mesh_<max>.wgsl           WGSL, every entry point in one module
 //   ctess_mesh_<max>.layout.json    the blob's section offsets and size, the entry points and their workgroup
 //                                   sizes, and every generated constant (the hosts' and the viewer's layouts)
 // The shader templates (shaders/ctess_mesh.*) hold no layout number: the {{CONSTANTS}} placeholder becomes a

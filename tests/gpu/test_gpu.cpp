@@ -1038,9 +1038,8 @@ TEST_CASE(
 
 // The second WebGPU implementation (Dawn's Vulkan backend on SwiftShader) runs only this case: one scene per
 // feature, each against the CPU, in one node run (tests/gpu/CMakeLists.txt). The other backends run it too.
-TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displacement and vector "
-          "displacement, each "
-          "against the CPU",
+TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displacement, vector "
+          "displacement and splitting, each against the CPU",
           "[second-implementation]") {
     std::vector<std::pair<const char*, Scene>> scenes;
     scenes.emplace_back("one_cp", factor_sweep_grid(64, 24, rt::Surface::pn_triangles));
@@ -1060,6 +1059,11 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displ
     const DisplacedCase vector = displaced_case(64, rt::Surface::pn_triangles, rt::Pattern::cp,
                                                 rt::AddressMode::repeat, true, 0, true, 8);
     scenes.emplace_back("one_vector_displaced", vector.scene);
+    // Splitting: a small sweep above N with quads (depths 0 to 2) and the strip (depth 3).
+    Scene split = factor_sweep_grid(300, 4, rt::Surface::pn_triangles, 2);
+    split.options.pattern = rt::Pattern::uniform_split;
+    scenes.emplace_back("one_split", split);
+    scenes.emplace_back("one_split_strip", split_strip(rt::Surface::flat));
     const std::vector<PipelineOutput> outputs = run_gpu_batch(64, scenes);
     REQUIRE(outputs.size() == scenes.size());
     for (std::size_t i = 0; i < scenes.size(); ++i) {

@@ -83,8 +83,8 @@ enum class Pattern : std::uint32_t {
     cp = 0,
     uniform = 1, // uniform density, factors rounded and clamped to the table's N (the shaders' pass)
     // Uniform density at any factor up to 32,768 (uniform_split_max_factor): patches above N split with the
-    // table's own patterns (UniformSplit, docs/algorithm.md §3.5, §7.5); the same output as uniform up to N.
-    // CPU only: the shaders do not split yet, and its records carry no setup block.
+        // table's own patterns (UniformSplit, docs/algorithm.md §3.5, §7.5); the same output as uniform up to N.
+    // Its records carry no setup block; the shaders split too (docs/shaders.md, "Splitting").
     uniform_split = 2,
     // The D3D11 tessellator's triangle domain (docs/algorithm.md §5, §7.6) with the partitioning named, CPU
     // only: the fixed-function patterns ctess is measured against, on the same mesh and factors.
