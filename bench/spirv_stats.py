@@ -6,7 +6,8 @@
 For each pass of max 64 (the passes of ctess_mesh_64.layout.json, in its order): the instructions of the per-patch setup an emit workgroup runs (the call tree of
 `record_patch`, as glslang emits it, one function per GLSL function), and the whole pass after `spirv-opt -O`
 (everything inlined into main). Then, per pattern, the call tree of the function one invocation runs per
-output element (CP: patch_vertex / patch_triangle, uniform density: uniform_vertex / uniform_triangle): the
+output element (CP: patch_vertex / patch_triangle, uniform density: uniform_vertex / uniform_triangle, split:
+split_vertex / uniform_triangle of the leaf's pattern): the
 static instructions per output vertex and per output triangle, beside the per-patch setup above (surface
 evaluation excluded; loops counted once), and for the displaced passes the call tree of the displacement one
 invocation runs per output vertex (scalar: a height along the direction, vector: an RGB offset in the tangent
@@ -19,8 +20,8 @@ import sys
 import tempfile
 
 # The function one invocation runs per output element of a pass, per pattern (shaders/ctess_mesh.comp.glsl).
-ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex"},
-           "emit_triangles": {"cp": "patch_triangle", "uniform": "uniform_triangle"}}
+ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex", "uniform split": "split_vertex"},
+           "emit_triangles": {"cp": "patch_triangle", "uniform": "uniform_triangle", "uniform split": "uniform_triangle"}}
 # The displacement one invocation of a displaced pass runs per output vertex.
 DISPLACEMENT = {"emit_displaced_vertices": "displace_triangle_point",
                 "emit_displaced_quad_vertices": "displace_quad_point",

@@ -1589,6 +1589,16 @@ void ctess_split_expand() {
 // The leaves after the last scan: the region of the level before the header's, as many as its parents.
 uint split_leaves() { return patches[split_header(SPLIT_PARENTS)]; }
 uint split_leaf(uint i) { return split_node(patches[split_header(SPLIT_LEVEL)] - 1u, i); }
+// The first leaf of a patch t or after it (the leaves lie in patch order): the emit passes' range of leaves.
+uint split_first_leaf(uint t) {
+    uint low = 0u, high = split_leaves();
+    while (low < high) {
+        uint mid = (low + high) / 2u;
+        if (patches[split_leaf(mid) + NODE_PATCH] < t) low = mid + 1u;
+        else high = mid;
+    }
+    return low;
+}
 
 // Pass: each patch's counts from its leaves (they lie together, in patch order): the last leaf of a patch
 // writes the record's counts, from the first one's prefix sums to its own end.
@@ -1938,11 +1948,12 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     bool displace = displaced;
     if (displacement_on() != displaced) return;
     if (displaced && displacement_vector_mode() != vector_) return;
-    // Split (docs/shaders.md, "Splitting"): a workgroup per leaf instead of per patch, skipping the leaves of
-    // patches outside [first_patch, end); a leaf's vertices are its pattern's, mapped on the root.
+    // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
+    // per patch; a leaf's vertices are its pattern's, mapped on the root.
     bool split_ = split_pattern();
-    uint items = split_ ? split_leaves() : end;
-    for (uint item = (split_ ? 0u : first_patch) + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
+    uint start = split_ ? split_first_leaf(first_patch) : first_patch;
+    uint items = split_ ? split_first_leaf(end) : end;
+    for (uint item = start + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
         uint leaf = split_ ? split_leaf(item) : 0u;
         uint t = split_ ? patches[leaf + NODE_PATCH] : item;
         if (t < first_patch || t >= end) continue;
@@ -2071,8 +2082,9 @@ void emit_triangles(bool quad_pass) {
     bool uniform_ = uniform_pattern();
     // Split: a workgroup per leaf, its pattern's triangles after its own first vertex (as emit_vertices).
     bool split_ = split_pattern();
-    uint items = split_ ? split_leaves() : end;
-    for (uint item = (split_ ? 0u : first_patch) + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
+    uint start = split_ ? split_first_leaf(first_patch) : first_patch;
+    uint items = split_ ? split_first_leaf(end) : end;
+    for (uint item = start + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
         uint leaf = split_ ? split_leaf(item) : 0u;
         uint t = split_ ? patches[leaf + NODE_PATCH] : item;
         if (t < first_patch || t >= end) continue;

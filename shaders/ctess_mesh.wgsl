@@ -1757,6 +1757,16 @@ fn ctess_split_expand(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(nu
 // The leaves after the last scan: the region of the level before the header's, as many as its parents.
 fn split_leaves() -> u32 { return patches[split_header(SPLIT_PARENTS)]; }
 fn split_leaf(i: u32) -> u32 { return split_node(patches[split_header(SPLIT_LEVEL)] - 1u, i); }
+// The first leaf of a patch t or after it (the leaves lie in patch order): the emit passes' range of leaves.
+fn split_first_leaf(t: u32) -> u32 {
+    var low = 0u;
+    var high = split_leaves();
+    while (low < high) {
+        let mid = (low + high) / 2u;
+        if (patches[split_leaf(mid) + NODE_PATCH] < t) { low = mid + 1u; } else { high = mid; }
+    }
+    return low;
+}
 
 // Pass: each patch's counts from its leaves (they lie together, in patch order): the last leaf of a patch
 // writes the record's counts, from the first one's prefix sums to its own end.
@@ -1987,14 +1997,14 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
     let displace = displaced;
     if (displacement_on() != displaced) { return; }
     if (displaced && displacement_vector_mode() != vector_) { return; }
-    // Split (docs/shaders.md, "Splitting"): a workgroup per leaf instead of per patch, skipping the leaves of
-    // patches outside [first_patch, end); a leaf's vertices are its pattern's, mapped on the root.
+    // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
+    // per patch; a leaf's vertices are its pattern's, mapped on the root.
     let split_ = split_pattern();
     var items = end;
     var start = first_patch;
-    if (split_) {
-        items = split_leaves();
-        start = 0u;
+    if (split_) { // the leaves of the patches in [first_patch, end)
+        start = split_first_leaf(first_patch);
+        items = split_first_leaf(end);
     }
     for (var item = start + wid.x; item < items; item += groups.x) {
         // (select() would read both sides: the split words only exist in a split run.)
@@ -2168,9 +2178,9 @@ fn emit_triangles(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<
     let split_ = split_pattern();
     var items = end;
     var start = first_patch;
-    if (split_) {
-        items = split_leaves();
-        start = 0u;
+    if (split_) { // the leaves of the patches in [first_patch, end)
+        start = split_first_leaf(first_patch);
+        items = split_first_leaf(end);
     }
     for (var item = start + wid.x; item < items; item += groups.x) {
         var leaf = 0u;

@@ -201,7 +201,7 @@ export class MeshPipeline {
 
     // The whole pipeline: setup (or options.setup = {entry, groups}, an extra entry point) and the prefix sum, the
     // totals recounted from the records and checked against the layout's limits, then both emit passes in batches
-    // of about options.batchVertices output vertices (default: one batch), at most options.maxWorkgroups workgroups
+    // of about options.batchVertices output vertices (default: one batch; a split run takes one), at most options.maxWorkgroups workgroups
     // per dispatch. options.countsOnly stops after the counts. Resolves to {patches (the records and totals, a
     // Uint32Array), vertexCount, triangleCount (the prefix sum's totals), vertices, indices (GPUBuffers, or null
     // with countsOnly), milliseconds}. indexUsage and vertexUsage add usage flags to the output buffers (e.g.
@@ -339,7 +339,9 @@ export class MeshPipeline {
             const indices = this.storage(null, triangleCount * 3, options.indexUsage ?? 0);
             // The emit passes' patch range (PARAM_FIRST_PATCH, PARAM_END_PATCH), one submit per batch, as a host
             // that streams a large mesh would use it.
-            const batch = options.batchVertices ?? Infinity;
+            // A split run emits in one batch: each batch's passes take a workgroup per leaf of the whole mesh (the
+            // leaves of its patches do the work), so batches would add workgroups, not split them.
+            const batch = split ? Infinity : options.batchVertices ?? Infinity;
             const batchParams = params.slice();
             batchParams[C.PARAM_SPLIT_CAPACITY] = capacity; // the split regions the counts were made in
             for (let first = first0; first < end0;) {
@@ -350,7 +352,7 @@ export class MeshPipeline {
                 batchParams[C.PARAM_END_PATCH] = end;
                 this.device.queue.writeBuffer(bParams, 0, batchParams);
                 // The batch's triangles and quads go to their own entry points (the quads are the last patches); a
-                // split run's passes take a workgroup per leaf, skipping the leaves of patches outside the batch.
+                // split run's passes take a workgroup per leaf (of the patches in the pass's range).
                 const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
                     .map((count) => Math.min(count && split ? splitLeaves : count, maxGroups));
                 const passes = [[emitVertices, groups[0]], [emitTriangles, groups[0]],

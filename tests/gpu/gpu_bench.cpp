@@ -1,8 +1,9 @@
 // ctess_gpu_bench: times the GPU mesh pipeline on lavapipe (Vulkan) and Dawn (WebGPU on GLES/llvmpipe), for
-// one or more shader builds in the same run, on the 1,152-patch factor sweep and a 50 k-patch grid. Not a
-// test: docs/shaders.md quotes its output.
+// one or more shader builds in the same run, on the 1,152-patch factor sweep and a 50 k-patch grid; with
+// --split, uniform density clamped to N beside split (docs/shaders.md, "Splitting") on scenes whose deepest
+// leaves are at depth 0, 1 and 2, for the first build. Not a test: docs/shaders.md quotes its output.
 //
-//   ctess_gpu_bench LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]
+//   ctess_gpu_bench [--split] LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]
 //
 // Each build runs each scene once to warm the driver's shader cache, then `repeats` times; the median of the
 // submit-to-completion times is printed. Every build's vertices and indices must equal the CPU pipeline's
@@ -16,6 +17,7 @@
 
 #include <ctess/runtime/cp/table_set.hpp>
 
+#include "gpu_checks.hpp"
 #include "gpu_pipeline.hpp"
 
 using namespace ctess;
@@ -44,12 +46,84 @@ bool same_output(PipelineOutput cpu, PipelineOutput gpu) {
     return c.equal();
 }
 
+// The uniform pattern clamped to N beside split, on scenes whose deepest leaves are at depth 0, 1 and 2: per
+// backend the median times (lavapipe: the counting submission, with the split passes, and the emit one apart)
+// and the split run's time relative to the clamped one's, per output triangle too.
+int split_table(const Build& build, vulkan::Runner& runner, int repeats) {
+    struct Case {
+        const char* name;
+        Scene scene;
+    };
+    std::vector<Case> cases;
+    for (const float dice : {12.0f, 6.0f}) { // deepest leaves at depth 0 and 1
+        Scene grid = factor_sweep_grid(64, 158, rt::Surface::pn_triangles);
+        grid.options.dice.dice_rate = dice;
+        cases.push_back(
+            {dice == 12.0f ? "50 k-patch grid, DiceRate 12" : "50 k-patch grid, DiceRate 6", grid});
+    }
+    // Depth 2 needs factors above N^2 = 256: on 50 k patches, tens of millions of triangles.
+    cases.push_back({"288-patch sweep to 1,800", factor_sweep_grid(600, 12, rt::Surface::pn_triangles)});
+    std::printf("\n| scene | depth of the deepest leaf | backend | pattern | patches | leaves | triangles | "
+                "median ms (of "
+                "%d) | counting, ms | emit, ms | split / clamped time | per triangle |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+                repeats);
+    for (Case& c : cases) {
+        PipelineOutput cpu[2];
+        std::uint32_t deepest = 0, leaves = 0;
+        for (int k = 0; k < 2; ++k) {
+            c.scene.options.pattern = k == 0 ? rt::Pattern::uniform : rt::Pattern::uniform_split;
+            cpu[k] = run_cpu(rt::cp_tables_64, c.scene);
+        }
+        const std::array<std::uint32_t, 5> depths = split_depths(c.scene, cpu[1]);
+        for (std::uint32_t d = 0; d < depths.size(); ++d)
+            if (depths[d] != 0) deepest = d, leaves += depths[d];
+        for (const char* backend : {"lavapipe", "Dawn"}) {
+            std::vector<double> ms[2], counts_ms[2];
+            for (int r = -1; r < repeats; ++r)
+                for (int k = 0; k < 2; ++k) {
+                    c.scene.options.pattern = k == 0 ? rt::Pattern::uniform : rt::Pattern::uniform_split;
+                    const PipelineOutput gpu = backend[0] == 'l'
+                                                   ? run_vulkan(runner, c.scene)
+                                                   : run_dawn(CTESS_NODE, CTESS_RUN_WGSL, build.dir, 64,
+                                                              {{&c.scene, std::string(CTESS_WORK_DIR) +
+                                                                              "/bench_split_" + build.label}})
+                                                         .front();
+                    if (r < 0 && !same_output(cpu[k], gpu)) return 1;
+                    if (r >= 0)
+                        ms[k].push_back(gpu.milliseconds), counts_ms[k].push_back(gpu.counts_milliseconds);
+                }
+            for (int k = 0; k < 2; ++k) {
+                const double t = median(ms[k]), counting = median(counts_ms[k]);
+                char parts[64] = "— | —";
+                if (counting >= 0) std::snprintf(parts, sizeof parts, "%.1f | %.1f", counting, t - counting);
+                char ratio[64] = "1 | 1";
+                if (k == 1)
+                    std::snprintf(ratio, sizeof ratio, "%.2f | %.2f", t / median(ms[0]),
+                                  (t / cpu[1].total_triangles()) /
+                                      (median(ms[0]) / cpu[0].total_triangles()));
+                std::printf("| %s | %u | %s | %s | %u | %u | %u | %.1f | %s | %s |\n", c.name, deepest,
+                            backend, k == 0 ? "uniform (clamped to N)" : "uniform split",
+                            c.scene.patch_count(), k == 0 ? c.scene.patch_count() : leaves,
+                            cpu[k].total_triangles(), t, parts, ratio);
+            }
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     std::vector<Build> builds;
+    bool split_only = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
+        if (arg == "--split") {
+            split_only = true;
+            continue;
+        }
         const std::size_t eq = arg.find('=');
         if (eq == std::string::npos) {
             std::fprintf(stderr, "usage: ctess_gpu_bench LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]\n");
@@ -74,6 +148,7 @@ int main(int argc, char** argv) {
     try {
         std::vector<std::unique_ptr<vulkan::Runner>> runners;
         for (const Build& b : builds) runners.push_back(std::make_unique<vulkan::Runner>(b.dir, 64));
+        if (split_only) return split_table(builds.front(), *runners.front(), repeats);
         std::printf(
             "| scene | patches | vertices | triangles | backend | build | median ms (of %d) | of which "
             "setup + prefix sum, ms | emit passes, ms |\n"

@@ -2,6 +2,7 @@
 // spread of the edge factors over [1, max].
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -10,9 +11,31 @@
 #include <tuple>
 #include <vector>
 
+#include <ctess/runtime/uniform/split.hpp>
+
 #include "pipeline_output.hpp"
 
 namespace ctess::gpu_test {
+
+// Splitting (docs/shaders.md, "Splitting"): how many leaves of each depth a CPU output of
+// Pattern::uniform_split has, from its records' factors (each quad half is a split of its own).
+inline std::array<std::uint32_t, 5> split_depths(const Scene& scene, const PipelineOutput& cpu) {
+    std::array<std::uint32_t, 5> by_depth{};
+    const std::size_t triangles = scene.indices.size() / 3;
+    const auto* records = reinterpret_cast<const rt::PatchRecord*>(cpu.patches.data());
+    for (std::size_t p = 0; p < scene.patch_count(); ++p)
+        for (unsigned half = 0; half < (p < triangles ? 1u : 2u); ++half) {
+            const auto factor = [&](unsigned k) {
+                return static_cast<float>(half == 0 ? records[p].uniform_factor(k)
+                                                    : records[p].setup[rt::quad_setup_word::b_token + k]);
+            };
+            if (factor(0) == 0) continue; // culled
+            rt::UniformSplit(rt::uniform_tables, factor(0), factor(1), factor(2),
+                             rt::uniform_pipeline_options)
+                .for_each_leaf([&](const rt::UniformSplit::Leaf& leaf) { ++by_depth[leaf.depth]; });
+        }
+    return by_depth;
+}
 
 struct CrackReport {
     std::size_t shared_edges = 0;        // base edges used by exactly two patches

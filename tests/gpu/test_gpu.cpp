@@ -173,26 +173,6 @@ void check_watertight(unsigned max_factor, rt::Surface surface, rt::Pattern patt
 } // namespace
 
 namespace {
-// Splitting (docs/shaders.md, "Splitting"): the depths the leaves of a CPU output reach, from its records'
-// factors (each quad half is a split of its own).
-std::array<std::uint32_t, 5> split_depths(const Scene& scene, const PipelineOutput& cpu) {
-    std::array<std::uint32_t, 5> by_depth{};
-    const std::size_t triangles = scene.indices.size() / 3;
-    const auto* records = reinterpret_cast<const rt::PatchRecord*>(cpu.patches.data());
-    for (std::size_t p = 0; p < scene.patch_count(); ++p)
-        for (unsigned half = 0; half < (p < triangles ? 1u : 2u); ++half) {
-            const auto factor = [&](unsigned k) {
-                return static_cast<float>(half == 0 ? records[p].uniform_factor(k)
-                                                    : records[p].setup[rt::quad_setup_word::b_token + k]);
-            };
-            if (factor(0) == 0) continue; // culled
-            rt::UniformSplit(rt::uniform_tables, factor(0), factor(1), factor(2),
-                             rt::uniform_pipeline_options)
-                .for_each_leaf([&](const rt::UniformSplit::Leaf& leaf) { ++by_depth[leaf.depth]; });
-        }
-    return by_depth;
-}
-
 // A long thin triangle whose long edges split three levels deep at N = 16 (a piece of a root edge above
 // 16.5 x 256 splits again at depth 2): width 1 / 2,500, seen from above, its long edges about 4,400
 // DiceRates, its short one 1 (about 75,000 triangles).
@@ -248,6 +228,46 @@ TEST_CASE(
         CHECK(c.equal());
     }
     for (std::size_t j = 0; j < 4; ++j) CHECK(depths[j] > 0);
+}
+
+TEST_CASE("Vulkan host, uniform split: an emit range writes the leaves of its patches, and nothing else",
+          "[vulkan]") {
+    // The emit passes find the range's leaves by a binary search of the leaves' patches (docs/shaders.md,
+    // "Splitting"); 7 workgroups a dispatch stride over them.
+    Scene sweep = factor_sweep_grid(400, 8, rt::Surface::flat, 3);
+    sweep.options.pattern = rt::Pattern::uniform_split;
+    const PipelineOutput cpu = run_cpu(rt::cp_tables_64, sweep);
+    auto params = pipeline_params(sweep);
+    const std::uint32_t first = 60, end = 100; // triangles and quads
+    REQUIRE(end > sweep.indices.size() / 3);
+    params[rt::gpu::param_word::first_patch] = first;
+    params[rt::gpu::param_word::end_patch] = end;
+    const vulkan::Output gpu = runner(64).tessellate(sweep.view(), params, {7});
+    const auto* records = reinterpret_cast<const rt::PatchRecord*>(cpu.patches.data());
+    const std::size_t v0 = records[first].first_vertex,
+                      v1 = records[end - 1].first_vertex + records[end - 1].vertex_count,
+                      t0 = records[first].first_triangle,
+                      t1 = records[end - 1].first_triangle + records[end - 1].triangle_count;
+    REQUIRE(gpu.vertices.size() * vertex_words == cpu.vertices.size());
+    REQUIRE(gpu.indices.size() == cpu.indices.size());
+    const auto* words = reinterpret_cast<const std::uint32_t*>(gpu.vertices.data());
+    std::size_t inside_wrong = 0, outside_written = 0;
+    for (std::size_t v = 0; v < gpu.vertices.size(); ++v)
+        for (std::size_t k = 0; k < 2; ++k) { // the exact words: base weights
+            const std::uint32_t w = words[v * vertex_words + k];
+            if (v >= v0 && v < v1)
+                inside_wrong += w != cpu.vertices[v * vertex_words + k];
+            else
+                outside_written += w != 0;
+        }
+    for (std::size_t i = 0; i < gpu.indices.size(); ++i)
+        if (i >= 3 * t0 && i < 3 * t1)
+            inside_wrong += gpu.indices[i] != cpu.indices[i];
+        else
+            outside_written += gpu.indices[i] != 0;
+    CHECK(v1 - v0 > 1000);
+    CHECK(inside_wrong == 0);
+    CHECK(outside_written == 0);
 }
 
 TEST_CASE("GPU uniform split: a level past the run's node limit is an error naming the nodes, never a short "
