@@ -1599,6 +1599,9 @@ uint split_first_leaf(uint t) {
     }
     return low;
 }
+// The leaves of the patches in [first, end): no search at the ends of the mesh.
+uint split_range_start(uint first) { return first == 0u ? 0u : split_first_leaf(first); }
+uint split_range_end(uint end) { return end >= patch_count() ? split_leaves() : split_first_leaf(end); }
 
 // Pass: each patch's counts from its leaves (they lie together, in patch order): the last leaf of a patch
 // writes the record's counts, from the first one's prefix sums to its own end.
@@ -1951,8 +1954,8 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
     // per patch; a leaf's vertices are its pattern's, mapped on the root.
     bool split_ = split_pattern();
-    uint start = split_ ? split_first_leaf(first_patch) : first_patch;
-    uint items = split_ ? split_first_leaf(end) : end;
+    uint start = split_ ? split_range_start(first_patch) : first_patch;
+    uint items = split_ ? split_range_end(end) : end;
     for (uint item = start + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
         uint leaf = split_ ? split_leaf(item) : 0u;
         uint t = split_ ? patches[leaf + NODE_PATCH] : item;
@@ -2082,8 +2085,8 @@ void emit_triangles(bool quad_pass) {
     bool uniform_ = uniform_pattern();
     // Split: a workgroup per leaf, its pattern's triangles after its own first vertex (as emit_vertices).
     bool split_ = split_pattern();
-    uint start = split_ ? split_first_leaf(first_patch) : first_patch;
-    uint items = split_ ? split_first_leaf(end) : end;
+    uint start = split_ ? split_range_start(first_patch) : first_patch;
+    uint items = split_ ? split_range_end(end) : end;
     for (uint item = start + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
         uint leaf = split_ ? split_leaf(item) : 0u;
         uint t = split_ ? patches[leaf + NODE_PATCH] : item;

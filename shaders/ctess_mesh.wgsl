@@ -1767,6 +1767,15 @@ fn split_first_leaf(t: u32) -> u32 {
     }
     return low;
 }
+// The leaves of the patches in [first, end): no search at the ends of the mesh.
+fn split_range_start(first: u32) -> u32 {
+    if (first == 0u) { return 0u; }
+    return split_first_leaf(first);
+}
+fn split_range_end(end: u32) -> u32 {
+    if (end >= patch_count()) { return split_leaves(); }
+    return split_first_leaf(end);
+}
 
 // Pass: each patch's counts from its leaves (they lie together, in patch order): the last leaf of a patch
 // writes the record's counts, from the first one's prefix sums to its own end.
@@ -2003,8 +2012,8 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
     var items = end;
     var start = first_patch;
     if (split_) { // the leaves of the patches in [first_patch, end)
-        start = split_first_leaf(first_patch);
-        items = split_first_leaf(end);
+        start = split_range_start(first_patch);
+        items = split_range_end(end);
     }
     for (var item = start + wid.x; item < items; item += groups.x) {
         // (select() would read both sides: the split words only exist in a split run.)
@@ -2179,8 +2188,8 @@ fn emit_triangles(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<
     var items = end;
     var start = first_patch;
     if (split_) { // the leaves of the patches in [first_patch, end)
-        start = split_first_leaf(first_patch);
-        items = split_first_leaf(end);
+        start = split_range_start(first_patch);
+        items = split_range_end(end);
     }
     for (var item = start + wid.x; item < items; item += groups.x) {
         var leaf = 0u;

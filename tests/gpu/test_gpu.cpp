@@ -442,7 +442,9 @@ void check_mixed_torus(unsigned max_factor, rt::Surface surface, rt::Pattern pat
     Scene scene = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed), surface);
     scene.options.pattern = pattern;
     scene.options.quad_rule = rule;
-    const char* work = pattern == rt::Pattern::uniform ? "torus_uniform" : "torus";
+    const char* work = pattern == rt::Pattern::uniform         ? "torus_uniform"
+                       : pattern == rt::Pattern::uniform_split ? "torus_split"
+                                                               : "torus";
     const PipelineOutput gpu = run_gpu(max_factor, scene, work);
     std::printf("%s, max %u, %s, %s mixed torus (%zu quads, %zu triangles): %u vertices, %u triangles\n",
                 backend_name(), max_factor, pattern_name(pattern), surface_name(surface),
@@ -456,11 +458,12 @@ void check_mixed_torus(unsigned max_factor, rt::Surface surface, rt::Pattern pat
 }
 } // namespace
 
-TEST_CASE("GPU crack test, quads: a mixed torus stays closed on the GPU, both quad rules, both patterns") {
+TEST_CASE("GPU crack test, quads: a mixed torus stays closed on the GPU, both quad rules, every pattern") {
     check_mixed_torus(64, rt::Surface::pn_triangles, rt::Pattern::cp, rt::QuadRule::longer_pair);
     check_mixed_torus(64, rt::Surface::phong, rt::Pattern::cp, rt::QuadRule::as_labelled);
     check_mixed_torus(256, rt::Surface::flat, rt::Pattern::uniform, rt::QuadRule::longer_pair);
     check_mixed_torus(64, rt::Surface::pn_triangles, rt::Pattern::uniform, rt::QuadRule::as_labelled);
+    check_mixed_torus(64, rt::Surface::phong, rt::Pattern::uniform_split, rt::QuadRule::longer_pair);
 }
 
 #if defined(CTESS_GPU_HAVE_MODELS)
@@ -489,15 +492,20 @@ std::size_t position_bit_differences(const PipelineOutput& cpu, const PipelineOu
 
 } // namespace
 
-TEST_CASE("GPU PN-AEN: split-normal icosphere with adjacency, CP and uniform, max 64 and 256: the CPU's "
-          "output, watertight") {
+TEST_CASE(
+    "GPU PN-AEN: split-normal icosphere with adjacency, CP and uniform (and split), max 64 and 256: the "
+    "CPU's output, watertight") {
     for (unsigned max_factor : {64u, 256u}) {
-        for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+        for (rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform, rt::Pattern::uniform_split}) {
+            if (pattern == rt::Pattern::uniform_split && max_factor == 256)
+                continue; // the same split as 64's
             const Scene scene = aen_scene(max_factor, rt::Surface::pn_aen, pattern);
             INFO("max " << max_factor << ", " << pattern_name(pattern));
             REQUIRE(scene.adjacency.size() == 12 * std::size_t{scene.patch_count()});
-            const PipelineOutput gpu =
-                run_gpu(max_factor, scene, pattern == rt::Pattern::uniform ? "aen_uniform" : "aen");
+            const PipelineOutput gpu = run_gpu(max_factor, scene,
+                                               pattern == rt::Pattern::uniform         ? "aen_uniform"
+                                               : pattern == rt::Pattern::uniform_split ? "aen_split"
+                                                                                       : "aen");
             const PipelineOutput cpu = run_cpu(tables_for(max_factor), scene);
             const Comparison c = compare(cpu, gpu);
             const CrackReport r = crack_check(scene, gpu);
