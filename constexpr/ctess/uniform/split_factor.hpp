@@ -147,9 +147,20 @@ constexpr bool below_half_past(SquaredFactor s, std::uint32_t n) noexcept {
     return s < half_below_squared(n + 1);
 }
 
-// floor(f + 1/2) clamped to [1, n] (n <= 255, a leaf's table factor) by a binary search of the squares
-// half_below_squared(k), without a square root: the largest k in [1, n] with s >= half_below_squared(k).
+// floor(f + 1/2) clamped to [1, n] (n <= 255, a leaf's table factor): the largest k in [1, n] with
+// s >= half_below_squared(k). At run time from a float guess (within one of k, whatever it rounds) corrected
+// by comparisons; in constant expressions (and in the shaders, which have no fast square root to rely on) by
+// a binary search of those squares.
 constexpr std::uint32_t rounded_factor_within(SquaredFactor s, std::uint32_t n) noexcept {
+    if (!std::is_constant_evaluated()) {
+        const float guess = std::sqrt(static_cast<float>(s)) * (1.0f / 65536.0f) + 0.5f;
+        std::uint32_t k = guess >= static_cast<float>(n) ? n
+                          : guess < 1.0f                 ? 1u
+                                                         : static_cast<std::uint32_t>(guess);
+        while (k > 1 && s < half_below_squared(k)) --k;
+        while (k < n && s >= half_below_squared(k + 1)) ++k;
+        return k;
+    }
     std::uint32_t low = 1, high = n; // the answer lies in [low, high]
     while (low < high) {
         const std::uint32_t mid = (low + high + 1) / 2;
