@@ -7,7 +7,7 @@ For each pass of max 64 (the passes of ctess_mesh_64.layout.json, in its order):
 `record_patch`, as glslang emits it, one function per GLSL function), and the whole pass after `spirv-opt -O`
 (everything inlined into main). Then, per pattern, the call tree of the function one invocation runs per
 output element (CP: patch_vertex / patch_triangle, uniform density: uniform_vertex / uniform_triangle, split:
-split_vertex / uniform_triangle of the leaf's pattern): the
+split_vertex in the split_points pass / uniform_triangle of the leaf's pattern): the
 static instructions per output vertex and per output triangle, beside the per-patch setup above (surface
 evaluation excluded; loops counted once), and for the displaced passes the call tree of the displacement one
 invocation runs per output vertex (scalar: a height along the direction, vector: an RGB offset in the tangent
@@ -20,7 +20,9 @@ import sys
 import tempfile
 
 # The function one invocation runs per output element of a pass, per pattern (shaders/ctess_mesh.comp.glsl).
-ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex", "uniform split": "split_vertex"},
+# A split leaf's vertex is split_vertex in the split_points pass (its vertex passes read the result).
+ELEMENT = {"emit_vertices": {"cp": "patch_vertex", "uniform": "uniform_vertex"},
+           "split_points": {"uniform split": "split_vertex"},
            "emit_triangles": {"cp": "patch_triangle", "uniform": "uniform_triangle", "uniform split": "uniform_triangle"}}
 # The displacement one invocation of a displaced pass runs per output vertex.
 DISPLACEMENT = {"emit_displaced_vertices": "displace_triangle_point",

@@ -19,7 +19,8 @@ layout(std430, set = 0, binding = 1) readonly buffer Tables { uint tables[]; };
 layout(std430, set = 0, binding = 2) readonly buffer MeshVertices { float mesh_vertices[]; };
 layout(std430, set = 0, binding = 3) readonly buffer MeshIndices { uint mesh_indices[]; };
 layout(std430, set = 0, binding = 4) buffer Patches { uint patches[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer OutVertices { uint out_vertices[]; };
+// Binding 5 is read only by the split pattern's vertex passes: the base weights ctess_split_points wrote.
+layout(std430, set = 0, binding = 5) buffer OutVertices { uint out_vertices[]; };
 layout(std430, set = 0, binding = 6) writeonly buffer OutIndices { uint out_indices[]; };
 
 uint patch_count() { return params[PARAM_PATCH_COUNT]; }
@@ -1515,24 +1516,31 @@ void ctess_split_count() {
 // slots in the next level, a leaf's first vertex and triangle), then the header moves to the next level: its
 // nodes are the children, at most PARAM_SPLIT_CAPACITY (beyond it SPLIT_OVERFLOW and no node).
 shared uvec3 split_sum[SCAN_GROUP];
+shared uint split_wrapped;
 void ctess_split_scan() {
     uint level = patches[split_header(SPLIT_LEVEL)], n = patches[split_header(SPLIT_NODES)];
     uint lane = gl_LocalInvocationID.x;
+    if (lane == 0u) split_wrapped = 0u;
     uint per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
     uint begin = min(n, lane * per), end = min(n, begin + per);
     uvec3 sum = uvec3(0u);
+    bool wrapped = false; // the children's count past 32 bits: an overflow, never a wrapped level
     for (uint i = begin; i < end; ++i) {
         uint node = split_node(level, i);
-        sum += uvec3(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
+        uint children = patches[node + NODE_CHILDREN];
+        wrapped = wrapped || sum.x + children < sum.x;
+        sum += uvec3(children, patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
     }
     split_sum[lane] = sum;
     barrier();
     for (uint d = 1u; d < SCAN_GROUP; d <<= 1) {
         uvec3 add = lane >= d ? split_sum[lane - d] : uvec3(0u);
         barrier();
+        wrapped = wrapped || split_sum[lane].x + add.x < add.x;
         split_sum[lane] += add;
         barrier();
     }
+    if (wrapped) atomicOr(split_wrapped, 1u);
     uvec3 base = split_sum[lane] - sum;
     for (uint i = begin; i < end; ++i) {
         uint node = split_node(level, i);
@@ -1541,8 +1549,12 @@ void ctess_split_scan() {
         patches[node + NODE_FIRST_TRIANGLE] = base.z;
         base += uvec3(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
     }
+    // Every lane has read the header and written its nodes before the header moves on.
+    memoryBarrierBuffer();
+    barrier();
     if (lane == SCAN_GROUP - 1u) {
-        uint children = split_sum[SCAN_GROUP - 1u].x, capacity = params[PARAM_SPLIT_CAPACITY];
+        uint children = split_wrapped != 0u ? 0xFFFFFFFFu : split_sum[SCAN_GROUP - 1u].x;
+        uint capacity = params[PARAM_SPLIT_CAPACITY];
         bool over = children > capacity || patches[split_header(SPLIT_OVERFLOW)] != 0u;
         patches[split_header(SPLIT_NEEDED)] = max(patches[split_header(SPLIT_NEEDED)], children);
         patches[split_header(SPLIT_OVERFLOW)] = over ? 1u : 0u;
@@ -2024,7 +2036,9 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uint side = i < vertices_a ? 0u : 1u;
             uint local = side == 0u ? i : i - vertices_a;
-            uvec2 d = split_ ? split_vertex(leaf, local)
+            // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass).
+            uint o = (first + i) * VERTEX_WORDS;
+            uvec2 d = split_ ? uvec2(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V])
                       : uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local);
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
             // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
@@ -2065,7 +2079,25 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
             else if (displace && vector_) displace_triangle_vector(dp, w3, fixed_weight(w3[1]), fixed_weight(w3[2]), sp);
             else if (displace && quad) displace_quad_point(dp, out_uv.x, out_uv.y, sp);
             else if (displace) displace_triangle_point(dp, w3, sp);
-            store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
+            store_vertex(o, out_uv.x, out_uv.y, sp);
+        }
+    }
+}
+
+// Split pattern, before the vertex passes: every leaf vertex's base weights (its pattern's point mapped on the
+// root, to_base_weights) into the output vertex's first two words, a workgroup per leaf of the emit range. The
+// vertex passes read them there, so that the other patterns' vertex passes carry no split code (a software
+// adapter runs an untaken branch at full cost).
+void ctess_split_points() {
+    if (!split_pattern()) return;
+    uint end = min(params[PARAM_END_PATCH], patch_count());
+    for (uint item = split_range_start(params[PARAM_FIRST_PATCH]) + gl_WorkGroupID.x; item < split_range_end(end);
+         item += gl_NumWorkGroups.x) {
+        uint leaf = split_leaf(item), first = patches[leaf + NODE_FIRST_VERTEX];
+        for (uint i = gl_LocalInvocationID.x; i < patches[leaf + NODE_VERTICES]; i += gl_WorkGroupSize.x) {
+            uvec2 d = split_vertex(leaf, i);
+            out_vertices[(first + i) * VERTEX_WORDS + VERTEX_U] = d.x;
+            out_vertices[(first + i) * VERTEX_WORDS + VERTEX_V] = d.y;
         }
     }
 }

@@ -1675,18 +1675,23 @@ fn ctess_split_count(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num
 // slots in the next level, a leaf's first vertex and triangle), then the header moves to the next level: its
 // nodes are the children, at most PARAM_SPLIT_CAPACITY (beyond it SPLIT_OVERFLOW and no node).
 var<workgroup> split_sum: array<vec3<u32>, SCAN_GROUP>;
+var<workgroup> split_wrapped: atomic<u32>;
 @compute @workgroup_size(SCAN_GROUP)
 fn ctess_split_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
     let level = patches[split_header(SPLIT_LEVEL)];
     let n = patches[split_header(SPLIT_NODES)];
     let lane = lid.x;
+    if (lane == 0u) { atomicStore(&split_wrapped, 0u); }
     let per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
     let begin = min(n, lane * per);
     let end = min(n, begin + per);
     var sum = vec3<u32>(0u);
+    var wrapped = false; // the children's count past 32 bits: an overflow, never a wrapped level
     for (var i = begin; i < end; i++) {
         let node = split_node(level, i);
-        sum += vec3<u32>(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
+        let children = patches[node + NODE_CHILDREN];
+        wrapped = wrapped || sum.x + children < sum.x;
+        sum += vec3<u32>(children, patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
     }
     split_sum[lane] = sum;
     workgroupBarrier();
@@ -1694,9 +1699,11 @@ fn ctess_split_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
         var add = vec3<u32>(0u);
         if (lane >= d) { add = split_sum[lane - d]; }
         workgroupBarrier();
+        wrapped = wrapped || split_sum[lane].x + add.x < add.x;
         split_sum[lane] += add;
         workgroupBarrier();
     }
+    if (wrapped) { atomicOr(&split_wrapped, 1u); }
     var base = split_sum[lane] - sum;
     for (var i = begin; i < end; i++) {
         let node = split_node(level, i);
@@ -1705,8 +1712,12 @@ fn ctess_split_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
         patches[node + NODE_FIRST_TRIANGLE] = base.z;
         base += vec3<u32>(patches[node + NODE_CHILDREN], patches[node + NODE_VERTICES], patches[node + NODE_TRIANGLES]);
     }
+    // Every lane has read the header and written its nodes before the header moves on.
+    storageBarrier();
+    workgroupBarrier();
     if (lane == SCAN_GROUP - 1u) {
-        let children = split_sum[SCAN_GROUP - 1u].x;
+        var children = split_sum[SCAN_GROUP - 1u].x;
+        if (atomicLoad(&split_wrapped) != 0u) { children = 0xFFFFFFFFu; }
         let over = children > params[PARAM_SPLIT_CAPACITY] || patches[split_header(SPLIT_OVERFLOW)] != 0u;
         patches[split_header(SPLIT_NEEDED)] = max(patches[split_header(SPLIT_NEEDED)], children);
         patches[split_header(SPLIT_OVERFLOW)] = select(0u, 1u, over);
@@ -2093,7 +2104,11 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
             let side = select(1u, 0u, i < vertices_a);
             let local = select(i - vertices_a, i, side == 0u);
             var d: vec2<u32>;
-            if (split_) { d = split_vertex(leaf, local); }
+            // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass).
+            if (split_) {
+                let o = (first + i) * VERTEX_WORDS;
+                d = vec2<u32>(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V]);
+            }
             else if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
             // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
@@ -2142,6 +2157,27 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
                 sp = displace_triangle_point(dp, w3, sp);
             }
             store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
+        }
+    }
+}
+
+// Split pattern, before the vertex passes: every leaf vertex's base weights (its pattern's point mapped on the
+// root, to_base_weights) into the output vertex's first two words, a workgroup per leaf of the emit range. The
+// vertex passes read them there, so that the other patterns' vertex passes carry no split code (a software
+// adapter runs an untaken branch at full cost).
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_split_points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                      @builtin(local_invocation_id) lid: vec3<u32>) {
+    if (!split_pattern()) { return; }
+    let end = min(params[PARAM_END_PATCH], patch_count());
+    let last = split_range_end(end);
+    for (var item = split_range_start(params[PARAM_FIRST_PATCH]) + wid.x; item < last; item += groups.x) {
+        let leaf = split_leaf(item);
+        let first = patches[leaf + NODE_FIRST_VERTEX];
+        for (var i = lid.x; i < patches[leaf + NODE_VERTICES]; i += EMIT_GROUP) {
+            let d = split_vertex(leaf, i);
+            out_vertices[(first + i) * VERTEX_WORDS + VERTEX_U] = d.x;
+            out_vertices[(first + i) * VERTEX_WORDS + VERTEX_V] = d.y;
         }
     }
 }

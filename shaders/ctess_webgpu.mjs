@@ -241,7 +241,8 @@ export class MeshPipeline {
         // Splitting: binding 4 holds the split area after the totals (rt::gpu::split_buffer_words).
         const split = params[C.PARAM_PATTERN] === C.PATTERN_UNIFORM_SPLIT;
         const roots = n + quads; // one per base triangle, two per quad
-        let capacity = split ? Math.max(options.splitCapacity || 65536, roots, 1) : 0;
+        // A default start never above the run's limit; at least the roots.
+        let capacity = split ? Math.max(options.splitCapacity || Math.min(65536, options.maxSplitCapacity || 65536), roots, 1) : 0;
         const splitWords = (nodes) => {
             const words = patchWords + C.SPLIT_HEADER_WORDS + 2 * nodes * C.NODE_WORDS;
             if (words * 4 > maxBinding)
@@ -250,8 +251,8 @@ export class MeshPipeline {
                 throw new Error(`splitting needs ${nodes} nodes per region, past the run's maxSplitCapacity (${options.maxSplitCapacity})`);
             return words;
         };
-        const splitPasses = split ? await Promise.all(['split_roots', 'split_count', 'split_scan', 'split_expand', 'split_records']
-            .map((name) => this.pipelineOf(name))) : [];
+        const splitPasses = split ? await Promise.all(['split_roots', 'split_count', 'split_scan', 'split_expand', 'split_records',
+                                                       'split_points'].map((name) => this.pipelineOf(name))) : [];
         const { tables } = await this.tables(params[C.PARAM_PATTERN]);
         // Displaced vertices come from their own entry points (the others write none for such params).
         const triangles = n - quads;
@@ -355,8 +356,10 @@ export class MeshPipeline {
                 // split run's passes take a workgroup per leaf (of the patches in the pass's range).
                 const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))]
                     .map((count) => Math.min(count && split ? splitLeaves : count, maxGroups));
-                const passes = [[emitVertices, groups[0]], [emitTriangles, groups[0]],
-                                [emitQuadVertices, groups[1]], [emitQuadTriangles, groups[1]]].filter(([, g]) => g > 0);
+                // A split run's leaves' points first, read by its vertex passes (docs/shaders.md, "Splitting").
+                const passes = [[splitPasses[5], split ? Math.min(splitLeaves, maxGroups) : 0], [emitVertices, groups[0]],
+                                [emitTriangles, groups[0]], [emitQuadVertices, groups[1]], [emitQuadTriangles, groups[1]]]
+                    .filter(([, g]) => g > 0);
                 milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
                 first = end;
             }

@@ -58,7 +58,8 @@ constexpr Pass passes[] = {
     {"split_count", "ctess_split_count", ctess::gen::split_workgroup},
     {"split_scan", "ctess_split_scan", ctess::gen::scan_workgroup},
     {"split_expand", "ctess_split_expand", ctess::gen::split_workgroup},
-    {"split_records", "ctess_split_records", ctess::gen::split_workgroup}};
+    {"split_records", "ctess_split_records", ctess::gen::split_workgroup},
+    {"split_points", "ctess_split_points", ctess::gen::emit_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -172,9 +172,10 @@ constexpr std::uint32_t rounded_factor_within(SquaredFactor s, std::uint32_t n) 
     return low;
 }
 
-// The interior dice limit (n * tolerance)^2 * 2^32 rounded up, so that s < limit exactly when f < n *
-// tolerance in the reals for the double product (tolerance in [1, 1.433], n <= 255: below 2^48, an integer
-// a double holds). Computed by this one expression everywhere (a host passes it to the shaders).
+// The interior dice limit: (n * tolerance)^2 * 2^32 in doubles, rounded up to an integer, so that an edge is
+// within it when s < limit (f < n * tolerance, to within the doubles' rounding of the product, below 2^48).
+// Its value is a definition: this one expression, computed once per patch (and for the shaders by the
+// generator), so every decision and both sides of an edge read the same limit.
 constexpr std::uint64_t interior_limit_squared(std::uint32_t n, double tolerance) noexcept {
     const double x = static_cast<double>(n) * tolerance;
     const double limit = x * x * static_cast<double>(squared_factor_one);

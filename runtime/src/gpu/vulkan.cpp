@@ -55,10 +55,11 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
                                                            "_split_count.spv",
                                                            "_split_scan.spv",
                                                            "_split_expand.spv",
-                                                           "_split_records.spv"};
+                                                           "_split_records.spv",
+                                                           "_split_points.spv"};
 // The split passes' indices in pass_suffix.
 constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass = 12, split_expand_pass = 13,
-                   split_records_pass = 14;
+                   split_records_pass = 14, split_points_pass = 15;
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -262,8 +263,11 @@ void MeshPipeline::record_split_counts(VkCommandBuffer cmd, VkDescriptorSet set,
     indirect_barrier(cmd);
     const VkDeviceSize dispatch =
         patches_offset + 4 * (rt::gpu::split_area_word(patch_count) + rt::gpu::split_word::dispatch);
-    // The levels, then the leaves' count and scan: every node at the bound's depth is a leaf.
-    const std::uint32_t levels = rt::uniform_split_depth_bound(CTESS_UNIFORM_MAX_FACTOR);
+    // The levels, then the leaves' count and scan: every node at the bound's depth is a leaf. The bound of
+    // the deepest shipped table (N = 11: 4), whichever table the shaders were built with: a level past a
+    // table's own bound copies its leaves (an extra level costs little; too few would leave split nodes as
+    // leaves).
+    const std::uint32_t levels = rt::uniform_split_max_depth;
     for (std::uint32_t level = 0; level <= levels; ++level) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(split_count_pass));
         vkCmdDispatchIndirect(cmd, patches, dispatch);
@@ -289,6 +293,10 @@ void MeshPipeline::record_split_emit(VkCommandBuffer cmd, VkDescriptorSet set, s
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
     const std::uint32_t groups = std::min(leaves, max_workgroups);
+    // The leaves' base weights first, read by the vertex passes (docs/shaders.md, "Splitting").
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(split_points_pass));
+    vkCmdDispatch(cmd, groups, 1, 1);
+    compute_barrier(cmd);
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (!(kind == 0 ? triangles : quads)) continue;
         const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
@@ -619,8 +627,13 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     // Split (docs/shaders.md, "Splitting"): the regions' nodes, from the run's or a default of at least
     // 65,536 and the roots; the params' capacity word is the Runner's.
     const std::uint32_t roots = static_cast<std::uint32_t>(rt::gpu::split_roots(n - quads, quads));
-    std::uint32_t capacity = !split ? 0u : run.split_capacity != 0 ? run.split_capacity : 65536u;
-    capacity = split ? std::max(capacity, std::max(roots, 1u)) : 0u;
+    std::uint32_t capacity = 0;
+    if (split) { // a default start never above the run's limit; at least the roots
+        capacity = run.split_capacity != 0 ? run.split_capacity : 65536u;
+        if (run.split_capacity == 0 && run.max_split_capacity != 0)
+            capacity = std::min(capacity, run.max_split_capacity);
+        capacity = std::max(capacity, std::max(roots, 1u));
+    }
     const Device::Buffer b_params = make(sizeof params, params.data(), sizeof params);
     const Device::Buffer b_tables = make(tables.size() * 4, tables.data(), tables.size() * 4);
     const Device::Buffer b_mesh = make(vertex_binding, mesh.vertices, vertex_bytes);

@@ -105,23 +105,25 @@ class MeshPipeline {
                      bool displaced = false, bool vector = false) const;
 
     // Pattern::uniform_split (docs/shaders.md, "Splitting"). record_split_counts records the setup pass, the
-    // roots, the split levels (rt::uniform_split_depth_bound(N) of them, each a count, a scan and an expand
-    // pass, the count and expand passes dispatched indirectly from binding 4), the leaves' count and scan,
-    // their records and the prefix sum. patches is binding 4's buffer, created with
-    // VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, at patches_offset (a multiple of 4), rt::gpu::split_buffer_words(
-    // patch_count, the params' split capacity) words; roots = rt::gpu::split_roots(triangles, quads). After
-    // it the split header (rt::gpu::split_word at rt::gpu::split_area_word(patch_count)) says whether the
-    // capacity held (overflow, needed) and, in parents, how many leaves record_split_emit draws.
+    // roots, the split levels (rt::uniform_split_max_depth of them, the bound of any shipped table; each a
+    // count, a scan and an expand pass, the count and expand passes dispatched indirectly from binding 4),
+    // the leaves' count and scan, their records and the prefix sum. patches is binding 4's buffer, created
+    // with VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, at patches_offset (a multiple of 4),
+    // rt::gpu::split_buffer_words( patch_count, the params' split capacity) words; roots =
+    // rt::gpu::split_roots(triangles, quads). After it the split header (rt::gpu::split_word at
+    // rt::gpu::split_area_word(patch_count)) says whether the capacity held (overflow, needed) and, in
+    // parents, how many leaves record_split_emit draws.
     void record_split_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                              std::uint32_t roots, VkBuffer patches, VkDeviceSize patches_offset,
                              std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
-    // The emit passes over the leaves (a workgroup per leaf, at most max_workgroups): those of the triangles
-    // when triangles is true, of the quads when quads is true, for the params' patch range.
+    // The emit passes over the leaves (a workgroup per leaf, at most max_workgroups): the leaves' points,
+    // then the vertices and triangles of the triangles when triangles is true, of the quads when quads is
+    // true, for the params' patch range.
     void record_split_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t leaves, bool triangles,
                            bool quads, std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
                            bool displaced = false, bool vector = false) const;
 
-    static constexpr unsigned passes = 15;
+    static constexpr unsigned passes = 16;
 
   private:
     void destroy() noexcept;
@@ -134,8 +136,8 @@ class MeshPipeline {
     mutable VkShaderModule modules_[passes] = {};
     mutable VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads,
                                                 // displaced vertices of triangles and of quads,
-                                                // vector-displaced vertices of both, then the five split
-                                                // passes (roots, count, scan, expand, records)
+                                                // vector-displaced vertices of both, then the six split
+                                                // passes (roots, count, scan, expand, records, points)
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
@@ -153,10 +155,10 @@ struct Output {
 struct RunOptions {
     std::uint32_t max_workgroups = rt::max_dispatch_workgroups; // per dispatch; the passes stride over more
     bool counts_only = false; // setup and prefix sum only: patches and totals, no outputs
-    // Pattern::uniform_split: the nodes of each split region to start with (0: at least 65,536 and the
-    // roots). A level that needs more is run again with what it needed (at least twice the nodes), growing
-    // the regions up to max_split_capacity nodes (0: as many as the device's storage range allows); past it
-    // tessellate throws Error naming the nodes needed. Never a dropped patch.
+    // Pattern::uniform_split: the nodes of each split region to start with (0: 65,536, or max_split_capacity
+    // if smaller, and at least the roots). A level that needs more is run again with what it needed (at least
+    // twice the nodes), growing the regions up to max_split_capacity nodes (0: as many as the device's
+    // storage range allows); past it tessellate throws Error naming the nodes needed. Never a dropped patch.
     std::uint32_t split_capacity = 0;
     std::uint32_t max_split_capacity = 0;
 };
