@@ -1,7 +1,7 @@
 // ctess mesh pipeline (both pattern families: CP and uniform density), WGSL compute. Generated from
 // shaders/ctess_mesh.wgsl by gen/: the generator replaces the constants placeholder below with a block of `const`
 // lines taken from the C++ definitions (gen/shaders/shader_layout.hpp and the table blob's layout; docs/shaders.md,
-// "Generated constants"), so no layout number is written by hand here. Fifteen entry points, the same steps as
+// "Generated constants"), so no layout number is written by hand here. Sixteen entry points, the same steps as
 // runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_mesh.comp.glsl, operation for
 // operation; the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 

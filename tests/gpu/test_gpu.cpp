@@ -818,13 +818,16 @@ TEST_CASE(
     check_displaced_parity(256, cases);
 }
 
-TEST_CASE("GPU displacement parity, quads: a displaced mixed grid equals the CPU's, CP and uniform") {
+TEST_CASE("GPU displacement parity, quads: a displaced mixed grid equals the CPU's, CP, uniform and split") {
     using rt::AddressMode, rt::Pattern, rt::Surface;
     std::vector<std::pair<const char*, DisplacedCase>> cases;
     cases.emplace_back("disp_quads_cp",
                        displaced_case(64, Surface::pn_triangles, Pattern::cp, AddressMode::repeat, true, 3));
     cases.emplace_back("disp_quads_uniform",
                        displaced_case(64, Surface::flat, Pattern::uniform, AddressMode::clamp, false, 3));
+    // Factors up to about 3 x 64: the split's leaves through both displaced vertex passes.
+    cases.emplace_back("disp_quads_split", displaced_case(64, Surface::pn_triangles, Pattern::uniform_split,
+                                                          AddressMode::repeat, true, 3));
     check_displaced_parity(64, cases);
 }
 
