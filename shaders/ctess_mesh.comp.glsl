@@ -1640,6 +1640,15 @@ uvec2 split_vertex(uint n, uint i) {
     uvec2 p = split_map(s, uniform_local(uvec3(patches[n + NODE_PATTERN], patches[n + NODE_PATTERN + 1u], patches[n + NODE_PATTERN + 2u]), i));
     return uvec2(split_base_weight(p.x), split_base_weight(p.y));
 }
+// An emit pass's work items over the patches [first_patch, end): those patches, or the split pattern's leaves
+// of them. item_patch: an item's patch, and its leaf node (0 for a patch).
+uvec2 emit_items(bool split_, uint first_patch, uint end) {
+    return split_ ? uvec2(split_range_start(first_patch), split_range_end(end)) : uvec2(first_patch, end);
+}
+uint item_patch(bool split_, uint item, out uint leaf) {
+    leaf = split_ ? split_leaf(item) : 0u;
+    return split_ ? patches[leaf + NODE_PATCH] : item;
+}
 
 // ---- patch records (PatchRecord) ----
 uint smallest_edge_rotation(float l[3]) {
@@ -1966,11 +1975,10 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
     // per patch; a leaf's vertices are its pattern's, mapped on the root.
     bool split_ = split_pattern();
-    uint start = split_ ? split_range_start(first_patch) : first_patch;
-    uint items = split_ ? split_range_end(end) : end;
-    for (uint item = start + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
-        uint leaf = split_ ? split_leaf(item) : 0u;
-        uint t = split_ ? patches[leaf + NODE_PATCH] : item;
+    uvec2 items = emit_items(split_, first_patch, end);
+    for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
+        uint leaf;
+        uint t = item_patch(split_, item, leaf);
         if (t < first_patch || t >= end) continue;
         uint rec = t * PATCH_WORDS;
         uint count = split_ ? patches[leaf + NODE_VERTICES] : patches[rec + REC_VERTEX_COUNT];
@@ -2117,11 +2125,10 @@ void emit_triangles(bool quad_pass) {
     bool uniform_ = uniform_pattern();
     // Split: a workgroup per leaf, its pattern's triangles after its own first vertex (as emit_vertices).
     bool split_ = split_pattern();
-    uint start = split_ ? split_range_start(first_patch) : first_patch;
-    uint items = split_ ? split_range_end(end) : end;
-    for (uint item = start + gl_WorkGroupID.x; item < items; item += gl_NumWorkGroups.x) {
-        uint leaf = split_ ? split_leaf(item) : 0u;
-        uint t = split_ ? patches[leaf + NODE_PATCH] : item;
+    uvec2 items = emit_items(split_, first_patch, end);
+    for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
+        uint leaf;
+        uint t = item_patch(split_, item, leaf);
         if (t < first_patch || t >= end) continue;
         uint rec = t * PATCH_WORDS;
         uint count = split_ ? patches[leaf + NODE_TRIANGLES] : patches[rec + REC_TRIANGLE_COUNT];

@@ -1816,6 +1816,19 @@ fn split_vertex(n: u32, i: u32) -> vec2<u32> {
     let p = split_map(s, uniform_local(vec3<u32>(patches[n + NODE_PATTERN], patches[n + NODE_PATTERN + 1u], patches[n + NODE_PATTERN + 2u]), i));
     return vec2<u32>(split_base_weight(p.x), split_base_weight(p.y));
 }
+// An emit pass's work items over the patches [first_patch, end): those patches, or the split pattern's leaves
+// of them. item_patch: an item's patch, and its leaf node (0 for a patch). (Ifs, not select(), which would read
+// both sides: the split words exist only in a split run.)
+fn emit_items(split_: bool, first_patch: u32, end: u32) -> vec2<u32> {
+    if (split_) { return vec2<u32>(split_range_start(first_patch), split_range_end(end)); }
+    return vec2<u32>(first_patch, end);
+}
+fn item_patch(split_: bool, item: u32, leaf: ptr<function, u32>) -> u32 {
+    *leaf = 0u;
+    if (!split_) { return item; }
+    *leaf = split_leaf(item);
+    return patches[*leaf + NODE_PATCH];
+}
 
 // ---- quads (docs/algorithm.md §7.2, §7.3): two triangle halves along a diagonal ----
 fn mesh_eye() -> vec3<f32> {
@@ -2020,20 +2033,10 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
     // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
     // per patch; a leaf's vertices are its pattern's, mapped on the root.
     let split_ = split_pattern();
-    var items = end;
-    var start = first_patch;
-    if (split_) { // the leaves of the patches in [first_patch, end)
-        start = split_range_start(first_patch);
-        items = split_range_end(end);
-    }
-    for (var item = start + wid.x; item < items; item += groups.x) {
-        // (select() would read both sides: the split words only exist in a split run.)
-        var leaf = 0u;
-        var t = item;
-        if (split_) {
-            leaf = split_leaf(item);
-            t = patches[leaf + NODE_PATCH];
-        }
+    let items = emit_items(split_, first_patch, end);
+    for (var item = items.x + wid.x; item < items.y; item += groups.x) {
+        var leaf: u32;
+        let t = item_patch(split_, item, &leaf);
         if (t < first_patch || t >= end) { continue; }
         let rec = t * PATCH_WORDS;
         var count = patches[rec + REC_VERTEX_COUNT];
@@ -2221,19 +2224,10 @@ fn emit_triangles(quad_pass: bool, wid: vec3<u32>, groups: vec3<u32>, lid: vec3<
     let uniform_ = uniform_pattern();
     // Split: a workgroup per leaf, its pattern's triangles after its own first vertex (as emit_vertices).
     let split_ = split_pattern();
-    var items = end;
-    var start = first_patch;
-    if (split_) { // the leaves of the patches in [first_patch, end)
-        start = split_range_start(first_patch);
-        items = split_range_end(end);
-    }
-    for (var item = start + wid.x; item < items; item += groups.x) {
-        var leaf = 0u;
-        var t = item;
-        if (split_) {
-            leaf = split_leaf(item);
-            t = patches[leaf + NODE_PATCH];
-        }
+    let items = emit_items(split_, first_patch, end);
+    for (var item = items.x + wid.x; item < items.y; item += groups.x) {
+        var leaf: u32;
+        let t = item_patch(split_, item, &leaf);
         if (t < first_patch || t >= end) { continue; }
         let rec = t * PATCH_WORDS;
         var count = patches[rec + REC_TRIANGLE_COUNT];
