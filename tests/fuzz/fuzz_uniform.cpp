@@ -6,8 +6,8 @@
 // out-of-range queries give zeros; a short span writes nothing. UniformSplit (any factor, up to 32768):
 // bounded depth, indices in range, points in the domain, exact coverage in units of 65534^2; in the shared
 // layout (welded, docs/algorithm.md §3.5) no position twice, V = 1 + (T + B) / 2 and the same triangles
-// (position triples, in order) as the provoking layout, whose positions are exactly the shared ones; a short
-// span writes nothing.
+// (position triples, in order) as the provoking layout, whose positions are exactly the shared ones, and the
+// leaves' own points (emit_leaves, the pipeline's unwelded layout) as well; a short span writes nothing.
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -63,6 +63,16 @@ void check_split_weld(const rt::UniformSplit& split, const std::vector<uniform::
         welded.insert({a.u, a.v});
     }
     CTESS_FUZZ_CHECK(welded == positions);
+    // The leaves' own points: the same triangles, leaf by leaf, at least as many points as the welded patch.
+    const Counts leaves = split.leaf_counts();
+    CTESS_FUZZ_CHECK(leaves.triangles == split.counts().triangles &&
+                     leaves.vertices >= split.counts().vertices);
+    std::vector<uniform::SplitPoint> lv(leaves.vertices);
+    std::vector<std::uint32_t> li(leaves.index_count());
+    CTESS_FUZZ_CHECK(split.emit_leaves(lv, li));
+    for (std::size_t k = 0; k < li.size(); ++k) CTESS_FUZZ_CHECK(li[k] < lv.size() && lv[li[k]] == v[idx[k]]);
+    lv.pop_back();
+    CTESS_FUZZ_CHECK(!split.emit_leaves(lv, li));
     std::vector<uniform::SplitPoint> short_v(v.size() - 1, uniform::SplitPoint{7, 7});
     std::vector<std::uint32_t> short_i(idx.size(), 7u);
     CTESS_FUZZ_CHECK(!split.emit(short_v, short_i));
