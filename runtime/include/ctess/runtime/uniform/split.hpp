@@ -12,6 +12,8 @@
 //   factors as side lengths): on a parent edge that is T_i times the edge's parameter span, i.e. a function
 //   of that edge's own factor and position only; inside the parent it is computed from the edge's endpoints
 //   in either direction with the same result. Neighbours therefore agree bit for bit at any depth: no cracks.
+//   Every factor is kept as its exact square in fixed point (uniform/split_factor.hpp, §3.5 "Exact
+//   factors"), so every decision below compares integers, as the shaders' split passes do.
 // * How many pieces a split gives an edge is a function of that edge's own factor and depth: an edge within
 //   the dice limit (N on the root's boundary at every depth, from its corners; inside the root tolerance x N)
 //   stays whole, whole edges keep their factor exactly, and a subpatch is diced when all three of its
