@@ -1635,9 +1635,8 @@ void ctess_split_records() {
 }
 // A leaf's vertex i as the pipeline's base weights (2^-24): its pattern's point mapped on the root, then
 // to_base_weights.
-uvec2 split_vertex(uint n, uint i) {
-    SplitNode s = load_node(n);
-    uvec2 p = split_map(s, uniform_local(uvec3(patches[n + NODE_PATTERN], patches[n + NODE_PATTERN + 1u], patches[n + NODE_PATTERN + 2u]), i));
+uvec2 split_vertex(SplitNode s, uvec3 words, uint i) {
+    uvec2 p = split_map(s, uniform_local(words, i));
     return uvec2(split_base_weight(p.x), split_base_weight(p.y));
 }
 // An emit pass's work items over the patches [first_patch, end): those patches, or the split pattern's leaves
@@ -2098,12 +2097,15 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
 // adapter runs an untaken branch at full cost).
 void ctess_split_points() {
     if (!split_pattern()) return;
-    uint end = min(params[PARAM_END_PATCH], patch_count());
-    for (uint item = split_range_start(params[PARAM_FIRST_PATCH]) + gl_WorkGroupID.x; item < split_range_end(end);
+    uint last = split_range_end(min(params[PARAM_END_PATCH], patch_count()));
+    for (uint item = split_range_start(params[PARAM_FIRST_PATCH]) + gl_WorkGroupID.x; item < last;
          item += gl_NumWorkGroups.x) {
-        uint leaf = split_leaf(item), first = patches[leaf + NODE_FIRST_VERTEX];
-        for (uint i = gl_LocalInvocationID.x; i < patches[leaf + NODE_VERTICES]; i += gl_WorkGroupSize.x) {
-            uvec2 d = split_vertex(leaf, i);
+        // The leaf's node and pattern once, not per vertex (a vertex store may alias them for the compiler).
+        uint leaf = split_leaf(item), first = patches[leaf + NODE_FIRST_VERTEX], count = patches[leaf + NODE_VERTICES];
+        SplitNode s = load_node(leaf);
+        uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
+            uvec2 d = split_vertex(s, words, i);
             out_vertices[(first + i) * VERTEX_WORDS + VERTEX_U] = d.x;
             out_vertices[(first + i) * VERTEX_WORDS + VERTEX_V] = d.y;
         }

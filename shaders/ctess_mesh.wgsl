@@ -1811,9 +1811,8 @@ fn ctess_split_records(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(n
 }
 // A leaf's vertex i as the pipeline's base weights (2^-24): its pattern's point mapped on the root, then
 // to_base_weights.
-fn split_vertex(n: u32, i: u32) -> vec2<u32> {
-    let s = load_node(n);
-    let p = split_map(s, uniform_local(vec3<u32>(patches[n + NODE_PATTERN], patches[n + NODE_PATTERN + 1u], patches[n + NODE_PATTERN + 2u]), i));
+fn split_vertex(s: SplitNode, words: vec3<u32>, i: u32) -> vec2<u32> {
+    let p = split_map(s, uniform_local(words, i));
     return vec2<u32>(split_base_weight(p.x), split_base_weight(p.y));
 }
 // An emit pass's work items over the patches [first_patch, end): those patches, or the split pattern's leaves
@@ -2175,10 +2174,14 @@ fn ctess_split_points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgr
     let end = min(params[PARAM_END_PATCH], patch_count());
     let last = split_range_end(end);
     for (var item = split_range_start(params[PARAM_FIRST_PATCH]) + wid.x; item < last; item += groups.x) {
+        // The leaf's node and pattern once, not per vertex (a vertex store may alias them for the compiler).
         let leaf = split_leaf(item);
         let first = patches[leaf + NODE_FIRST_VERTEX];
-        for (var i = lid.x; i < patches[leaf + NODE_VERTICES]; i += EMIT_GROUP) {
-            let d = split_vertex(leaf, i);
+        let count = patches[leaf + NODE_VERTICES];
+        let s = load_node(leaf);
+        let words = vec3<u32>(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        for (var i = lid.x; i < count; i += EMIT_GROUP) {
+            let d = split_vertex(s, words, i);
             out_vertices[(first + i) * VERTEX_WORDS + VERTEX_U] = d.x;
             out_vertices[(first + i) * VERTEX_WORDS + VERTEX_V] = d.y;
         }

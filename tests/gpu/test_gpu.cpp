@@ -89,15 +89,17 @@ PipelineOutput run_gpu(unsigned max_factor, const Scene& scene, const char* name
 }
 // Several scenes in one Dawn run: node and the pipelines start once (seconds on SwiftShader).
 std::vector<PipelineOutput> run_gpu_batch(unsigned max_factor,
-                                          const std::vector<std::pair<const char*, Scene>>& scenes) {
+                                          const std::vector<std::pair<const char*, Scene>>& scenes,
+                                          RunLimits limits = {}) {
     std::vector<PipelineOutput> out;
     if (backend() == Backend::vulkan) {
-        for (const auto& entry : scenes) out.push_back(run_gpu(max_factor, entry.second, entry.first));
+        for (const auto& entry : scenes)
+            out.push_back(run_gpu(max_factor, entry.second, entry.first, limits));
         return out;
     }
     std::vector<DawnJob> jobs;
     for (const auto& [name, scene] : scenes) jobs.push_back({&scene, dawn_work_file(max_factor, name)});
-    return run_dawn(node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, jobs);
+    return run_dawn(node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor, jobs, limits);
 }
 
 const char* surface_name(rt::Surface s) {
@@ -204,15 +206,7 @@ TEST_CASE(
     const Scene strip = split_strip(rt::Surface::flat);
     const std::vector<std::pair<const char*, Scene>> scenes = {{"split_sweep", sweep},
                                                                {"split_strip", strip}};
-    std::vector<PipelineOutput> gpu;
-    if (backend() == Backend::vulkan)
-        for (const auto& [name, scene] : scenes)
-            gpu.push_back(run_gpu(64, scene, name, RunLimits{7, false, 100}));
-    else
-        gpu = run_dawn(
-            node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, 64,
-            {{&sweep, dawn_work_file(64, "split_sweep")}, {&strip, dawn_work_file(64, "split_strip")}},
-            RunLimits{7, false, 100});
+    const std::vector<PipelineOutput> gpu = run_gpu_batch(64, scenes, RunLimits{7, false, 100});
     std::array<std::uint32_t, 5> depths{};
     for (std::size_t k = 0; k < scenes.size(); ++k) {
         const Scene& scene = scenes[k].second;

@@ -149,8 +149,7 @@ constexpr bool below_half_past(SquaredFactor s, std::uint32_t n) noexcept {
 
 // floor(f + 1/2) clamped to [1, n] (n <= 255, a leaf's table factor): the largest k in [1, n] with
 // s >= half_below_squared(k). At run time from a float guess (within one of k, whatever it rounds) corrected
-// by comparisons; in constant expressions (and in the shaders, which have no fast square root to rely on) by
-// a binary search of those squares.
+// by comparisons; in constant expressions (and in the shaders) by a binary search of those squares.
 constexpr std::uint32_t rounded_factor_within(SquaredFactor s, std::uint32_t n) noexcept {
     if (!std::is_constant_evaluated()) {
         const float guess = std::sqrt(static_cast<float>(s)) * (1.0f / 65536.0f) + 0.5f;
