@@ -22,6 +22,7 @@ layout(std430, set = 0, binding = 4) buffer Patches { uint patches[]; };
 // Binding 5 is read only by the split pattern's vertex passes: the base weights ctess_split_points wrote.
 layout(std430, set = 0, binding = 5) buffer OutVertices { uint out_vertices[]; };
 layout(std430, set = 0, binding = 6) writeonly buffer OutIndices { uint out_indices[]; };
+layout(std430, set = 0, binding = 7) buffer Weld { uint weld[]; }; // the welded output's area (rt::gpu::weld_word)
 
 uint patch_count() { return params[PARAM_PATCH_COUNT]; }
 bool uniform_pattern() { return params[PARAM_PATTERN] == PATTERN_UNIFORM; }
@@ -831,13 +832,14 @@ vec4 vertex_tangent(uint v) {
 }
 // displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
 // corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
+// faces false: no neighbours (each corner its own dominant vertex, each edge its own dominant edge).
 DisplacementPatch displacement_patch(uint corners, uint w[4], uint corner_face[4], uint corner_slot[4], uint edge_face[4],
-                                     uint edge_slot[4], bool vector_) {
+                                     uint edge_slot[4], bool vector_, bool faces) {
     DisplacementPatch dp;
     dp.corners = corners;
     uint n = params[PARAM_MESH_VERTEX_COUNT];
     for (uint k = 0u; k < corners; ++k) {
-        uint dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]);
+        uint dom = faces ? dominant_vertex(w[k], corner_face[k], corner_slot[k]) : w[k];
         dp.position[k] = mesh_position(w[k]);
         dp.own_uv[k] = mesh_uv(w[k]);
         dp.corner_uv[k] = mesh_uv(dom);
@@ -856,7 +858,7 @@ DisplacementPatch displacement_patch(uint corners, uint w[4], uint corner_face[4
     for (uint k = 0u; k < corners; ++k) {
         uint a = w[k], b = w[(k + 1u) % corners];
         uvec2 pick = uvec2(a, b);
-        if (displacement_adjacency()) {
+        if (faces && displacement_adjacency()) {
             uint at = adjacency_base() + 12u * edge_face[k] + 3u + 2u * edge_slot[k];
             uint c = mesh_indices[at], e = mesh_indices[at + 1u];
             if (c < n && e < n) {
@@ -1952,6 +1954,398 @@ void ctess_prefix_sum() {
     }
 }
 
+// ---- the welded output (docs/shaders.md, "Welded output"; docs/algorithm.md §7.4; Pattern::cp and uniform) ----
+// Binding 7 (rt::gpu::weld_word): the header, the mesh's edges (rt::WeldedEdge, lo and hi from the host, sorted and
+// distinct), a rt::WeldedPatch per patch, then a writer word per shared id, a map word per slot (unwelded vertex)
+// and WELD_SORT_WORDS per slot. Ids as setup_welded numbers them: a corner is its mesh vertex, an edge point the
+// edge's first id plus the rank of its parameter from the lower index, an interior point the patch's first id plus
+// the rank of its exact domain point among the patch's distinct interior points.
+bool weld_on() { return (params[PARAM_WELD] & WELD_ON) != 0u; }
+uint weld_edge_count() { return weld[WELD_EDGES]; }
+uint weld_edge(uint e) { return WELD_HEADER_WORDS + e * WELD_EDGE_WORDS; }
+uint weld_patch(uint t) { return weld_edge(weld_edge_count()) + t * WELD_PATCH_WORDS; }
+uint weld_writer(uint id) { return weld_patch(patch_count()) + id; }
+uint weld_map(uint s) { return weld_writer(params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS]) + s; }
+uint weld_sort(uint s) { return weld_map(weld[WELD_SLOTS]) + WELD_SORT_WORDS * s; }
+
+// Edge (a, b) of the sorted list (a binary search); a missing edge (a list the host did not make with
+// rt::weld_edge_list) sets WELD_MISSING_EDGE and gives edge 0.
+uint weld_find_edge(uint a, uint b) {
+    uint lo_ = min(a, b), hi_ = max(a, b), first = 0u, count = weld_edge_count();
+    while (count > 0u) {
+        uint half_ = count / 2u, m = weld_edge(first + half_);
+        if (weld[m + WEDGE_LO] < lo_ || (weld[m + WEDGE_LO] == lo_ && weld[m + WEDGE_HI] < hi_)) {
+            first += half_ + 1u;
+            count -= half_ + 1u;
+        } else {
+            count = half_;
+        }
+    }
+    uint m = weld_edge(first);
+    if (first >= weld_edge_count() || weld[m + WEDGE_LO] != lo_ || weld[m + WEDGE_HI] != hi_) {
+        atomicOr(weld[WELD_STATUS], WELD_MISSING_EDGE);
+        return 0u;
+    }
+    return first;
+}
+
+// The distinct interior parameters below x of the line of an edge of factor f (x = FIXED_ONE: all of them), as
+// EdgeParams (mesh_pipeline.cpp): CP line points rise with their index (ties where a segment has zero length),
+// uniform ones strictly.
+uint line_rank(float f, uint x) {
+    if (uniform_pattern()) {
+        uint n = uniform_factor(f), lo_ = 1u, hi_ = n; // the first i in [1, n) whose parameter is >= x
+        while (lo_ < hi_) {
+            uint mid = (lo_ + hi_) / 2u;
+            if (uniform_to_fixed(uniform_edge_parameter(mid, n)) < x) lo_ = mid + 1u;
+            else hi_ = mid;
+        }
+        return lo_ - 1u;
+    }
+    uvec2 s = line_state(f);
+    if (s.x == 0u) return 0u;
+    uint rec = tables[TOKEN_RECORD + 2u * (s.x - 1u)];
+    Edge e = Edge(rec & 0xFFFFu, s.y, rec >> 16, tables[TOKEN_RECORD + 2u * (s.x - 1u) + 1u]);
+    uint rank = 0u, previous = 0u;
+    for (uint i = 1u; i < e.segments; ++i) {
+        uint point = edge_point(e, i);
+        if (point >= x) break;
+        if (point != previous) ++rank;
+        previous = point;
+    }
+    return rank;
+}
+
+// Patch t as the weld reads it: its mesh corners, rotation and pattern halves; false for a culled patch.
+struct WeldPatch {
+    bool quad;
+    uint rot;
+    uint w[4];
+    Patch halves[2];
+    uvec3 words[2];
+    uvec2 counts_a; // half A's vertices and triangles (a base triangle's all)
+    uint vertices, triangles, first;
+};
+bool weld_load(uint t, out WeldPatch wp) {
+    uint rec = t * PATCH_WORDS;
+    wp.vertices = patches[rec + REC_VERTEX_COUNT];
+    wp.triangles = patches[rec + REC_TRIANGLE_COUNT];
+    wp.first = patches[rec + REC_FIRST_VERTEX];
+    wp.rot = patches[rec + REC_ROTATION];
+    wp.quad = t >= triangle_count();
+    wp.w = uint[4](0u, 0u, 0u, 0u);
+    if (wp.vertices == 0u) return false;
+    if (wp.quad) {
+        if (!base_quad(t - triangle_count(), wp.w)) return false;
+        wp.counts_a = quad_halves(rec, wp.halves, wp.words);
+        return true;
+    }
+    uvec3 w;
+    if (!base_triangle(t, w)) return false;
+    wp.w = uint[4](w.x, w.y, w.z, 0u);
+    wp.halves[0] = uniform_pattern() ? patch_zero() : record_patch(rec);
+    wp.words[0] = uniform_words(rec);
+    wp.halves[1] = wp.halves[0];
+    wp.words[1] = wp.words[0];
+    wp.counts_a = uvec2(wp.vertices, wp.triangles);
+    return true;
+}
+
+// Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key
+// (a triangle's base weights (w1, w2), a quad's unit square); shared slots get key (~0, ~0), which sorts last.
+// The places are slot_place's (mesh_pipeline.cpp): a corner, else the first edge whose weight is zero (a quad
+// half's diagonal is inside), else inside; an edge point's parameter is measured from the lower mesh index.
+uint weld_slot(WeldPatch wp, uint i, out uvec2 key) {
+    uint side = i < wp.counts_a.x ? 0u : 1u;
+    uint local = side == 0u ? i : i - wp.counts_a.x;
+    uvec2 d = uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+    key = uvec2(0xFFFFFFFFu);
+    uint a, b, x;
+    if (wp.quad) {
+        if (side == 1u) d = uvec2(FIXED_ONE - d.x, FIXED_ONE - d.y); // half B: cp::quad_point
+        bool on_edge[4] = bool[4](d.y == 0u, d.x == FIXED_ONE, d.y == FIXED_ONE, d.x == 0u);
+        uint r[4] = uint[4](d.x, d.y, FIXED_ONE - d.x, FIXED_ONE - d.y); // from q_k along edge k
+        uint k = 4u;
+        for (uint e = 0u; e < 4u && k == 4u; ++e) if (on_edge[e]) k = e;
+        if (k == 4u) {
+            key = d;
+            return WELD_INTERIOR;
+        }
+        a = wp.w[(k + wp.rot) % 4u];
+        b = wp.w[(k + 1u + wp.rot) % 4u];
+        if (r[k] == 0u) return a;
+        if (r[k] == FIXED_ONE) return b;
+        x = a <= b ? r[k] : FIXED_ONE - r[k];
+    } else {
+        uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y), w3[3];
+        for (uint k = 0u; k < 3u; ++k) w3[(k + wp.rot) % 3u] = pw[k];
+        for (uint c = 0u; c < 3u; ++c) if (w3[c] == FIXED_ONE) return wp.w[c];
+        uint j = w3[0] == 0u ? 0u : w3[1] == 0u ? 1u : w3[2] == 0u ? 2u : 3u;
+        if (j == 3u) {
+            key = uvec2(w3[1], w3[2]);
+            return WELD_INTERIOR;
+        }
+        uint i1 = (j + 1u) % 3u, i2 = (j + 2u) % 3u;
+        a = wp.w[i1];
+        b = wp.w[i2];
+        x = a <= b ? w3[i2] : w3[i1];
+    }
+    return weld[weld_edge(weld_find_edge(a, b)) + WEDGE_FIRST_VERTEX] + line_rank(mesh_edge_factor(a, b), x);
+}
+
+// Pattern triangle k's slots (half B's after half A's vertices).
+uvec3 weld_triangle_slots(WeldPatch wp, uint k) {
+    uint side = k < wp.counts_a.y ? 0u : 1u;
+    uint local = side == 0u ? k : k - wp.counts_a.y;
+    uvec3 tri = uniform_pattern() ? uniform_triangle(wp.words[side], local) : patch_triangle(side == 0u ? wp.halves[0] : wp.halves[1], local);
+    return tri + uvec3(side == 0u ? 0u : wp.counts_a.x);
+}
+// A map word as an id within the patch's weld (interior ranks keep WELD_INTERIOR), for comparisons.
+uint weld_local_id(uint m) { return (m & WELD_INTERIOR) != 0u ? m & ~WELD_REPRESENTATIVE : m; }
+// A map word as an output id, interior ranks after the patch's first interior id.
+uint weld_output_id(uint m, uint first_interior) {
+    return (m & WELD_INTERIOR) != 0u ? first_interior + (m & WELD_RANK_MASK) : m;
+}
+bool weld_kept(uvec3 ids) {
+    return (params[PARAM_WELD] & WELD_KEEP_DEGENERATE) != 0u || (ids.x != ids.y && ids.y != ids.z && ids.x != ids.z);
+}
+
+// Weld pass 1, grid-stride: clears the writer words and counts each edge's distinct interior points.
+void ctess_weld_edges() {
+    uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    uint ids = params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS];
+    for (uint id = gl_GlobalInvocationID.x; id < ids; id += stride) weld[weld_writer(id)] = 0u;
+    for (uint e = gl_GlobalInvocationID.x; e < weld_edge_count(); e += stride) {
+        uint m = weld_edge(e);
+        weld[m + WEDGE_VERTEX_COUNT] = line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
+    }
+}
+
+// Exclusive prefix sums in one workgroup of SCAN_GROUP over n records of `stride` words from base: the counts at
+// count_word (.y too when two) into first_word, from start. Returns the end; sets WELD_OVERFLOW past 2^31.
+uvec2 weld_prefix(uint base, uint stride, uint n, uvec2 count_word, uvec2 first_word, bool two, uvec2 start) {
+    uint lane = gl_LocalInvocationID.x;
+    if (lane == 0u) scan_overflow = 0u;
+    bool overflow = false;
+    uint per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
+    uint begin = min(n, lane * per), end = min(n, begin + per);
+    uvec2 sum = uvec2(0u);
+    for (uint t = begin; t < end; ++t) {
+        uint r = base + t * stride;
+        uvec2 count = uvec2(weld[r + count_word.x], two ? weld[r + count_word.y] : 0u);
+        sum += count;
+        overflow = overflow || sum.x < count.x || sum.y < count.y;
+    }
+    scan_sum[lane] = sum;
+    barrier();
+    for (uint d = 1u; d < SCAN_GROUP; d <<= 1) {
+        uvec2 add = lane >= d ? scan_sum[lane - d] : uvec2(0u);
+        barrier();
+        uvec2 before = scan_sum[lane];
+        uvec2 after = before + add;
+        overflow = overflow || after.x < before.x || after.y < before.y;
+        scan_sum[lane] = after;
+        barrier();
+    }
+    uvec2 total = scan_sum[SCAN_GROUP - 1u], end_ = start + total;
+    overflow = overflow || end_.x < start.x || end_.y < start.y || end_.x >= WELD_INTERIOR || end_.y >= WELD_INTERIOR;
+    if (overflow) atomicOr(scan_overflow, 1u);
+    uvec2 at = start + scan_sum[lane] - sum;
+    for (uint t = begin; t < end; ++t) {
+        uint r = base + t * stride;
+        weld[r + first_word.x] = at.x;
+        at.x += weld[r + count_word.x];
+        if (two) {
+            weld[r + first_word.y] = at.y;
+            at.y += weld[r + count_word.y];
+        }
+    }
+    barrier();
+    if (lane == 0u && scan_overflow != 0u) weld[WELD_STATUS] |= WELD_OVERFLOW;
+    return end_;
+}
+
+// Weld pass 2, one workgroup: the edges' first ids, after the mesh vertices.
+void ctess_weld_edge_scan() {
+    uvec2 end_ = weld_prefix(weld_edge(0u), WELD_EDGE_WORDS, weld_edge_count(), uvec2(WEDGE_VERTEX_COUNT, 0u),
+                             uvec2(WEDGE_FIRST_VERTEX, 0u), false, uvec2(params[PARAM_MESH_VERTEX_COUNT], 0u));
+    if (gl_LocalInvocationID.x == 0u) weld[WELD_SHARED] = end_.x;
+}
+
+// Weld pass 3, a workgroup per patch: every slot's map word (its shared id, or its interior rank after a sort of
+// the patch's points by (u, v, slot)), the patch's distinct interior points and kept triangles.
+shared uint weld_lane[EMIT_GROUP];
+shared uint weld_kept_count;
+// The inclusive prefix sum of each lane's flag in weld_lane; every lane must call it.
+uint weld_lane_scan(bool flag) {
+    uint lane = gl_LocalInvocationID.x;
+    weld_lane[lane] = flag ? 1u : 0u;
+    barrier();
+    for (uint d = 1u; d < EMIT_GROUP; d <<= 1) {
+        uint add = lane >= d ? weld_lane[lane - d] : 0u;
+        barrier();
+        weld_lane[lane] += add;
+        barrier();
+    }
+    return weld_lane[lane];
+}
+bool weld_sort_less(uint a, uint b) {
+    uvec3 x = uvec3(weld[a], weld[a + 1u], weld[a + 2u]), y = uvec3(weld[b], weld[b + 1u], weld[b + 2u]);
+    return x.x != y.x ? x.x < y.x : x.y != y.y ? x.y < y.y : x.z < y.z;
+}
+void ctess_weld_count() {
+    uint lane = gl_LocalInvocationID.x;
+    for (uint t = gl_WorkGroupID.x; t < patch_count(); t += gl_NumWorkGroups.x) {
+        uint wpw = weld_patch(t);
+        WeldPatch wp;
+        if (!weld_load(t, wp)) {
+            if (lane == 0u) {
+                weld[wpw + WPATCH_VERTEX_COUNT] = 0u;
+                weld[wpw + WPATCH_TRIANGLE_COUNT] = 0u;
+            }
+            continue;
+        }
+        uint n = wp.vertices;
+        for (uint i = lane; i < n; i += EMIT_GROUP) {
+            uvec2 key;
+            uint id = weld_slot(wp, i, key), o = weld_sort(wp.first + i);
+            weld[weld_map(wp.first + i)] = id;
+            weld[o] = key.x;
+            weld[o + 1u] = key.y;
+            weld[o + 2u] = i;
+        }
+        memoryBarrierBuffer();
+        barrier();
+        // A bitonic sort, every comparator ascending (each block's first stage compares mirrored pairs), with the
+        // entries past n taken as +inf: a comparator that reaches past n is skipped.
+        uint size = 1u;
+        while (size < n) size <<= 1;
+        for (uint k = 2u; k <= size; k <<= 1) {
+            for (uint j = k >> 1; j > 0u; j >>= 1) {
+                for (uint q = lane; q < size / 2u; q += EMIT_GROUP) {
+                    uint i = (q / j) * 2u * j + q % j;
+                    uint partner = j == (k >> 1) ? i ^ (k - 1u) : i + j;
+                    if (partner >= n) continue;
+                    uint oa = weld_sort(wp.first + i), ob = weld_sort(wp.first + partner);
+                    if (weld_sort_less(ob, oa)) {
+                        for (uint w = 0u; w < WELD_SORT_WORDS; ++w) {
+                            uint x = weld[oa + w];
+                            weld[oa + w] = weld[ob + w];
+                            weld[ob + w] = x;
+                        }
+                    }
+                }
+                memoryBarrierBuffer();
+                barrier();
+            }
+        }
+        // The interior entries (first after the sort) numbered by distinct point.
+        uint distinct = 0u;
+        for (uint base_ = 0u; base_ < n; base_ += EMIT_GROUP) {
+            uint j = base_ + lane, o = weld_sort(wp.first + min(j, n - 1u));
+            bool interior = j < n && weld[o] != 0xFFFFFFFFu;
+            bool fresh = interior && (j == 0u || weld[o - WELD_SORT_WORDS] != weld[o] || weld[o - WELD_SORT_WORDS + 1u] != weld[o + 1u]);
+            uint rank = distinct + weld_lane_scan(fresh) - 1u;
+            if (interior) weld[weld_map(wp.first + weld[o + 2u])] = WELD_INTERIOR | rank | (fresh ? WELD_REPRESENTATIVE : 0u);
+            distinct += weld_lane[EMIT_GROUP - 1u];
+            barrier();
+        }
+        if (lane == 0u) weld_kept_count = 0u;
+        memoryBarrierBuffer();
+        barrier();
+        uint kept = 0u;
+        for (uint k = lane; k < wp.triangles; k += EMIT_GROUP) {
+            uvec3 s = weld_triangle_slots(wp, k) + uvec3(wp.first);
+            uvec3 ids = uvec3(weld_local_id(weld[weld_map(s.x)]), weld_local_id(weld[weld_map(s.y)]), weld_local_id(weld[weld_map(s.z)]));
+            if (weld_kept(ids)) ++kept;
+        }
+        atomicAdd(weld_kept_count, kept);
+        barrier();
+        if (lane == 0u) {
+            weld[wpw + WPATCH_VERTEX_COUNT] = distinct;
+            weld[wpw + WPATCH_TRIANGLE_COUNT] = weld_kept_count;
+        }
+        barrier();
+    }
+}
+
+// Weld pass 4, grid-stride over the slots: each shared id's writer, the last slot that reaches it (as the CPU's
+// patches last to first, and within a patch its last slot). atomicMax: the result does not depend on the order.
+void ctess_weld_writers() {
+    uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    for (uint s = gl_GlobalInvocationID.x; s < weld[WELD_SLOTS]; s += stride) {
+        uint m = weld[weld_map(s)];
+        if ((m & WELD_INTERIOR) == 0u) atomicMax(weld[weld_writer(m)], s + 1u);
+    }
+}
+
+// Weld pass 5, one workgroup: the patches' first interior ids (after the shared ones) and first triangles, and the
+// totals.
+void ctess_weld_scan() {
+    uvec2 end_ = weld_prefix(weld_patch(0u), WELD_PATCH_WORDS, patch_count(), uvec2(WPATCH_VERTEX_COUNT, WPATCH_TRIANGLE_COUNT),
+                             uvec2(WPATCH_FIRST_VERTEX, WPATCH_FIRST_TRIANGLE), true, uvec2(weld[WELD_SHARED], 0u));
+    if (gl_LocalInvocationID.x == 0u) {
+        weld[WELD_VERTICES] = end_.x;
+        weld[WELD_TRIANGLES] = end_.y;
+    }
+}
+
+// Weld emit, a workgroup per patch of the emit range (triangles and quads): the kept triangles in pattern order.
+void ctess_weld_triangles() {
+    uint lane = gl_LocalInvocationID.x;
+    uint end = min(params[PARAM_END_PATCH], patch_count());
+    for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+        WeldPatch wp;
+        if (!weld_load(t, wp)) continue;
+        uint wpw = weld_patch(t);
+        uint first_interior = weld[wpw + WPATCH_FIRST_VERTEX], written = weld[wpw + WPATCH_FIRST_TRIANGLE];
+        for (uint base_ = 0u; base_ < wp.triangles; base_ += EMIT_GROUP) {
+            uint k = base_ + lane;
+            uvec3 ids = uvec3(0u);
+            bool keep = false;
+            if (k < wp.triangles) {
+                uvec3 s = weld_triangle_slots(wp, k) + uvec3(wp.first);
+                ids = uvec3(weld_output_id(weld[weld_map(s.x)], first_interior), weld_output_id(weld[weld_map(s.y)], first_interior),
+                            weld_output_id(weld[weld_map(s.z)], first_interior));
+                keep = weld_kept(ids);
+            }
+            uint before = weld_lane_scan(keep);
+            if (keep) {
+                uint o = 3u * (written + before - 1u);
+                out_indices[o] = ids.x;
+                out_indices[o + 1u] = ids.y;
+                out_indices[o + 2u] = ids.z;
+            }
+            written += weld_lane[EMIT_GROUP - 1u];
+            barrier();
+        }
+    }
+}
+
+// Weld emit, grid-stride over the mesh vertices: each one no face reaches (no writer) as its corner value, as
+// emit_welded_mesh (a corner of its own, displaced with itself as the dominant vertex and no neighbours).
+void ctess_weld_lone_vertices() {
+    uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    uint surface = params[PARAM_SURFACE];
+    float alpha = uintBitsToFloat(params[PARAM_ALPHA]);
+    bool vector_ = displacement_vector_mode();
+    for (uint v = gl_GlobalInvocationID.x; v < params[PARAM_MESH_VERTEX_COUNT]; v += stride) {
+        if (weld[weld_writer(v)] != 0u) continue;
+        Corner c = mesh_corner(v);
+        Corner tri[3] = Corner[3](c, c, c);
+        uint w3[3] = uint[3](FIXED_ONE, 0u, 0u);
+        vec3 normals[3] = vec3[3](c.normal, c.normal, c.normal);
+        SurfacePoint sp = surface == SURFACE_PN_AEN ? evaluate_surface_aen(tri, normals, normals, w3, alpha) : evaluate_surface(tri, w3, surface, alpha);
+        if (displacement_on()) {
+            uint own[4] = uint[4](v, v, v, 0u), none[4] = uint[4](0u, 0u, 0u, 0u);
+            DisplacementPatch dp = displacement_patch(3u, own, none, none, none, none, vector_, false);
+            if (vector_) displace_triangle_vector(dp, w3, 0.0, 0.0, sp);
+            else displace_triangle_point(dp, w3, sp);
+        }
+        store_vertex(v * VERTEX_WORDS, 0u, 0u, sp);
+    }
+}
+
 // Passes 3 and 4 (vertices), a workgroup per patch (looping when there are more patches than workgroups): every
 // output vertex of the emit range's triangles (quad_pass false: ctess_emit_vertices) or quads (true:
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
@@ -1974,6 +2368,9 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
     // per patch; a leaf's vertices are its pattern's, mapped on the root.
     bool split_ = split_pattern();
+    // Welded (docs/shaders.md, "Welded output"): each slot writes its weld id's vertex when it is the id's writer
+    // (the first slot of an interior point, the writer word's slot of a shared one), with u = v = 0 for shared ids.
+    bool weld_ = weld_on() && !split_;
     uvec2 items = emit_items(split_, first_patch, end);
     for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
         uint leaf;
@@ -1982,6 +2379,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
         uint rec = t * PATCH_WORDS;
         uint count = split_ ? patches[leaf + NODE_VERTICES] : patches[rec + REC_VERTEX_COUNT];
         if (count == 0u) continue;
+        uint first_interior = weld_ ? weld[weld_patch(t) + WPATCH_FIRST_VERTEX] : 0u;
         bool quad = quad_pass;
         uint rot = patches[rec + REC_ROTATION];
         // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a
@@ -2019,7 +2417,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
                     edge_face[k] = face + (m >= 2u ? 1u : 0u);
                     edge_slot[k] = m >= 2u ? m - 1u : m;
                 }
-                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot, vector_);
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot, vector_, true);
             }
         } else {
             uvec3 w;
@@ -2037,7 +2435,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
             words[0] = uniform_words(rec);
             if (displace)
                 dp = displacement_patch(3u, uint[4](w.x, w.y, w.z, 0u), uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u),
-                                        uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u), vector_);
+                                        uint[4](t, t, t, t), uint[4](0u, 1u, 2u, 0u), vector_, true);
         }
         uint first = split_ ? patches[leaf + NODE_FIRST_VERTEX] : patches[rec + REC_FIRST_VERTEX];
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
@@ -2045,6 +2443,13 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
             uint local = side == 0u ? i : i - vertices_a;
             // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass).
             uint o = (first + i) * VERTEX_WORDS;
+            bool shared_id = false;
+            if (weld_) {
+                uint m = weld[weld_map(first + i)];
+                shared_id = (m & WELD_INTERIOR) == 0u;
+                if (shared_id ? weld[weld_writer(m)] != first + i + 1u : (m & WELD_REPRESENTATIVE) == 0u) continue;
+                o = weld_output_id(m, first_interior) * VERTEX_WORDS;
+            }
             uvec2 d = split_ ? uvec2(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V])
                       : uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local);
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
@@ -2086,7 +2491,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
             else if (displace && vector_) displace_triangle_vector(dp, w3, fixed_weight(w3[1]), fixed_weight(w3[2]), sp);
             else if (displace && quad) displace_quad_point(dp, out_uv.x, out_uv.y, sp);
             else if (displace) displace_triangle_point(dp, w3, sp);
-            store_vertex(o, out_uv.x, out_uv.y, sp);
+            store_vertex(o, shared_id ? 0u : out_uv.x, shared_id ? 0u : out_uv.y, sp);
         }
     }
 }

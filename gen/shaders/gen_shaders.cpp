@@ -59,7 +59,14 @@ constexpr Pass passes[] = {
     {"split_scan", "ctess_split_scan", ctess::gen::scan_workgroup},
     {"split_expand", "ctess_split_expand", ctess::gen::split_workgroup},
     {"split_records", "ctess_split_records", ctess::gen::split_workgroup},
-    {"split_points", "ctess_split_points", ctess::gen::emit_workgroup}};
+    {"split_points", "ctess_split_points", ctess::gen::emit_workgroup},
+    {"weld_edges", "ctess_weld_edges", ctess::gen::emit_workgroup},
+    {"weld_edge_scan", "ctess_weld_edge_scan", ctess::gen::scan_workgroup},
+    {"weld_count", "ctess_weld_count", ctess::gen::emit_workgroup},
+    {"weld_writers", "ctess_weld_writers", ctess::gen::emit_workgroup},
+    {"weld_scan", "ctess_weld_scan", ctess::gen::scan_workgroup},
+    {"weld_triangles", "ctess_weld_triangles", ctess::gen::emit_workgroup},
+    {"weld_lone_vertices", "ctess_weld_lone_vertices", ctess::gen::emit_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -54,6 +54,20 @@ PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits 
     return out;
 }
 
+PipelineOutput run_vulkan_welded(vulkan::Runner& runner, const Scene& scene, RunLimits limits) {
+    const vulkan::WeldedOutput gpu =
+        runner.tessellate_welded(scene.view(), scene.options, {limits.max_workgroups, false, 0, 0});
+    PipelineOutput out;
+    out.milliseconds = gpu.milliseconds;
+    out.counts_milliseconds = gpu.counts_milliseconds;
+    out.patches = welded_records(gpu.edges, gpu.patches, gpu.totals);
+    out.vertices.resize(gpu.vertices.size() * vertex_words);
+    if (!gpu.vertices.empty())
+        std::memcpy(out.vertices.data(), gpu.vertices.data(), gpu.vertices.size() * sizeof(rt::TessVertex));
+    out.indices = gpu.indices;
+    return out;
+}
+
 namespace {
 
 // Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[gen::param_word::words], vertex

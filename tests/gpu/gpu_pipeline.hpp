@@ -29,6 +29,8 @@ inline constexpr std::uint32_t totals_overflow = gen::totals_overflow;
 
 // Both throw std::runtime_error on failure, and when the totals overflow (unless counts_only).
 PipelineOutput run_vulkan(vulkan::Runner& runner, const Scene& scene, RunLimits limits = {});
+// The welded output (Runner::tessellate_welded) in run_cpu_welded's shape.
+PipelineOutput run_vulkan_welded(vulkan::Runner& runner, const Scene& scene, RunLimits limits = {});
 // One scene of a Dawn run and the path its scene and result files start with.
 struct DawnJob {
     const Scene* scene;

@@ -82,6 +82,49 @@ inline PipelineOutput run_cpu(const rt::CpTableSet& tables, const Scene& scene) 
     return out;
 }
 
+// The welded output (docs/shaders.md, "Welded output") in the same shape: patches holds the edge list
+// (rt::WeldedEdge words), then one rt::WeldedPatch per patch, then the totals' vertices, triangles and edges.
+inline std::vector<std::uint32_t> welded_records(const std::vector<rt::WeldedEdge>& edges,
+                                                 const std::vector<rt::WeldedPatch>& patches,
+                                                 const rt::WeldedTotals& totals) {
+    std::vector<std::uint32_t> words((edges.size() + patches.size()) * 4);
+    if (!edges.empty()) std::memcpy(words.data(), edges.data(), edges.size() * sizeof(rt::WeldedEdge));
+    if (!patches.empty())
+        std::memcpy(words.data() + edges.size() * 4, patches.data(), patches.size() * sizeof(rt::WeldedPatch));
+    words.insert(words.end(), {totals.vertices, totals.triangles, totals.edges});
+    return words;
+}
+static_assert(sizeof(rt::WeldedEdge) == 16 && sizeof(rt::WeldedPatch) == 16);
+
+// rt::setup_welded and rt::emit_welded_mesh with the scene's options.
+inline PipelineOutput run_cpu_welded(const rt::CpTableSet& tables, const Scene& scene) {
+    PipelineOutput out;
+    const auto start = std::chrono::steady_clock::now();
+    const rt::MeshView mesh = scene.view();
+    std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
+    std::vector<rt::WeldedPatch> patches(mesh.patch_count());
+    rt::WeldedTotals totals;
+    if (const rt::PipelineStatus st =
+            rt::setup_welded(tables, rt::uniform_tables, mesh, scene.options, edges, patches, totals);
+        st != rt::PipelineStatus::ok)
+        throw std::runtime_error(std::string("setup_welded: ") + rt::pipeline_status_message(st));
+    edges.resize(totals.edges);
+    std::vector<rt::TessVertex> vertices(totals.vertices);
+    out.indices.resize(std::size_t{totals.triangles} * 3);
+    if (const rt::PipelineStatus st = rt::emit_welded_mesh(tables, rt::uniform_tables, mesh, scene.options,
+                                                           edges, patches, vertices, out.indices);
+        st != rt::PipelineStatus::ok)
+        throw std::runtime_error(std::string("emit_welded_mesh: ") + rt::pipeline_status_message(st));
+    out.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    totals.clamped_edges = 0; // not counted on the GPU
+    out.patches = welded_records(edges, patches, totals);
+    out.vertices.resize(vertices.size() * vertex_words);
+    if (!vertices.empty())
+        std::memcpy(out.vertices.data(), vertices.data(), vertices.size() * sizeof(rt::TessVertex));
+    return out;
+}
+
 struct Comparison {
     std::size_t patch_mismatches = 0; // words of the patch records and totals
     std::size_t barycentric_mismatches = 0;

@@ -1116,3 +1116,38 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displ
         CHECK(c.equal());
     }
 }
+
+// The welded output on the GPU (docs/shaders.md, "Welded output"): setup_welded's edges, patch records and
+// totals, and emit_welded_mesh's vertices and indices, bit for bit (positions within the bound).
+namespace {
+PipelineOutput run_gpu_welded(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
+    if (backend() == Backend::vulkan) return run_vulkan_welded(runner(max_factor), scene, limits);
+    (void)name;
+    throw std::runtime_error("welded output: Vulkan only so far");
+}
+void check_welded(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
+    const PipelineOutput cpu = run_cpu_welded(tables_for(max_factor), scene);
+    const PipelineOutput gpu = run_gpu_welded(max_factor, scene, name, limits);
+    std::printf("%s, max %u, %s, %s, welded %s: %u patches, %u vertices, %u triangles; GPU %.1f ms, CPU %.1f ms\n",
+                backend_name(), max_factor, pattern_name(scene.options.pattern),
+                surface_name(scene.options.surface.surface), name, scene.patch_count(), cpu.total_vertices(),
+                cpu.total_triangles(), gpu.milliseconds, cpu.milliseconds);
+    const Comparison c = compare(cpu, gpu);
+    INFO(name << ": " << c.first_difference);
+    CHECK(c.equal());
+}
+} // namespace
+
+TEST_CASE("GPU welded output: the CPU's weld bit for bit, CP and uniform, triangles and quads, every surface") {
+    if (backend() != Backend::vulkan) return;
+    for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+        Scene torus = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed),
+                                  rt::Surface::pn_triangles);
+        torus.options.pattern = pattern;
+        check_welded(64, torus, "mixed torus");
+        Scene sweep = factor_sweep_grid(pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : 64, 12,
+                                        rt::Surface::phong, 4);
+        sweep.options.pattern = pattern;
+        check_welded(64, sweep, "sweep grid");
+    }
+}

@@ -56,10 +56,26 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
                                                            "_split_scan.spv",
                                                            "_split_expand.spv",
                                                            "_split_records.spv",
-                                                           "_split_points.spv"};
+                                                           "_split_points.spv",
+                                                           "_weld_edges.spv",
+                                                           "_weld_edge_scan.spv",
+                                                           "_weld_count.spv",
+                                                           "_weld_writers.spv",
+                                                           "_weld_scan.spv",
+                                                           "_weld_triangles.spv",
+                                                           "_weld_lone_vertices.spv"};
 // The split passes' indices in pass_suffix.
 constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass = 12, split_expand_pass = 13,
                    split_records_pass = 14, split_points_pass = 15;
+// The weld passes' (docs/shaders.md, "Welded output").
+constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pass = 18, weld_writers_pass = 19,
+                   weld_scan_pass = 20, weld_triangles_pass = 21, weld_lone_vertices_pass = 22;
+
+// Workgroups of count items at most per invocation's group of size, at least 1, at most max_workgroups.
+std::uint32_t grid_workgroups(std::uint64_t items, std::uint32_t size, std::uint32_t max_workgroups) {
+    const std::uint64_t groups = items / size + (items % size != 0);
+    return static_cast<std::uint32_t>(std::max<std::uint64_t>(1, std::min<std::uint64_t>(groups, max_workgroups)));
+}
 
 void compute_barrier(VkCommandBuffer cmd) {
     auto barrier = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -307,6 +323,54 @@ void MeshPipeline::record_split_emit(VkCommandBuffer cmd, VkDescriptorSet set, s
     }
 }
 
+void MeshPipeline::record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                                      std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
+                                      std::uint32_t max_workgroups) const {
+    if (max_workgroups == 0) max_workgroups = 1;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    compute_barrier(cmd); // after record_counts
+    const std::uint32_t group = rt::gpu::emit_workgroup;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_edges_pass));
+    vkCmdDispatch(cmd,
+                  grid_workgroups(std::max<std::uint64_t>(edges, std::uint64_t{mesh_vertices} + slots), group,
+                                  max_workgroups),
+                  1, 1);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_edge_scan_pass));
+    vkCmdDispatch(cmd, 1, 1, 1);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_count_pass));
+    vkCmdDispatch(cmd, std::max(1u, rt::gpu::emit_workgroups(patch_count, max_workgroups)), 1, 1);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_writers_pass));
+    vkCmdDispatch(cmd, grid_workgroups(slots, group, max_workgroups), 1, 1);
+    compute_barrier(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_scan_pass));
+    vkCmdDispatch(cmd, 1, 1, 1);
+    compute_barrier(cmd);
+}
+
+void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
+                                    std::uint32_t quad_patches, std::uint32_t mesh_vertices,
+                                    std::uint32_t max_workgroups, bool displaced, bool vector) const {
+    if (max_workgroups == 0) max_workgroups = 1;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
+    compute_barrier(cmd);
+    const std::uint32_t count[2] = {triangle_patches, quad_patches};
+    for (unsigned kind = 0; kind < 2; ++kind) {
+        if (count[kind] == 0) continue;
+        const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
+        vkCmdDispatch(cmd, rt::gpu::emit_workgroups(count[kind], max_workgroups), 1, 1);
+    }
+    if (triangle_patches + quad_patches != 0) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_triangles_pass));
+        vkCmdDispatch(cmd, rt::gpu::emit_workgroups(triangle_patches + quad_patches, max_workgroups), 1, 1);
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_lone_vertices_pass));
+    vkCmdDispatch(cmd, grid_workgroups(mesh_vertices, rt::gpu::emit_workgroup, max_workgroups), 1, 1);
+}
+
 // ---- Runner ----
 
 struct Runner::Device {
@@ -382,9 +446,9 @@ struct Runner::Device {
         auto cp = vk_struct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
         cp.queueFamilyIndex = queue_family;
         check(vkCreateCommandPool(device, &cp, nullptr, &command_pool), "vkCreateCommandPool");
-        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * rt::gpu::binding::count};
+        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * rt::gpu::binding::count};
         auto dpci = vk_struct<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
-        dpci.maxSets = 2;
+        dpci.maxSets = 3; // counts, weld counts, emit
         dpci.poolSizeCount = 1;
         dpci.pPoolSizes = &size;
         check(vkCreateDescriptorPool(device, &dpci, nullptr, &descriptor_pool), "vkCreateDescriptorPool");
@@ -525,6 +589,29 @@ Output Runner::tessellate(const rt::MeshView& mesh, const rt::PipelineOptions& o
 Output Runner::tessellate(const rt::MeshView& mesh,
                           const std::array<std::uint32_t, rt::gpu::param_word::words>& params, RunOptions run,
                           const rt::Displacement* displacement) {
+    if ((params[rt::gpu::param_word::weld] & rt::gpu::weld_flag::on) != 0)
+        throw Error("the params weld: run them with tessellate_welded");
+    return run_pipeline(mesh, params, run, displacement, nullptr);
+}
+
+WeldedOutput Runner::tessellate_welded(const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                                       RunOptions run) {
+    if (const rt::PipelineStatus st = rt::gpu::gpu_weld_status(mesh, options); st != rt::PipelineStatus::ok) {
+        throw Error(st == rt::PipelineStatus::bad_option
+                        ? "the shaders weld the cp and uniform patterns (not uniform_split) with camera "
+                          "factors, without position_ids, displacing by a valid height or vector map only "
+                          "(docs/shaders.md, \"Welded output\")"
+                        : rt::pipeline_status_message(st));
+    }
+    run.counts_only = false;
+    WeldedOutput welded;
+    run_pipeline(mesh, rt::gpu::weld_params(mesh, options), run, options.displacement, &welded);
+    return welded;
+}
+
+Output Runner::run_pipeline(const rt::MeshView& mesh,
+                            const std::array<std::uint32_t, rt::gpu::param_word::words>& params, RunOptions run,
+                            const rt::Displacement* displacement, WeldedOutput* welded) {
     namespace pw = rt::gpu::param_word;
     namespace flag = rt::gpu::displacement_flag;
     const std::uint32_t n = params[pw::patch_count];
@@ -671,7 +758,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         return words;
     };
 
-    const auto descriptor_set = [&](VkBuffer vertices, VkBuffer indices) {
+    const auto descriptor_set = [&](VkBuffer vertices, VkBuffer indices, VkBuffer weld) {
         VkDescriptorSetLayout layout = d.pipeline->set_layout();
         auto dsai = vk_struct<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
         dsai.descriptorPool = d.descriptor_pool;
@@ -681,7 +768,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         check(vkAllocateDescriptorSets(d.device, &dsai, &set), "vkAllocateDescriptorSets");
         const VkBuffer buffers[rt::gpu::binding::count] = {b_params.buffer,  b_tables.buffer,  b_mesh.buffer,
                                                            b_indices.buffer, b_patches.buffer, vertices,
-                                                           indices};
+                                                           indices,          weld};
         d.pipeline->write_descriptor_set(set, buffers);
         return set;
     };
@@ -692,7 +779,7 @@ Output Runner::tessellate(const rt::MeshView& mesh,
         const std::uint64_t patch_words = split ? split_words(capacity) : rt::gpu::patch_buffer_words(n);
         b_patches = make(patch_words * 4, nullptr, 0);
         static_cast<std::uint32_t*>(b_params.mapped)[pw::split_capacity] = capacity;
-        const VkDescriptorSet counts_set = descriptor_set(b_none.buffer, b_none.buffer);
+        const VkDescriptorSet counts_set = descriptor_set(b_none.buffer, b_none.buffer, b_none.buffer);
         const double ms = d.submit([&](VkCommandBuffer cmd) {
             if (split)
                 d.pipeline->record_split_counts(cmd, counts_set, n, roots, b_patches.buffer, 0,
@@ -743,22 +830,81 @@ Output Runner::tessellate(const rt::MeshView& mesh,
     out.totals.triangles = words[std::size_t{n} * rt::gpu::patch_words + 1];
     if (out.totals.vertices != sum_v || out.totals.triangles != sum_t)
         throw Error("the prefix sum's totals differ from the records' counts");
+    // The emit range [first, end) split at the first quad.
+    const std::uint32_t first = params[pw::first_patch], end = params[pw::end_patch], triangles = n - quads;
+    const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
+    const std::uint32_t triangle_patches = triangle_end > first ? triangle_end - first : 0,
+                        quad_patches = end > quad_first ? end - quad_first : 0;
+    if (welded != nullptr) {
+        // The weld (docs/shaders.md, "Welded output"): binding 7 with the mesh's edge list, then the weld's
+        // counting passes, then the outputs at the welded totals.
+        std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
+        const std::uint32_t edge_count = rt::weld_edge_list(mesh, edges);
+        const std::uint32_t mesh_vertices = params[pw::mesh_vertex_count];
+        const std::uint64_t weld_words =
+            rt::gpu::weld_buffer_words(edge_count, n, mesh_vertices, out.totals.vertices);
+        if (weld_words * 4 > d.limits.maxStorageBufferRange)
+            throw Error("the weld's binding 7 would be " + std::to_string(weld_words * 4) +
+                        " bytes, past this device's maxStorageBufferRange (" +
+                        std::to_string(d.limits.maxStorageBufferRange) + ")");
+        const Device::Buffer b_weld = make(weld_words * 4, nullptr, 0);
+        auto* weld = static_cast<std::uint32_t*>(b_weld.mapped);
+        weld[rt::gpu::weld_word::edges] = edge_count;
+        weld[rt::gpu::weld_word::slots] = out.totals.vertices;
+        if (edge_count != 0)
+            std::memcpy(weld + rt::gpu::weld_word::header_words, edges.data(), edge_count * sizeof(rt::WeldedEdge));
+        const VkDescriptorSet weld_set = descriptor_set(b_none.buffer, b_none.buffer, b_weld.buffer);
+        const double weld_ms = d.submit([&](VkCommandBuffer cmd) {
+            d.pipeline->record_weld_counts(cmd, weld_set, n, edge_count, mesh_vertices, out.totals.vertices,
+                                           run.max_workgroups);
+        });
+        welded->counts_milliseconds = out.counts_milliseconds + weld_ms;
+        if ((weld[rt::gpu::weld_word::status] & rt::gpu::weld_status::missing_edge) != 0)
+            throw Error("the weld met a patch edge missing from the edge list");
+        const auto* weld_edges = reinterpret_cast<const rt::WeldedEdge*>(weld + rt::gpu::weld_word::header_words);
+        const auto* weld_patches = reinterpret_cast<const rt::WeldedPatch*>(weld_edges + edge_count);
+        welded->edges.assign(weld_edges, weld_edges + edge_count);
+        welded->patches.assign(weld_patches, weld_patches + n);
+        // Recounted in 64 bits, as the CPU's setup_welded adds them up.
+        std::uint64_t weld_v = mesh_vertices, weld_t = 0;
+        for (const rt::WeldedEdge& e : welded->edges) weld_v += e.vertex_count;
+        for (const rt::WeldedPatch& wp : welded->patches) {
+            weld_v += wp.vertex_count;
+            weld_t += wp.triangle_count;
+        }
+        if (const rt::PipelineStatus st = rt::check_pipeline_size(n, weld_v, weld_t); st != rt::PipelineStatus::ok)
+            throw Error(rt::pipeline_status_message(st));
+        if ((weld[rt::gpu::weld_word::status] & rt::gpu::weld_status::overflow) != 0 ||
+            weld[rt::gpu::weld_word::vertices] != weld_v || weld[rt::gpu::weld_word::triangles] != weld_t)
+            throw Error("the weld's prefix sums differ from its records' counts");
+        welded->totals = {static_cast<std::uint32_t>(weld_v), static_cast<std::uint32_t>(weld_t), edge_count, 0};
+        const Device::Buffer b_vertices = make(weld_v * sizeof(rt::TessVertex), nullptr, 0);
+        const Device::Buffer b_out_indices = make(weld_t * 12, nullptr, 0);
+        const VkDescriptorSet emit_set = descriptor_set(b_vertices.buffer, b_out_indices.buffer, b_weld.buffer);
+        const double emit_ms = d.submit([&](VkCommandBuffer cmd) {
+            d.pipeline->record_weld_emit(cmd, emit_set, triangle_patches, quad_patches, mesh_vertices,
+                                         run.max_workgroups, displace, vector);
+        });
+        welded->milliseconds = welded->counts_milliseconds + emit_ms;
+        welded->vertices.resize(static_cast<std::size_t>(weld_v));
+        if (weld_v != 0)
+            std::memcpy(static_cast<void*>(welded->vertices.data()), b_vertices.mapped,
+                        welded->vertices.size() * sizeof(rt::TessVertex));
+        welded->indices.resize(static_cast<std::size_t>(weld_t) * 3);
+        if (weld_t != 0) std::memcpy(welded->indices.data(), b_out_indices.mapped, welded->indices.size() * 4);
+        return out;
+    }
 
     const Device::Buffer b_vertices =
         make(std::uint64_t{out.totals.vertices} * sizeof(rt::TessVertex), nullptr, 0);
     const Device::Buffer b_out_indices = make(std::uint64_t{out.totals.triangles} * 12, nullptr, 0);
-    const VkDescriptorSet emit_set = descriptor_set(b_vertices.buffer, b_out_indices.buffer);
+    const VkDescriptorSet emit_set = descriptor_set(b_vertices.buffer, b_out_indices.buffer, b_none.buffer);
     out.milliseconds += d.submit([&](VkCommandBuffer cmd) {
-        // The emit range [first, end) split at the first quad.
-        const std::uint32_t first = params[pw::first_patch], end = params[pw::end_patch],
-                            triangles = n - quads;
-        const std::uint32_t triangle_end = std::min(end, triangles), quad_first = std::max(first, triangles);
         if (split)
-            d.pipeline->record_split_emit(cmd, emit_set, out.split_leaves, triangle_end > first,
-                                          end > quad_first, run.max_workgroups, displace, vector);
+            d.pipeline->record_split_emit(cmd, emit_set, out.split_leaves, triangle_patches != 0,
+                                          quad_patches != 0, run.max_workgroups, displace, vector);
         else
-            d.pipeline->record_emit(cmd, emit_set, triangle_end > first ? triangle_end - first : 0,
-                                    end > quad_first ? end - quad_first : 0, run.max_workgroups, displace,
+            d.pipeline->record_emit(cmd, emit_set, triangle_patches, quad_patches, run.max_workgroups, displace,
                                     vector);
     });
     out.vertices.resize(out.totals.vertices);

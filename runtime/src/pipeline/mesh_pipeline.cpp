@@ -1414,6 +1414,27 @@ unsigned patch_edges(const MeshView& mesh, std::uint32_t p, WeldedEdge (&out)[4]
     return 4;
 }
 
+} // namespace
+
+std::uint32_t weld_edge_list(const MeshView& mesh, std::span<WeldedEdge> edges) {
+    if (edges.size() < weld_edge_capacity(mesh) || check_pipeline_size(mesh.patch_count(), 0, 0) != PipelineStatus::ok)
+        return 0;
+    const auto count = static_cast<std::uint32_t>(mesh.patch_count());
+    std::size_t n = 0;
+    for (std::uint32_t p = 0; p < count; ++p) {
+        WeldedEdge e[4];
+        const unsigned m = patch_edges(mesh, p, e);
+        for (unsigned k = 0; k < m; ++k) edges[n++] = e[k];
+    }
+    std::sort(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n), edge_less);
+    return static_cast<std::uint32_t>(
+        std::unique(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n),
+                    [](const WeldedEdge& a, const WeldedEdge& b) { return a.lo == b.lo && a.hi == b.hi; }) -
+        edges.begin());
+}
+
+namespace {
+
 template <PipelineFamily F>
 PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
                                 std::span<WeldedEdge> edges, std::span<WeldedPatch> patches,
@@ -1425,13 +1446,9 @@ PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const Pip
     // The distinct edges, sorted by their vertex indices, numbered by prefix sums after the mesh's vertices.
     // The unwelded counts first (counted, never emitted), checked against the limits as they add up: the weld
     // below generates every patch's pattern, so a mesh too large for the pipeline is refused before any is.
-    std::size_t n = 0;
     std::uint32_t clamped = 0;
     std::uint64_t unwelded_vertices = 0, unwelded_triangles = 0;
     for (std::uint32_t p = 0; p < count; ++p) {
-        WeldedEdge e[4];
-        const unsigned m = patch_edges(mesh, p, e);
-        for (unsigned k = 0; k < m; ++k) edges[n++] = e[k];
         const PatchRecord rec = setup_record(family, mesh, p, options, clamped);
         unwelded_vertices += rec.vertex_count;
         unwelded_triangles += rec.triangle_count;
@@ -1439,11 +1456,7 @@ PipelineStatus setup_welded_all(const F& family, const MeshView& mesh, const Pip
             s != PipelineStatus::ok)
             return s;
     }
-    std::sort(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n), edge_less);
-    n = static_cast<std::size_t>(
-        std::unique(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(n),
-                    [](const WeldedEdge& a, const WeldedEdge& b) { return a.lo == b.lo && a.hi == b.hi; }) -
-        edges.begin());
+    const std::size_t n = weld_edge_list(mesh, edges);
     std::uint64_t vertices = mesh.vertex_count, triangles = 0;
     EdgeParams params;
     for (std::size_t i = 0; i < n; ++i) {

@@ -26,7 +26,8 @@ inline constexpr std::uint32_t mesh_indices = 3;  // 3 per base triangle, then 4
 inline constexpr std::uint32_t patches = 4;       // PatchRecord per patch, then the totals, read/write
 inline constexpr std::uint32_t out_vertices = 5;  // TessVertex per output vertex, written
 inline constexpr std::uint32_t out_indices = 6;   // 3 per output triangle, written
-inline constexpr std::uint32_t count = 7;
+inline constexpr std::uint32_t weld = 7; // the welded output's edges, records and scratch (weld_word), read/write
+inline constexpr std::uint32_t count = 8;
 } // namespace binding
 
 // The params buffer (binding 0), one u32 word each; floats as their bits.
@@ -59,10 +60,17 @@ inline constexpr std::uint32_t height_map_address = 21; // rt::AddressMode; othe
 // Pattern::uniform_split (docs/shaders.md, "Splitting"): the nodes each of the split area's two regions holds
 // (split_capacity below); 0 for the other patterns.
 inline constexpr std::uint32_t split_capacity = 22;
-inline constexpr std::uint32_t words = 23;
+// The welded output (docs/shaders.md, "Welded output"): the weld_flag bits; 0 for the unwelded output.
+inline constexpr std::uint32_t weld = 23;
+inline constexpr std::uint32_t words = 24;
 } // namespace param_word
-static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
-              param_word::split_capacity + 1 == param_word::words);
+static_assert(param_word::eye + 3 == param_word::mesh_vertex_count && param_word::weld + 1 == param_word::words);
+
+// The bits of param_word::weld.
+namespace weld_flag {
+inline constexpr std::uint32_t on = 1;              // the vertex passes write the welded layout (binding 7)
+inline constexpr std::uint32_t keep_degenerate = 2; // WeldOptions::keep_degenerate
+} // namespace weld_flag
 
 // The bits of param_word::displacement_flags.
 namespace displacement_flag {
@@ -156,6 +164,44 @@ constexpr std::uint64_t split_roots(std::uint64_t triangles, std::uint64_t quads
     return triangles + 2 * quads;
 }
 
+// The welded output on the GPU (Pattern::cp and Pattern::uniform; docs/shaders.md, "Welded output";
+// docs/algorithm.md §7.4): binding 7 holds a header, the mesh's edges as rt::WeldedEdge (the host writes lo
+// and hi, sorted and distinct: rt::weld_edge_list; the passes fill the rest), one rt::WeldedPatch per patch,
+// then scratch: one writer word per shared id (mesh vertices, then at most one edge point per unwelded vertex),
+// one map word per unwelded vertex (slot) and weld_sort_words per slot for the sort of each patch's points.
+// Every count and offset is setup_welded's, bit for bit.
+namespace weld_word {
+inline constexpr std::uint32_t edges = 0;  // the edges in the list (host)
+inline constexpr std::uint32_t slots = 1;  // the unwelded vertices the scratch holds (host: the totals')
+inline constexpr std::uint32_t shared = 2; // mesh vertices + edge points: the patches' first interior id
+inline constexpr std::uint32_t vertices = 3; // WeldedTotals::vertices
+inline constexpr std::uint32_t triangles = 4; // WeldedTotals::triangles
+inline constexpr std::uint32_t status = 5;    // weld_status bits; 0 when the passes' output is whole
+inline constexpr std::uint32_t header_words = 8;
+} // namespace weld_word
+namespace weld_status {
+inline constexpr std::uint32_t overflow = 1;     // a total past 2^31 (ids) or 2^32
+inline constexpr std::uint32_t missing_edge = 2; // a patch edge not in the host's list
+} // namespace weld_status
+// A slot's map word: a shared id (below 2^31), or weld_map::interior | the rank of the slot's domain point among
+// the patch's distinct interior points, with weld_map::representative on the first slot of each point.
+namespace weld_map {
+inline constexpr std::uint32_t interior = 1u << 31;
+inline constexpr std::uint32_t representative = 1u << 30;
+inline constexpr std::uint32_t rank_mask = representative - 1;
+} // namespace weld_map
+inline constexpr std::uint32_t weld_edge_words = sizeof(WeldedEdge) / 4;
+inline constexpr std::uint32_t weld_patch_words = sizeof(WeldedPatch) / 4;
+inline constexpr std::uint32_t weld_sort_words = 3; // a slot's domain point (u, v) and its index in the patch
+
+// Words of binding 7 for a weld of edges edges, patch_count patches, mesh_vertices mesh vertices and slots
+// unwelded vertices.
+constexpr std::uint64_t weld_buffer_words(std::uint64_t edges, std::uint64_t patch_count,
+                                          std::uint64_t mesh_vertices, std::uint64_t slots) {
+    return weld_word::header_words + edges * weld_edge_words + patch_count * weld_patch_words + mesh_vertices +
+           slots * (2 + weld_sort_words);
+}
+
 // Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride
 // over the rest; rt::max_dispatch_workgroups is the one-dispatch limit every Vulkan and WebGPU device
 // allows).
@@ -200,6 +246,7 @@ pipeline_params(const MeshView& mesh, const PipelineOptions& options, std::uint3
     p[param_word::quad_count] = mesh.quad_count;
     p[param_word::quad_rule] = static_cast<std::uint32_t>(options.quad_rule);
     p[param_word::split_capacity] = options.pattern == Pattern::uniform_split ? split_capacity : 0u;
+    p[param_word::weld] = 0; // the unwelded output; a welded run sets weld_flag::on (weld_params)
     if (const Displacement* d = options.displacement; d != nullptr) {
         const bool empty = d->map.texels == nullptr || d->map.width == 0 || d->map.height == 0;
         p[param_word::displacement_flags] =
@@ -241,6 +288,22 @@ inline PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOpt
         surface != Surface::pn_aen)
         return PipelineStatus::bad_option;
     return check_pipeline_size(mesh.patch_count(), 0, 0);
+}
+
+// Whether the shaders weld mesh with options (the welded output, docs/shaders.md "Welded output"): as
+// gpu_options_status, for Pattern::cp and Pattern::uniform (a split patch's leaves are not welded on the GPU:
+// bad_option).
+inline PipelineStatus gpu_weld_status(const MeshView& mesh, const PipelineOptions& options) {
+    if (options.pattern == Pattern::uniform_split) return PipelineStatus::bad_option;
+    return gpu_options_status(mesh, options);
+}
+
+// The params of a welded run: pipeline_params with weld_flag::on and options.weld's keep_degenerate.
+inline std::array<std::uint32_t, param_word::words> weld_params(const MeshView& mesh,
+                                                               const PipelineOptions& options) {
+    std::array<std::uint32_t, param_word::words> p = pipeline_params(mesh, options);
+    p[param_word::weld] = weld_flag::on | (options.weld.keep_degenerate ? weld_flag::keep_degenerate : 0u);
+    return p;
 }
 
 } // namespace ctess::rt::gpu

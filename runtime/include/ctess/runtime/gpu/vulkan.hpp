@@ -7,7 +7,7 @@
 // record_emit; see there).
 //
 //   ctess::vulkan::MeshPipeline pipeline(device, ctess_shader_dir, 64);
-//   // descriptor set of pipeline.set_layout(): the seven buffers of rt::gpu::binding, params from
+//   // descriptor set of pipeline.set_layout(): the eight buffers of rt::gpu::binding, params from
 //   // rt::gpu::pipeline_params, the patches buffer rt::gpu::patch_buffer_words(n) words
 //   pipeline.record_counts(cmd, set, n);   // setup + prefix sum; read the totals after the records,
 //   ...                                    // size the outputs, bind them
@@ -54,9 +54,9 @@ std::string shader_file(const std::string& shader_dir, unsigned max_factor, cons
 std::vector<std::uint32_t> load_table_blob(const std::string& shader_dir, unsigned max_factor,
                                            rt::Pattern pattern);
 
-// The ten compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles and
+// The compute pipelines (patch setup, prefix sum, emit vertices and triangles of the base triangles and
 // of the quads, displaced vertices of both, vector-displaced vertices of both) on a device, with the
-// descriptor set layout of rt::gpu::binding (seven storage buffers, compute stage). Move-only; destroys what
+// descriptor set layout of rt::gpu::binding (eight storage buffers, compute stage). Move-only; destroys what
 // it created, so destroy it before the device. Creation::all_now (the default) creates every pipeline in the
 // constructor; on_first_use creates the two counting passes there and each emit pass when a record_emit first
 // needs it, so a host that never displaces or never sees a quad never compiles those passes (the driver's
@@ -79,7 +79,7 @@ class MeshPipeline {
     VkPipelineLayout pipeline_layout() const noexcept { return pipeline_layout_; }
     unsigned max_factor() const noexcept { return max_factor_; }
 
-    // Points the seven bindings of set at buffers (whole ranges), in rt::gpu::binding order. Every binding
+    // Points the eight bindings of set at buffers (whole ranges), in rt::gpu::binding order. Every binding
     // must be valid in every pass: bind 16-byte placeholders as outputs for record_counts. Binding 3's range
     // is read to its end by PN-AEN (arrayLength): give its exact words.
     void write_descriptor_set(VkDescriptorSet set, const VkBuffer (&buffers)[rt::gpu::binding::count]) const;
@@ -123,7 +123,26 @@ class MeshPipeline {
                            bool quads, std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
                            bool displaced = false, bool vector = false) const;
 
-    static constexpr unsigned passes = 16;
+    // The welded output (Pattern::cp and Pattern::uniform; docs/shaders.md, "Welded output"). After
+    // record_counts, record_weld_counts records the weld's counting passes: each edge's points and the
+    // edges' prefix sums, each patch's weld (slots mapped, interior points sorted and ranked, kept triangles),
+    // each shared id's writer, and the patches' prefix sums. Binding 7 then holds setup_welded's edges, patch
+    // records and totals (rt::gpu::weld_word); before it the host writes the header's edges and slots words
+    // and the edges' lo and hi (rt::weld_edge_list); binding 7 is rt::gpu::weld_buffer_words(edges,
+    // patch_count, mesh_vertices, slots) words, slots the unwelded vertex total. The params set
+    // rt::gpu::weld_flag::on (rt::gpu::weld_params).
+    void record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                            std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
+                            std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+    // The welded vertices (the vertex passes, each slot writing the id it owns) and kept triangles of the
+    // params' patch range, which holds triangle_patches base triangles and quad_patches quads, and the mesh
+    // vertices no face reaches; the outputs sized from binding 7's totals.
+    void record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
+                          std::uint32_t quad_patches, std::uint32_t mesh_vertices,
+                          std::uint32_t max_workgroups = rt::max_dispatch_workgroups, bool displaced = false,
+                          bool vector = false) const;
+
+    static constexpr unsigned passes = 23;
 
   private:
     void destroy() noexcept;
@@ -137,7 +156,8 @@ class MeshPipeline {
     mutable VkPipeline pipelines_[passes] = {}; // setup, prefix sum, emit vertices and triangles, of quads,
                                                 // displaced vertices of triangles and of quads,
                                                 // vector-displaced vertices of both, then the six split
-                                                // passes (roots, count, scan, expand, records, points)
+                                                // passes (roots, count, scan, expand, records, points),
+                                                // then the seven weld passes
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
@@ -150,6 +170,17 @@ struct Output {
     double counts_milliseconds = 0.0; // of which the first: patch setup and prefix sum (split: the levels)
     std::uint32_t split_leaves = 0;   // Pattern::uniform_split: the leaves drawn
     std::uint32_t split_capacity = 0; // and the nodes per split region the run took (after any regrowth)
+};
+
+// What Runner::tessellate_welded reads back: rt::setup_welded's and rt::emit_welded_mesh's outputs.
+struct WeldedOutput {
+    std::vector<rt::WeldedEdge> edges;    // totals.edges, as setup_welded's list
+    std::vector<rt::WeldedPatch> patches; // one per patch
+    rt::WeldedTotals totals;              // clamped_edges is not counted on the GPU
+    std::vector<rt::TessVertex> vertices; // totals.vertices
+    std::vector<std::uint32_t> indices;   // 3 x totals.triangles
+    double milliseconds = 0.0;            // submit to fence, all three submissions
+    double counts_milliseconds = 0.0;     // of which the first two: the unwelded counts and the weld's
 };
 
 struct RunOptions {
@@ -188,7 +219,18 @@ class Runner {
                       const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
                       RunOptions run = {}, const rt::Displacement* displacement = nullptr);
 
+    // The welded output of mesh with options (rt::gpu::gpu_weld_status must be ok: Pattern::cp or
+    // Pattern::uniform), bit for bit rt::setup_welded's and rt::emit_welded_mesh's (positions and normals within
+    // the bound of docs/shaders.md where the evaluation is not exact). The edge list is rt::weld_edge_list's,
+    // computed here; the welded totals are checked against rt::check_pipeline_size before the outputs are
+    // allocated. run.counts_only and the split options do not apply.
+    WeldedOutput tessellate_welded(const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                                   RunOptions run = {});
+
   private:
+    Output run_pipeline(const rt::MeshView& mesh,
+                        const std::array<std::uint32_t, rt::gpu::param_word::words>& params, RunOptions run,
+                        const rt::Displacement* displacement, WeldedOutput* welded);
     struct Device;
     std::unique_ptr<Device> device_;
     std::string shader_dir_;

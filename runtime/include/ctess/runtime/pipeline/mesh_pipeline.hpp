@@ -341,6 +341,12 @@ constexpr std::uint64_t weld_edge_capacity(const MeshView& mesh) {
     return 3 * std::uint64_t{mesh.triangle_count} + 4 * std::uint64_t{mesh.quad_count};
 }
 
+// The mesh's edges as setup_welded lists them: each face's (culled faces none, a quad's four), keyed lo < hi
+// (lo == hi for a degenerate face), sorted and distinct at the front of edges (weld_edge_capacity entries),
+// first_vertex and vertex_count 0. Returns how many. A function of the indices alone, so a GPU host computes it
+// once per mesh (docs/shaders.md, "Welded output"). 0 when edges is too small.
+std::uint32_t weld_edge_list(const MeshView& mesh, std::span<WeldedEdge> edges);
+
 // Counts: the sorted distinct edges (totals.edges of them, at the front of edges), every patch's counts and
 // offsets, and the totals. On a failure totals is left unchanged.
 PipelineStatus setup_welded(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
