@@ -257,10 +257,6 @@ BackendRequest backend_request_from(const Args& args, unsigned max) {
     BackendRequest r;
     r.name = choice(args.get_or("backend", "cpu"), {"cpu", "vulkan", "webgpu"}, "--backend");
     r.unwelded = args.has("unwelded");
-    if (r.name != "cpu" && !r.unwelded)
-        throw UsageError("--backend " + r.name +
-                         " runs the generated shaders, which write the unwelded output (every patch's own "
-                         "vertices; the GPU has no weld yet): add --unwelded");
     if (r.unwelded && args.has("keep-degenerate"))
         throw UsageError("--keep-degenerate goes with the welded output (--unwelded keeps every triangle)");
     if (args.has("shaders") && r.name == "cpu")
@@ -427,13 +423,19 @@ int run_mesh(int argc, char** argv) {
     // The welded emit in ranges of patches, one thread each (docs/cli.md, "Threads").
     const unsigned threads =
         args.has("threads") ? parse_unsigned(args.get("threads"), "--threads", 1, 64) : 1;
-    if (args.has("threads") && backend.unwelded)
-        throw UsageError(
-            "--threads goes with the welded output (emit_welded_mesh in ranges), not --unwelded");
+    if (args.has("threads") && (backend.unwelded || backend.name != "cpu"))
+        throw UsageError("--threads goes with the CPU's welded output (emit_welded_mesh in ranges), not "
+                         "--unwelded or a GPU backend");
     // The options alone, before the model is loaded: a pattern or factor mode the shaders lack.
     if (backend.name != "cpu")
         if (const UnweldedPlan early = unwelded_plan(rt::MeshView{}, options); !early.shaders)
             refuse_gpu_options(backend.name, pattern, options, early.gpu_status);
+    // The shaders weld CP and the clamped uniform pattern; `--pattern uniform` splits at any factor, whose
+    // leaves the GPU writes unwelded only (docs/shaders.md, "Welded output").
+    if (backend.name != "cpu" && !backend.unwelded && options.pattern == rt::Pattern::uniform_split)
+        throw UsageError("--backend " + backend.name +
+                         ": the GPU welds --pattern cp; --pattern uniform (split at any factor) is welded on the "
+                         "CPU only: add --unwelded for the shaders' unwelded output, or use --backend cpu");
 
     StageSeconds seconds;
     auto start = Clock::now();
@@ -560,7 +562,27 @@ int run_mesh(int argc, char** argv) {
             if (counted != rt::PipelineStatus::ok)
                 throw std::runtime_error(fmt::format("{}: {}", in, rt::pipeline_status_message(counted)));
             check_triangle_limit(in, unwelded.triangles, max_triangles);
+            clamped_edges = unwelded.clamped_edges;
         }
+        if (backend.name != "cpu") {
+            // The shaders' weld of the model as they see it (vertex indices order shared edges: no position
+            // ids, as --unwelded's plan): the CPU's welded faces exactly, floats within the bound
+            // (docs/cli.md, "GPU backends").
+            const UnweldedPlan plan = unwelded_plan(view, options);
+            if (!plan.shaders) refuse_gpu_options(backend.name, pattern, options, plan.gpu_status);
+            shader_pipeline = true;
+            seconds.setup = seconds_since(start);
+            start = Clock::now();
+            WeldedGpuOutput output =
+                backend.name == "vulkan" ? vulkan_welded_output(backend.run, plan.view, plan.options, device)
+                                         : webgpu_welded_output(backend.run, plan.view, plan.options, device);
+            check_triangle_limit(in, output.totals.triangles, max_triangles);
+            copy_vertices(output.vertices);
+            mesh.triangles.assign(output.indices.begin(), output.indices.end());
+            seconds.emit = seconds_since(start);
+        }
+    }
+    if (!backend.unwelded && backend.name == "cpu") {
         std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(view));
         std::vector<rt::WeldedPatch> patches(view.patch_count());
         rt::WeldedTotals totals;
@@ -612,6 +634,9 @@ int run_mesh(int argc, char** argv) {
             text += fmt::format(
                 "  \"unwelded\": {{\"shader_pipeline\": {}, \"device\": \"{}\", \"checksum\": {}}},\n",
                 shader_pipeline, json_escape(device), checksums_json(checksums));
+        else if (backend.name != "cpu")
+            text += fmt::format("  \"welded\": {{\"shader_pipeline\": true, \"device\": \"{}\"}},\n",
+                                json_escape(device));
         if (displace.on)
             text +=
                 fmt::format("  \"displacement\": {{\"mode\": \"{}\", \"tangents\": \"{}\", \"channels\": {}, "

@@ -51,6 +51,20 @@ void check_output(const UnweldedOutput& out, const rt::MeshView& mesh, const cha
             backend, out.records.size(), mesh.patch_count(), out.vertices.size(), out.indices.size()));
 }
 
+void check_welded_output(const WeldedGpuOutput& out, const rt::MeshView& mesh, const char* backend) {
+    const bool sized = out.patches.size() == mesh.patch_count() && out.edges.size() == out.totals.edges &&
+                       out.vertices.size() == out.totals.vertices &&
+                       out.indices.size() == 3 * std::size_t{out.totals.triangles};
+    bool indices_ok = sized;
+    for (std::size_t k = 0; indices_ok && k < out.indices.size(); ++k)
+        indices_ok = out.indices[k] < out.vertices.size();
+    if (!indices_ok)
+        throw std::runtime_error(fmt::format("--backend {}: the GPU's welded output is malformed ({} records for "
+                                             "{} patches, {} vertices, {} indices, or an index past the vertices)",
+                                             backend, out.patches.size(), mesh.patch_count(),
+                                             out.vertices.size(), out.indices.size()));
+}
+
 // A scratch folder under the system's temporary directory, removed with everything in it at scope exit.
 class ScratchDir {
   public:
@@ -82,9 +96,9 @@ void append_words(std::vector<std::uint32_t>& words, const void* data, std::size
 // The job file of ctess_mesh_node.mjs (its header comment has the layout): what vulkan::Runner uploads, in
 // the same order (docs/shaders.md, "Passes and bindings", "Displacement").
 std::vector<std::uint32_t> webgpu_job(const GpuRun& run, const rt::MeshView& mesh,
-                                      const rt::PipelineOptions& options) {
+                                      const rt::PipelineOptions& options, bool welded) {
     namespace pw = rt::gpu::param_word;
-    const auto params = rt::gpu::pipeline_params(mesh, options);
+    const auto params = welded ? rt::gpu::weld_params(mesh, options) : rt::gpu::pipeline_params(mesh, options);
     const rt::Displacement* d = options.displacement;
     const std::uint32_t flags = params[pw::displacement_flags];
     const bool displaced = (flags & rt::gpu::displacement_flag::on) != 0;
@@ -273,8 +287,81 @@ UnweldedOutput vulkan_output([[maybe_unused]] const GpuRun& run, [[maybe_unused]
 #endif
 }
 
-UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
-                             std::string& device) {
+WeldedGpuOutput vulkan_welded_output([[maybe_unused]] const GpuRun& run,
+                                     [[maybe_unused]] const rt::MeshView& mesh,
+                                     [[maybe_unused]] const rt::PipelineOptions& options,
+                                     [[maybe_unused]] std::string& device) {
+#if CTESS_HAVE_VULKAN
+    WeldedGpuOutput out;
+    try {
+        vulkan::Runner runner(run.shader_dir, run.max_factor);
+        device = runner.device_name();
+        vulkan::WeldedOutput gpu = runner.tessellate_welded(mesh, options);
+        out.totals = gpu.totals;
+        out.edges = std::move(gpu.edges);
+        out.patches = std::move(gpu.patches);
+        out.vertices = std::move(gpu.vertices);
+        out.indices = std::move(gpu.indices);
+    } catch (const vulkan::Error& e) {
+        throw std::runtime_error(fmt::format("--backend vulkan: {}", e.what()));
+    }
+    check_welded_output(out, mesh, "vulkan");
+    return out;
+#else
+    throw std::runtime_error(
+        "--backend vulkan: this ctess was built without Vulkan (install Debian libvulkan-dev "
+        "and rebuild; ctess::vulkan)");
+#endif
+}
+
+namespace {
+
+// node's result file (ctess_mesh_node.mjs's header comment) as words, after the run: the header checked.
+struct NodeResult {
+    std::vector<std::uint32_t> words;
+    std::uint64_t record_words = 0, vertex_words = 0, index_words = 0, name_bytes = 0;
+};
+
+NodeResult run_node_job(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                        bool welded);
+
+} // namespace
+
+WeldedGpuOutput webgpu_welded_output(const GpuRun& run, const rt::MeshView& mesh,
+                                     const rt::PipelineOptions& options, std::string& device) {
+    const NodeResult r = run_node_job(run, mesh, options, true);
+    constexpr std::uint32_t per_vertex = sizeof(rt::TessVertex) / 4;
+    const std::uint64_t patch_words = 4 * std::uint64_t{mesh.patch_count()};
+    // The records: the edges (4 words each), the patches' (4 each), then the totals' vertices, triangles and
+    // edges.
+    if (r.record_words < patch_words + 3 || (r.record_words - patch_words - 3) % 4 != 0 ||
+        r.vertex_words % per_vertex != 0 || r.index_words % 3 != 0)
+        throw std::runtime_error("--backend webgpu: the welded result file of node is malformed");
+    WeldedGpuOutput out;
+    const std::uint32_t* at = r.words.data() + 7;
+    const std::uint64_t edges = (r.record_words - patch_words - 3) / 4;
+    out.edges.resize(static_cast<std::size_t>(edges));
+    if (edges != 0) std::memcpy(static_cast<void*>(out.edges.data()), at, 16 * edges);
+    at += 4 * edges;
+    out.patches.resize(mesh.patch_count());
+    if (patch_words != 0) std::memcpy(static_cast<void*>(out.patches.data()), at, 4 * patch_words);
+    at += patch_words;
+    out.totals = {at[0], at[1], at[2], 0};
+    at += 3;
+    out.vertices.resize(static_cast<std::size_t>(r.vertex_words / per_vertex));
+    if (r.vertex_words != 0) std::memcpy(static_cast<void*>(out.vertices.data()), at, 4 * r.vertex_words);
+    at += r.vertex_words;
+    out.indices.assign(at, at + r.index_words);
+    at += r.index_words;
+    device.assign(reinterpret_cast<const char*>(at), r.name_bytes);
+    check_welded_output(out, mesh, "webgpu");
+    return out;
+}
+
+namespace {
+
+NodeResult run_node_job(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                        bool welded) {
     // Absolute, so that a shader folder named like an option (`-x`) is never read by node as one.
     const std::string module =
         std::filesystem::absolute(std::filesystem::path(run.shader_dir) / "ctess_mesh_node.mjs").string();
@@ -286,7 +373,7 @@ UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const 
     const std::string job_file = scratch.file("job.bin"), result_file = scratch.file("result.bin"),
                       log_file = scratch.file("node.log");
     {
-        const std::vector<std::uint32_t> job = webgpu_job(run, mesh, options);
+        const std::vector<std::uint32_t> job = webgpu_job(run, mesh, options, welded);
         std::ofstream job_out(job_file, std::ios::binary);
         job_out.write(reinterpret_cast<const char*>(job.data()),
                       static_cast<std::streamsize>(4 * job.size()));
@@ -317,12 +404,25 @@ UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const 
     const std::uint64_t record_words = words[2], vertex_words = words[3], index_words = words[4],
                         name_bytes = words[6];
     const std::uint64_t expected = 7 + record_words + vertex_words + index_words + (name_bytes + 3) / 4;
+    if (expected != words.size()) throw malformed();
+    return {std::move(words), record_words, vertex_words, index_words, name_bytes};
+}
+
+} // namespace
+
+UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
+                             std::string& device) {
+    const NodeResult r = run_node_job(run, mesh, options, false);
     constexpr std::uint32_t per_vertex = sizeof(rt::TessVertex) / 4;
-    if (expected != words.size() || record_words != rt::gpu::patch_buffer_words(mesh.patch_count()) ||
-        vertex_words % per_vertex != 0 || index_words % 3 != 0)
-        throw malformed();
+    const std::uint64_t record_words = r.record_words, vertex_words = r.vertex_words,
+                        index_words = r.index_words, name_bytes = r.name_bytes;
+    if (record_words != rt::gpu::patch_buffer_words(mesh.patch_count()) || vertex_words % per_vertex != 0 ||
+        index_words % 3 != 0)
+        throw std::runtime_error(fmt::format("--backend webgpu: the result file of node is malformed "
+                                             "({} bytes)",
+                                             4 * r.words.size()));
     UnweldedOutput out;
-    const std::uint32_t* at = words.data() + 7;
+    const std::uint32_t* at = r.words.data() + 7;
     out.records.resize(mesh.patch_count());
     std::memcpy(static_cast<void*>(out.records.data()), at, sizeof(rt::PatchRecord) * out.records.size());
     at += record_words;

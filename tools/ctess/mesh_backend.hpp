@@ -6,8 +6,10 @@
 
 #include <ctess/runtime/pipeline/mesh_pipeline.hpp>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace ctess::cli {
 
@@ -43,5 +45,21 @@ UnweldedOutput vulkan_output(const GpuRun& run, const rt::MeshView& mesh, const 
                              std::string& device);
 UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const rt::PipelineOptions& options,
                              std::string& device);
+
+// The shaders' welded output (docs/shaders.md, "Welded output"): rt::setup_welded's edges, records and totals
+// and rt::emit_welded_mesh's vertices and indices, for Pattern::cp and Pattern::uniform
+// (rt::gpu::gpu_weld_status must accept them). Checked as the unwelded output is (sizes, every index below the
+// vertex count); the same errors.
+struct WeldedGpuOutput {
+    rt::WeldedTotals totals;
+    std::vector<rt::WeldedEdge> edges;
+    std::vector<rt::WeldedPatch> patches;
+    std::vector<rt::TessVertex> vertices;
+    std::vector<std::uint32_t> indices;
+};
+WeldedGpuOutput vulkan_welded_output(const GpuRun& run, const rt::MeshView& mesh,
+                                     const rt::PipelineOptions& options, std::string& device);
+WeldedGpuOutput webgpu_welded_output(const GpuRun& run, const rt::MeshView& mesh,
+                                     const rt::PipelineOptions& options, std::string& device);
 
 } // namespace ctess::cli
