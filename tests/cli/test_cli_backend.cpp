@@ -41,8 +41,9 @@ std::string read_bytes(const std::string& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// `ctess mesh --unwelded --backend B --stats --out OUT ARGS`: its stats.
-nlohmann::json run_backend(const std::string& backend, const std::string& args, const std::string& out) {
+// `ctess mesh [--unwelded] --backend B --stats --out OUT ARGS`: its stats.
+nlohmann::json run_mesh(const std::string& backend, const std::string& args, const std::string& out,
+                        bool unwelded) {
     std::filesystem::remove(out);
     // Vulkan on lavapipe, Dawn on its GLES backend (the one the GPU tests use), and no leak check in ctess
     // under the asan-ubsan preset: lavapipe leaks 128 bytes in a module the loader has unloaded by exit
@@ -50,11 +51,14 @@ nlohmann::json run_backend(const std::string& backend, const std::string& args, 
     const Run r =
         ctess::test::run_shell("VK_DRIVER_FILES=" CTESS_LAVAPIPE_ICD " CTESS_DAWN_BACKEND=opengles "
                                "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " CTESS_CLI
-                               " mesh --unwelded --backend " +
-                               backend + " --stats --out " + out + " " + args + " 2>&1");
+                               " mesh " + std::string(unwelded ? "--unwelded " : "") + "--backend " + backend +
+                               " --stats --out " + out + " " + args + " 2>&1");
     INFO(backend << " " << args << "\n" << r.out);
     REQUIRE(r.exit_code == 0);
     return nlohmann::json::parse(r.out);
+}
+nlohmann::json run_backend(const std::string& backend, const std::string& args, const std::string& out) {
+    return run_mesh(backend, args, out, true);
 }
 
 // A binary PLY as ctess writes it (docs/cli.md, "Models"): 8 floats per vertex, triangles as 3 indices.
@@ -161,15 +165,41 @@ TEST_CASE("ctess mesh --unwelded: webgpu (Dawn in node) writes the CPU's file, b
     check_against_cpu("webgpu", "--in " + spider + " --dice-rate 2 --camera 0,0,400", "spider", "obj", true);
 }
 
+// The welded output (docs/cli.md, "GPU backends"): the shaders weld the model without position ids, so the
+// faces are the CPU weld's exactly and the floats within the bound (on spider.obj, flat, byte for byte).
+TEST_CASE("ctess mesh --backend vulkan (welded): the CPU's welded faces exactly, floats within the bound",
+          "[cli][mesh][vulkan]") {
+    for (const std::string surface : {"flat", "pn"}) {
+        const std::string args = "--in " + spider + " --dice-rate 2 --camera 0,0,400 --surface " + surface;
+        const std::string cpu_file = scratch("welded_" + surface + "_cpu.ply"),
+                          gpu_file = scratch("welded_" + surface + "_vulkan.ply");
+        const nlohmann::json cpu = run_mesh("cpu", args, cpu_file, false);
+        const nlohmann::json gpu = run_mesh("vulkan", args, gpu_file, false);
+        CHECK(cpu["output"] == "welded");
+        CHECK(gpu["output"] == "welded");
+        CHECK(gpu["welded"]["shader_pipeline"] == true);
+        CHECK(gpu["output_vertices"] == cpu["output_vertices"]);
+        CHECK(gpu["output_triangles"] == cpu["output_triangles"]);
+        // PN on a uv seam: without position ids the shaders order a seam's edge by vertex index, so its two
+        // sides may differ by an ulp (docs/shaders.md, "Hosts"); flat is exact either way.
+        if (surface == "flat") CHECK(gpu["output_open_edges"] == cpu["output_open_edges"]);
+        CHECK(cpu["output_triangles"].get<long>() > 100000);
+        check_within_bound(cpu_file, gpu_file);
+        if (surface == "flat") CHECK((read_bytes(cpu_file) == read_bytes(gpu_file)));
+    }
+}
+
 TEST_CASE("ctess mesh --backend: refusals exit non-zero with the reason and write nothing", "[cli][mesh]") {
     const std::string out = scratch("refused.ply");
     std::filesystem::remove(out);
     const std::string in = "--in " + box + " --dice-rate 3 --camera 1,2,3 --out " + out;
     ctess::test::check_refused(
         {
-            {in + " --backend vulkan", 2,
-             "--backend vulkan runs the generated shaders, which write the unwelded"},
-            {in + " --backend webgpu", 2, "add --unwelded"},
+            {in + " --backend vulkan --pattern uniform", 2,
+             "--backend vulkan: the GPU welds --pattern cp; --pattern uniform (split at any factor) is welded "
+             "on the CPU only"},
+            {in + " --backend webgpu --pattern uniform", 2, "add --unwelded"},
+            {in + " --backend vulkan --threads 2", 2, "--threads goes with the CPU's welded output"},
             {in + " --unwelded --backend metal", 2, "--backend: 'metal' is not one of: cpu, vulkan, webgpu"},
             {in + " --unwelded --keep-degenerate", 2, "--keep-degenerate goes with the welded output"},
             {in + " --unwelded --shaders /tmp", 2, "--shaders goes with --backend vulkan or webgpu"},
