@@ -1,8 +1,8 @@
 // ctess mesh pipeline (both pattern families: CP and uniform density), WGSL compute. Generated from
 // shaders/ctess_mesh.wgsl by gen/: the generator replaces the constants placeholder below with a block of `const`
 // lines taken from the C++ definitions (gen/shaders/shader_layout.hpp and the table blob's layout; docs/shaders.md,
-// "Generated constants"), so no layout number is written by hand here. Sixteen entry points, the same steps as
-// runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_mesh.comp.glsl, operation for
+// "Generated constants"), so no layout number is written by hand here. Twenty-three entry points, the same steps
+// as runtime/include/ctess/runtime/pipeline/mesh_pipeline.hpp and as shaders/ctess_mesh.comp.glsl, operation for
 // operation; the CP lookups mirror runtime/include/ctess/runtime/cp/patch.hpp and cp_search.hpp (docs/shaders.md).
 
 {{CONSTANTS}}
@@ -18,6 +18,10 @@
 @group(0) @binding(4) var<storage, read_write> patches: array<u32>;
 @group(0) @binding(5) var<storage, read_write> out_vertices: array<u32>;
 @group(0) @binding(6) var<storage, read_write> out_indices: array<u32>;
+// The welded output's area (rt::gpu::weld_word). WGSL atomics need atomic<u32>: weld_atomic is the same binding
+// for ctess_weld_writers' atomicMax, the only entry point that uses it (one entry point may not use both).
+@group(0) @binding(7) var<storage, read_write> weld: array<u32>;
+@group(0) @binding(7) var<storage, read_write> weld_atomic: array<atomic<u32>>;
 
 fn patch_count() -> u32 { return params[PARAM_PATCH_COUNT]; }
 fn uniform_pattern() -> bool { return params[PARAM_PATTERN] == PATTERN_UNIFORM; }
@@ -826,15 +830,17 @@ fn vertex_tangent(v: u32) -> vec4<f32> {
 }
 // displacement_patch: a patch of `corners` (3 or 4) vertices w, corner k at slot corner_slot[k] of adjacency face
 // corner_face[k], edge k (corner k -> k + 1) at edge slot edge_slot[k] of face edge_face[k] (PatchFaces).
+// faces false: no neighbours (each corner its own dominant vertex, each edge its own dominant edge).
 fn displacement_patch(corners: u32, w_in: array<u32, 4>, corner_face_in: array<u32, 4>, corner_slot_in: array<u32, 4>,
-                      edge_face_in: array<u32, 4>, edge_slot_in: array<u32, 4>, vector_: bool) -> DisplacementPatch {
+                      edge_face_in: array<u32, 4>, edge_slot_in: array<u32, 4>, vector_: bool, faces: bool) -> DisplacementPatch {
     var dp: DisplacementPatch;
     dp.corners = corners;
     var w = w_in; var corner_face = corner_face_in; var corner_slot = corner_slot_in;
     var edge_face = edge_face_in; var edge_slot = edge_slot_in;
     let n = params[PARAM_MESH_VERTEX_COUNT];
     for (var k = 0u; k < corners; k++) {
-        let dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]);
+        var dom = w[k];
+        if (faces) { dom = dominant_vertex(w[k], corner_face[k], corner_slot[k]); }
         dp.position[k] = mesh_position(w[k]);
         dp.own_uv[k] = mesh_uv(w[k]);
         dp.corner_uv[k] = mesh_uv(dom);
@@ -852,7 +858,7 @@ fn displacement_patch(corners: u32, w_in: array<u32, 4>, corner_face_in: array<u
     for (var k = 0u; k < corners; k++) {
         let a = w[k]; let b = w[(k + 1u) % corners];
         var pick = vec2<u32>(a, b);
-        if (displacement_adjacency()) {
+        if (faces && displacement_adjacency()) {
             let at = adjacency_base() + 12u * edge_face[k] + 3u + 2u * edge_slot[k];
             var c = mesh_indices[at]; var e = mesh_indices[at + 1u];
             if (c < n && e < n) {
@@ -2010,6 +2016,469 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
     }
 }
 
+// ---- the welded output (docs/shaders.md, "Welded output"; docs/algorithm.md §7.4; Pattern::cp and uniform) ----
+// Binding 7 (rt::gpu::weld_word): the header, the mesh's edges (rt::WeldedEdge, lo and hi from the host, sorted and
+// distinct), a rt::WeldedPatch per patch, then a writer word per shared id, a map word per slot (unwelded vertex)
+// and WELD_SORT_WORDS per slot. Ids as setup_welded numbers them: a corner is its mesh vertex, an edge point the
+// edge's first id plus the rank of its parameter from the lower index, an interior point the patch's first id plus
+// the rank of its exact domain point among the patch's distinct interior points.
+fn weld_on() -> bool { return (params[PARAM_WELD] & WELD_ON) != 0u; }
+fn weld_edge_count() -> u32 { return weld[WELD_EDGES]; }
+fn weld_edge(e: u32) -> u32 { return WELD_HEADER_WORDS + e * WELD_EDGE_WORDS; }
+fn weld_patch(t: u32) -> u32 { return weld_edge(weld_edge_count()) + t * WELD_PATCH_WORDS; }
+fn weld_writer(id: u32) -> u32 { return weld_patch(patch_count()) + id; }
+fn weld_map(s: u32) -> u32 { return weld_writer(params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS]) + s; }
+fn weld_sort(s: u32) -> u32 { return weld_map(weld[WELD_SLOTS]) + WELD_SORT_WORDS * s; }
+// A weld_status flag by a plain read-modify-write (the GLSL's atomicOr): these passes use `weld`, and an entry point
+// may not use weld_atomic too. The word only gains flags: ctess_weld_count's racing workgroups all set
+// WELD_MISSING_EDGE, and WELD_OVERFLOW comes from one lane of a one-workgroup scan, so a lost race still leaves the
+// flag set.
+fn weld_flag_status(flag: u32) { weld[WELD_STATUS] = weld[WELD_STATUS] | flag; }
+
+// Edge (a, b) of the sorted list (a binary search); a missing edge (a list the host did not make with
+// rt::weld_edge_list) sets WELD_MISSING_EDGE and gives edge 0.
+fn weld_find_edge(a: u32, b: u32) -> u32 {
+    let lo_ = min(a, b);
+    let hi_ = max(a, b);
+    var first = 0u;
+    var count = weld_edge_count();
+    while (count > 0u) {
+        let half_ = count / 2u;
+        let m = weld_edge(first + half_);
+        if (weld[m + WEDGE_LO] < lo_ || (weld[m + WEDGE_LO] == lo_ && weld[m + WEDGE_HI] < hi_)) {
+            first += half_ + 1u;
+            count -= half_ + 1u;
+        } else {
+            count = half_;
+        }
+    }
+    let m = weld_edge(first);
+    if (first >= weld_edge_count() || weld[m + WEDGE_LO] != lo_ || weld[m + WEDGE_HI] != hi_) {
+        weld_flag_status(WELD_MISSING_EDGE);
+        return 0u;
+    }
+    return first;
+}
+
+// The distinct interior parameters below x of the line of an edge of factor f (x = FIXED_ONE: all of them), as
+// EdgeParams (mesh_pipeline.cpp): CP line points rise with their index (ties where a segment has zero length),
+// uniform ones strictly.
+fn line_rank(f: f32, x: u32) -> u32 {
+    if (uniform_pattern()) {
+        let n = uniform_factor(f); // the first i in [1, n) whose parameter is >= x
+        var lo_ = 1u;
+        var hi_ = n;
+        while (lo_ < hi_) {
+            let mid = (lo_ + hi_) / 2u;
+            if (uniform_to_fixed(uniform_edge_parameter(mid, n)) < x) { lo_ = mid + 1u; } else { hi_ = mid; }
+        }
+        return lo_ - 1u;
+    }
+    let s = line_state(f);
+    if (s.x == 0u) { return 0u; }
+    let rec = tables[TOKEN_RECORD + 2u * (s.x - 1u)];
+    let e = Edge(rec & 0xFFFFu, s.y, rec >> 16u, tables[TOKEN_RECORD + 2u * (s.x - 1u) + 1u]);
+    var rank = 0u;
+    var previous = 0u;
+    for (var i = 1u; i < e.segments; i++) {
+        let point = edge_point(e, i);
+        if (point >= x) { break; }
+        if (point != previous) { rank++; }
+        previous = point;
+    }
+    return rank;
+}
+
+// Patch t as the weld reads it: its mesh corners, rotation and pattern halves; false for a culled patch.
+struct WeldPatch {
+    quad: bool,
+    rot: u32,
+    w: array<u32, 4>,
+    halves: array<Patch, 2>,
+    words: array<vec3<u32>, 2>,
+    counts_a: vec2<u32>, // half A's vertices and triangles (a base triangle's all)
+    vertices: u32,
+    triangles: u32,
+    first: u32,
+}
+fn weld_load(t: u32, wp: ptr<function, WeldPatch>) -> bool {
+    let rec = t * PATCH_WORDS;
+    (*wp).vertices = patches[rec + REC_VERTEX_COUNT];
+    (*wp).triangles = patches[rec + REC_TRIANGLE_COUNT];
+    (*wp).first = patches[rec + REC_FIRST_VERTEX];
+    (*wp).rot = patches[rec + REC_ROTATION];
+    (*wp).quad = t >= triangle_count();
+    (*wp).w = array<u32, 4>(0u, 0u, 0u, 0u);
+    if ((*wp).vertices == 0u) { return false; }
+    if ((*wp).quad) {
+        let wq = base_quad(t - triangle_count());
+        if (!base_quad_valid(wq)) { return false; }
+        (*wp).w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
+        var halves: array<Patch, 2>; // locals: two pointers into *wp would alias (WGSL refuses them)
+        var words: array<vec3<u32>, 2>;
+        (*wp).counts_a = quad_halves(rec, &halves, &words);
+        (*wp).halves = halves;
+        (*wp).words = words;
+        return true;
+    }
+    let w = base_triangle(t);
+    if (!base_triangle_valid(w)) { return false; }
+    (*wp).w = array<u32, 4>(w.x, w.y, w.z, 0u);
+    var half_patch: Patch; // zero-initialised: unused by the uniform pattern
+    if (!uniform_pattern()) { half_patch = record_patch(rec); }
+    (*wp).halves[0] = half_patch;
+    (*wp).words[0] = uniform_words(rec);
+    (*wp).halves[1] = (*wp).halves[0];
+    (*wp).words[1] = (*wp).words[0];
+    (*wp).counts_a = vec2<u32>((*wp).vertices, (*wp).triangles);
+    return true;
+}
+
+// Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key
+// (a triangle's base weights (w1, w2), a quad's unit square); shared slots get key (~0, ~0), which sorts last.
+// The places are slot_place's (mesh_pipeline.cpp): a corner, else the first edge whose weight is zero (a quad
+// half's diagonal is inside), else inside; an edge point's parameter is measured from the lower mesh index.
+fn weld_slot(wp: ptr<function, WeldPatch>, i: u32, key: ptr<function, vec2<u32>>) -> u32 {
+    let counts_a = (*wp).counts_a;
+    let side = select(1u, 0u, i < counts_a.x);
+    let local = select(i - counts_a.x, i, side == 0u);
+    var d: vec2<u32>;
+    if (uniform_pattern()) { d = uniform_vertex((*wp).words[side], local); } else { d = patch_vertex(&(*wp).halves[side], local); }
+    *key = vec2<u32>(0xFFFFFFFFu);
+    let rot = (*wp).rot;
+    var a: u32;
+    var b: u32;
+    var x: u32;
+    if ((*wp).quad) {
+        if (side == 1u) { d = vec2<u32>(FIXED_ONE - d.x, FIXED_ONE - d.y); } // half B: cp::quad_point
+        var on_edge = array<bool, 4>(d.y == 0u, d.x == FIXED_ONE, d.y == FIXED_ONE, d.x == 0u);
+        var r = array<u32, 4>(d.x, d.y, FIXED_ONE - d.x, FIXED_ONE - d.y); // from q_k along edge k
+        var k = 4u;
+        for (var e = 0u; e < 4u && k == 4u; e++) { if (on_edge[e]) { k = e; } }
+        if (k == 4u) {
+            *key = d;
+            return WELD_INTERIOR;
+        }
+        a = (*wp).w[(k + rot) % 4u];
+        b = (*wp).w[(k + 1u + rot) % 4u];
+        if (r[k] == 0u) { return a; }
+        if (r[k] == FIXED_ONE) { return b; }
+        x = select(FIXED_ONE - r[k], r[k], a <= b);
+    } else {
+        var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
+        var w3: array<u32, 3>;
+        for (var k = 0u; k < 3u; k++) { w3[(k + rot) % 3u] = pw[k]; }
+        for (var c = 0u; c < 3u; c++) { if (w3[c] == FIXED_ONE) { return (*wp).w[c]; } }
+        var j = 3u;
+        if (w3[0] == 0u) { j = 0u; } else if (w3[1] == 0u) { j = 1u; } else if (w3[2] == 0u) { j = 2u; }
+        if (j == 3u) {
+            *key = vec2<u32>(w3[1], w3[2]);
+            return WELD_INTERIOR;
+        }
+        let i1 = (j + 1u) % 3u;
+        let i2 = (j + 2u) % 3u;
+        a = (*wp).w[i1];
+        b = (*wp).w[i2];
+        x = select(w3[i1], w3[i2], a <= b);
+    }
+    return weld[weld_edge(weld_find_edge(a, b)) + WEDGE_FIRST_VERTEX] + line_rank(mesh_edge_factor(a, b), x);
+}
+
+// Pattern triangle k's slots (half B's after half A's vertices).
+fn weld_triangle_slots(wp: ptr<function, WeldPatch>, k: u32) -> vec3<u32> {
+    let counts_a = (*wp).counts_a;
+    let side = select(1u, 0u, k < counts_a.y);
+    let local = select(k - counts_a.y, k, side == 0u);
+    var tri: vec3<u32>;
+    if (uniform_pattern()) { tri = uniform_triangle((*wp).words[side], local); } else { tri = patch_triangle(&(*wp).halves[side], local); }
+    return tri + vec3<u32>(select(counts_a.x, 0u, side == 0u));
+}
+// A map word as an id within the patch's weld (interior ranks keep WELD_INTERIOR), for comparisons.
+fn weld_local_id(m: u32) -> u32 { return select(m, m & ~WELD_REPRESENTATIVE, (m & WELD_INTERIOR) != 0u); }
+// A map word as an output id, interior ranks after the patch's first interior id.
+fn weld_output_id(m: u32, first_interior: u32) -> u32 {
+    return select(m, first_interior + (m & WELD_RANK_MASK), (m & WELD_INTERIOR) != 0u);
+}
+fn weld_kept(ids: vec3<u32>) -> bool {
+    return (params[PARAM_WELD] & WELD_KEEP_DEGENERATE) != 0u || (ids.x != ids.y && ids.y != ids.z && ids.x != ids.z);
+}
+
+// Weld pass 1, grid-stride: clears the writer words and counts each edge's distinct interior points.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_edges(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let stride = groups.x * EMIT_GROUP;
+    let ids = params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS];
+    for (var id = gid.x; id < ids; id += stride) { weld[weld_writer(id)] = 0u; }
+    for (var e = gid.x; e < weld_edge_count(); e += stride) {
+        let m = weld_edge(e);
+        weld[m + WEDGE_VERTEX_COUNT] = line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
+    }
+}
+
+// Exclusive prefix sums in one workgroup of SCAN_GROUP over n records of `stride` words from base: the counts at
+// count_word (.y too when two) into first_word, from start. Returns the end; sets WELD_OVERFLOW past 2^31.
+// (scan_sum and scan_overflow are ctess_prefix_sum's: another entry point, so not shared with it.)
+fn weld_prefix(lane: u32, base: u32, stride: u32, n: u32, count_word: vec2<u32>, first_word: vec2<u32>, two: bool,
+               start: vec2<u32>) -> vec2<u32> {
+    if (lane == 0u) { atomicStore(&scan_overflow, 0u); }
+    var overflow = false;
+    let per = (n + (SCAN_GROUP - 1u)) / SCAN_GROUP;
+    let begin = min(n, lane * per);
+    let end = min(n, begin + per);
+    var sum = vec2<u32>(0u);
+    for (var t = begin; t < end; t++) {
+        let r = base + t * stride;
+        var count = vec2<u32>(weld[r + count_word.x], 0u);
+        if (two) { count.y = weld[r + count_word.y]; }
+        sum += count;
+        overflow = overflow || sum.x < count.x || sum.y < count.y;
+    }
+    scan_sum[lane] = sum;
+    workgroupBarrier();
+    for (var d = 1u; d < SCAN_GROUP; d <<= 1u) {
+        var add = vec2<u32>(0u);
+        if (lane >= d) { add = scan_sum[lane - d]; }
+        workgroupBarrier();
+        let before = scan_sum[lane];
+        let after = before + add;
+        overflow = overflow || after.x < before.x || after.y < before.y;
+        scan_sum[lane] = after;
+        workgroupBarrier();
+    }
+    let total = scan_sum[SCAN_GROUP - 1u];
+    let end_ = start + total;
+    overflow = overflow || end_.x < start.x || end_.y < start.y || end_.x >= WELD_INTERIOR || end_.y >= WELD_INTERIOR;
+    if (overflow) { atomicOr(&scan_overflow, 1u); }
+    var at = start + scan_sum[lane] - sum;
+    for (var t = begin; t < end; t++) {
+        let r = base + t * stride;
+        weld[r + first_word.x] = at.x;
+        at.x += weld[r + count_word.x];
+        if (two) {
+            weld[r + first_word.y] = at.y;
+            at.y += weld[r + count_word.y];
+        }
+    }
+    workgroupBarrier();
+    if (lane == 0u && atomicLoad(&scan_overflow) != 0u) { weld_flag_status(WELD_OVERFLOW); }
+    return end_;
+}
+
+// Weld pass 2, one workgroup: the edges' first ids, after the mesh vertices.
+@compute @workgroup_size(SCAN_GROUP)
+fn ctess_weld_edge_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
+    let end_ = weld_prefix(lid.x, weld_edge(0u), WELD_EDGE_WORDS, weld_edge_count(), vec2<u32>(WEDGE_VERTEX_COUNT, 0u),
+                           vec2<u32>(WEDGE_FIRST_VERTEX, 0u), false, vec2<u32>(params[PARAM_MESH_VERTEX_COUNT], 0u));
+    if (lid.x == 0u) { weld[WELD_SHARED] = end_.x; }
+}
+
+// Weld pass 3, a workgroup per patch: every slot's map word (its shared id, or its interior rank after a sort of
+// the patch's points by (u, v, slot)), the patch's distinct interior points and kept triangles.
+var<workgroup> weld_lane: array<u32, EMIT_GROUP>;
+var<workgroup> weld_kept_count: atomic<u32>;
+// A patch's count that the workgroup's barriers depend on, through workgroupUniformLoad: values read from a
+// read_write binding are not uniform to WGSL's analysis, and a barrier must be in uniform control flow.
+var<workgroup> weld_uniform: u32;
+// The inclusive prefix sum of each lane's flag in weld_lane; every lane must call it.
+fn weld_lane_scan(lane: u32, flag: bool) -> u32 {
+    weld_lane[lane] = select(0u, 1u, flag);
+    workgroupBarrier();
+    for (var d = 1u; d < EMIT_GROUP; d <<= 1u) {
+        var add = 0u;
+        if (lane >= d) { add = weld_lane[lane - d]; }
+        workgroupBarrier();
+        weld_lane[lane] += add;
+        workgroupBarrier();
+    }
+    return weld_lane[lane];
+}
+fn weld_sort_less(a: u32, b: u32) -> bool {
+    let x = vec3<u32>(weld[a], weld[a + 1u], weld[a + 2u]);
+    let y = vec3<u32>(weld[b], weld[b + 1u], weld[b + 2u]);
+    if (x.x != y.x) { return x.x < y.x; }
+    if (x.y != y.y) { return x.y < y.y; }
+    return x.z < y.z;
+}
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_count(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                    @builtin(local_invocation_id) lid: vec3<u32>) {
+    let lane = lid.x;
+    for (var t = wid.x; t < patch_count(); t += groups.x) {
+        let wpw = weld_patch(t);
+        var wp: WeldPatch;
+        let loaded = weld_load(t, &wp);
+        // The slots, 0 for a culled patch (a loaded one has some), the same for every lane.
+        if (lane == 0u) { weld_uniform = select(0u, wp.vertices, loaded); }
+        let n = workgroupUniformLoad(&weld_uniform);
+        if (n == 0u) {
+            if (lane == 0u) {
+                weld[wpw + WPATCH_VERTEX_COUNT] = 0u;
+                weld[wpw + WPATCH_TRIANGLE_COUNT] = 0u;
+            }
+            continue;
+        }
+        for (var i = lane; i < n; i += EMIT_GROUP) {
+            var key: vec2<u32>;
+            let id = weld_slot(&wp, i, &key);
+            let o = weld_sort(wp.first + i);
+            weld[weld_map(wp.first + i)] = id;
+            weld[o] = key.x;
+            weld[o + 1u] = key.y;
+            weld[o + 2u] = i;
+        }
+        storageBarrier();
+        workgroupBarrier();
+        // A bitonic sort, every comparator ascending (each block's first stage compares mirrored pairs), with the
+        // entries past n taken as +inf: a comparator that reaches past n is skipped.
+        var size = 1u;
+        while (size < n) { size <<= 1u; }
+        for (var k = 2u; k <= size; k <<= 1u) {
+            for (var j = k >> 1u; j > 0u; j >>= 1u) {
+                for (var q = lane; q < size / 2u; q += EMIT_GROUP) {
+                    let i = (q / j) * 2u * j + q % j;
+                    let partner = select(i + j, i ^ (k - 1u), j == (k >> 1u));
+                    if (partner >= n) { continue; }
+                    let oa = weld_sort(wp.first + i);
+                    let ob = weld_sort(wp.first + partner);
+                    if (weld_sort_less(ob, oa)) {
+                        for (var w = 0u; w < WELD_SORT_WORDS; w++) {
+                            let x = weld[oa + w];
+                            weld[oa + w] = weld[ob + w];
+                            weld[ob + w] = x;
+                        }
+                    }
+                }
+                storageBarrier();
+                workgroupBarrier();
+            }
+        }
+        // The interior entries (first after the sort) numbered by distinct point.
+        var distinct = 0u;
+        for (var base_ = 0u; base_ < n; base_ += EMIT_GROUP) {
+            let j = base_ + lane;
+            let o = weld_sort(wp.first + min(j, n - 1u));
+            let interior = j < n && weld[o] != 0xFFFFFFFFu;
+            let fresh = interior && (j == 0u || weld[o - WELD_SORT_WORDS] != weld[o] || weld[o - WELD_SORT_WORDS + 1u] != weld[o + 1u]);
+            let rank = distinct + weld_lane_scan(lane, fresh) - 1u;
+            if (interior) { weld[weld_map(wp.first + weld[o + 2u])] = WELD_INTERIOR | rank | select(0u, WELD_REPRESENTATIVE, fresh); }
+            distinct += weld_lane[EMIT_GROUP - 1u];
+            workgroupBarrier();
+        }
+        if (lane == 0u) { atomicStore(&weld_kept_count, 0u); }
+        storageBarrier();
+        workgroupBarrier();
+        var kept = 0u;
+        for (var k = lane; k < wp.triangles; k += EMIT_GROUP) {
+            let s = weld_triangle_slots(&wp, k) + vec3<u32>(wp.first);
+            let ids = vec3<u32>(weld_local_id(weld[weld_map(s.x)]), weld_local_id(weld[weld_map(s.y)]), weld_local_id(weld[weld_map(s.z)]));
+            if (weld_kept(ids)) { kept++; }
+        }
+        atomicAdd(&weld_kept_count, kept);
+        workgroupBarrier();
+        if (lane == 0u) {
+            weld[wpw + WPATCH_VERTEX_COUNT] = distinct;
+            weld[wpw + WPATCH_TRIANGLE_COUNT] = atomicLoad(&weld_kept_count);
+        }
+        workgroupBarrier();
+    }
+}
+
+// Weld pass 4, grid-stride over the slots: each shared id's writer, the last slot that reaches it (as the CPU's
+// patches last to first, and within a patch its last slot). atomicMax: the result does not depend on the order.
+// Only weld_atomic here (binding 7 as atomics): weld_writer and weld_map's words from the header's atomically read.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_writers(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let stride = groups.x * EMIT_GROUP;
+    let slots = atomicLoad(&weld_atomic[WELD_SLOTS]);
+    let writers = weld_edge(atomicLoad(&weld_atomic[WELD_EDGES])) + patch_count() * WELD_PATCH_WORDS; // weld_writer(0)
+    let map = writers + params[PARAM_MESH_VERTEX_COUNT] + slots; // weld_map(0)
+    for (var s = gid.x; s < slots; s += stride) {
+        let m = atomicLoad(&weld_atomic[map + s]);
+        if ((m & WELD_INTERIOR) == 0u) { atomicMax(&weld_atomic[writers + m], s + 1u); }
+    }
+}
+
+// Weld pass 5, one workgroup: the patches' first interior ids (after the shared ones) and first triangles, and the
+// totals.
+@compute @workgroup_size(SCAN_GROUP)
+fn ctess_weld_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
+    let end_ = weld_prefix(lid.x, weld_patch(0u), WELD_PATCH_WORDS, patch_count(), vec2<u32>(WPATCH_VERTEX_COUNT, WPATCH_TRIANGLE_COUNT),
+                           vec2<u32>(WPATCH_FIRST_VERTEX, WPATCH_FIRST_TRIANGLE), true, vec2<u32>(weld[WELD_SHARED], 0u));
+    if (lid.x == 0u) {
+        weld[WELD_VERTICES] = end_.x;
+        weld[WELD_TRIANGLES] = end_.y;
+    }
+}
+
+// Weld emit, a workgroup per patch of the emit range (triangles and quads): the kept triangles in pattern order.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                        @builtin(local_invocation_id) lid: vec3<u32>) {
+    let lane = lid.x;
+    let end = min(params[PARAM_END_PATCH], patch_count());
+    for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
+        var wp: WeldPatch;
+        let loaded = weld_load(t, &wp);
+        // The pattern's triangles, 0 for a culled patch, the same for every lane (ctess_weld_count).
+        if (lane == 0u) { weld_uniform = select(0u, wp.triangles, loaded); }
+        let triangles = workgroupUniformLoad(&weld_uniform);
+        if (triangles == 0u) { continue; }
+        let wpw = weld_patch(t);
+        let first_interior = weld[wpw + WPATCH_FIRST_VERTEX];
+        var written = weld[wpw + WPATCH_FIRST_TRIANGLE];
+        for (var base_ = 0u; base_ < triangles; base_ += EMIT_GROUP) {
+            let k = base_ + lane;
+            var ids = vec3<u32>(0u);
+            var keep = false;
+            if (k < triangles) {
+                let s = weld_triangle_slots(&wp, k) + vec3<u32>(wp.first);
+                ids = vec3<u32>(weld_output_id(weld[weld_map(s.x)], first_interior), weld_output_id(weld[weld_map(s.y)], first_interior),
+                                weld_output_id(weld[weld_map(s.z)], first_interior));
+                keep = weld_kept(ids);
+            }
+            let before = weld_lane_scan(lane, keep);
+            if (keep) {
+                let o = 3u * (written + before - 1u);
+                out_indices[o] = ids.x;
+                out_indices[o + 1u] = ids.y;
+                out_indices[o + 2u] = ids.z;
+            }
+            written += weld_lane[EMIT_GROUP - 1u];
+            workgroupBarrier();
+        }
+    }
+}
+
+// Weld emit, grid-stride over the mesh vertices: each one no face reaches (no writer) as its corner value, as
+// emit_welded_mesh (a corner of its own, displaced with itself as the dominant vertex and no neighbours).
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_lone_vertices(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let stride = groups.x * EMIT_GROUP;
+    let surface = params[PARAM_SURFACE];
+    let alpha = bitcast<f32>(params[PARAM_ALPHA]);
+    let vector_ = displacement_vector_mode();
+    for (var v = gid.x; v < params[PARAM_MESH_VERTEX_COUNT]; v += stride) {
+        if (weld[weld_writer(v)] != 0u) { continue; }
+        let c = mesh_corner(v);
+        let tri = array<Corner, 3>(c, c, c);
+        let w3 = array<u32, 3>(FIXED_ONE, 0u, 0u);
+        let own_normals = EdgeNormals(c.normal, c.normal);
+        var sp: SurfacePoint;
+        if (surface == SURFACE_PN_AEN) {
+            sp = evaluate_surface_aen(tri, array<EdgeNormals, 3>(own_normals, own_normals, own_normals), w3, alpha);
+        } else {
+            sp = evaluate_surface(tri, w3, surface, alpha);
+        }
+        if (displacement_on()) {
+            let own = array<u32, 4>(v, v, v, 0u);
+            let no_faces = array<u32, 4>(0u, 0u, 0u, 0u);
+            let dp = displacement_patch(3u, own, no_faces, no_faces, no_faces, no_faces, vector_, false);
+            if (vector_) { sp = displace_triangle_vector(dp, w3, 0.0, 0.0, sp); } else { sp = displace_triangle_point(dp, w3, sp); }
+        }
+        store_vertex(v * VERTEX_WORDS, 0u, 0u, sp);
+    }
+}
+
 // Passes 3 and 4 (vertices), a workgroup per patch (looping when there are more patches than workgroups): every
 // output vertex of the emit range's triangles (quad_pass false: ctess_emit_vertices) or quads (true:
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
@@ -2032,6 +2501,9 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
     // Split (docs/shaders.md, "Splitting"): a workgroup per leaf of the patches in [first_patch, end) instead of
     // per patch; a leaf's vertices are its pattern's, mapped on the root.
     let split_ = split_pattern();
+    // Welded (docs/shaders.md, "Welded output"): each slot writes its weld id's vertex when it is the id's writer
+    // (the first slot of an interior point, the writer word's slot of a shared one), with u = v = 0 for shared ids.
+    let weld_ = weld_on() && !split_;
     let items = emit_items(split_, first_patch, end);
     for (var item = items.x + wid.x; item < items.y; item += groups.x) {
         var leaf: u32;
@@ -2041,6 +2513,8 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
         var count = patches[rec + REC_VERTEX_COUNT];
         if (split_) { count = patches[leaf + NODE_VERTICES]; }
         if (count == 0u) { continue; }
+        var first_interior = 0u;
+        if (weld_) { first_interior = weld[weld_patch(t) + WPATCH_FIRST_VERTEX]; }
         let quad = quad_pass;
         let rot = patches[rec + REC_ROTATION];
         // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a
@@ -2079,7 +2553,7 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
                     edge_face[k] = face + select(0u, 1u, m >= 2u);
                     edge_slot[k] = select(m, m - 1u, m >= 2u);
                 }
-                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot, vector_);
+                dp = displacement_patch(4u, wp, corner_face, corner_slot, edge_face, edge_slot, vector_, true);
             }
         } else {
             let w = base_triangle(t);
@@ -2097,7 +2571,7 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
             if (displace) {
                 dp = displacement_patch(3u, array<u32, 4>(w.x, w.y, w.z, 0u), array<u32, 4>(t, t, t, t),
                                         array<u32, 4>(0u, 1u, 2u, 0u), array<u32, 4>(t, t, t, t), array<u32, 4>(0u, 1u, 2u, 0u),
-                                        vector_);
+                                        vector_, true);
             }
         }
         var first = patches[rec + REC_FIRST_VERTEX];
@@ -2107,8 +2581,19 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
             let local = select(i - vertices_a, i, side == 0u);
             var d: vec2<u32>;
             // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass).
+            var o = (first + i) * VERTEX_WORDS;
+            var shared_id = false;
+            if (weld_) {
+                let m = weld[weld_map(first + i)];
+                shared_id = (m & WELD_INTERIOR) == 0u;
+                if (shared_id) {
+                    if (weld[weld_writer(m)] != first + i + 1u) { continue; }
+                } else if ((m & WELD_REPRESENTATIVE) == 0u) {
+                    continue;
+                }
+                o = weld_output_id(m, first_interior) * VERTEX_WORDS;
+            }
             if (split_) {
-                let o = (first + i) * VERTEX_WORDS;
                 d = vec2<u32>(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V]);
             }
             else if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
@@ -2158,7 +2643,7 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
             } else if (displace) {
                 sp = displace_triangle_point(dp, w3, sp);
             }
-            store_vertex((first + i) * VERTEX_WORDS, out_uv.x, out_uv.y, sp);
+            store_vertex(o, select(out_uv.x, 0u, shared_id), select(out_uv.y, 0u, shared_id), sp);
         }
     }
 }

@@ -1,11 +1,12 @@
 // `ctess mesh --backend webgpu` (docs/cli.md, "GPU backends"): runs the generated WGSL mesh pipeline on Dawn in
 // Node (npm `webgpu`) through the WebGPU host beside it (ctess_webgpu.mjs, docs/shaders.md "Hosts"), on one job
-// file that ctess writes, and writes the unwelded output to a result file. Installed beside the shaders.
+// file that ctess writes, and writes the output (unwelded, or welded where the params weld) to a result file. Installed beside the shaders.
 //   node ctess_mesh_node.mjs JOB_FILE RESULT_FILE
 // JOB_FILE, little-endian u32 words: 'CTMN' (0x4E4D5443), version 1, max factor, then the word counts P, V, I, T,
 // D, G, then P params words (rt::gpu::pipeline_params), V mesh vertex floats, I index words (the triangles, the
 // quads, then the adjacency where the params need it), T texel floats, D direction floats, G tangent floats.
-// RESULT_FILE: 'CTMR' (0x524D5443), version 1, the word counts of the records (with the totals), vertices and
+// RESULT_FILE: 'CTMR' (0x524D5443), version 1, the word counts of the records (with the totals; for params that
+// weld, the edge list, the welded patch records and the welded totals' vertices, triangles and edges), vertices and
 // indices, the run's milliseconds (f32 bits), the adapter's description's byte length, then those arrays and the
 // description (UTF-8, zero-padded to 4 bytes).
 // Backend: CTESS_DAWN_BACKEND names one (e.g. "opengles", "vulkan"); otherwise Dawn's Vulkan backend (core
@@ -93,8 +94,10 @@ try {
     const pipeline = await MeshPipeline.create(device, { maxFactor, load });
     const C = pipeline.constants;
     const displaced = (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_ON) !== 0;
+    // The welded output (params' weld flag, docs/shaders.md "Welded output") runs in one batch.
+    const welded = (params[C.PARAM_WELD] & C.WELD_ON) !== 0;
     const out = await pipeline.run(params, vertices, indices, {
-        batchVertices: 1 << 20,
+        ...(welded ? {} : { batchVertices: 1 << 20 }),
         ...(displaced ? { texels, ...(directions.length ? { directions } : {}), ...(tangents.length ? { tangents } : {}) } : {}),
     });
     const outVertices = await pipeline.read(out.vertices, out.vertexCount * C.VERTEX_WORDS);
@@ -104,14 +107,23 @@ try {
     if (deviceError) throw new Error(`WebGPU: ${deviceError}`);
     const info = adapter.info ?? {};
     const name = new TextEncoder().encode(`Dawn ${info.description || info.vendor || 'adapter'}`);
-    const header = new Uint32Array([0x524D5443, 1, out.patches.length, outVertices.length, outIndices.length, 0, name.length]);
+    // Welded: the records are the edge list, the patch records, then the totals' vertices, triangles and edges.
+    let records = out.patches;
+    if (welded) {
+        const { edges, patches } = out.weld;
+        records = new Uint32Array(edges.length + patches.length + 3);
+        records.set(edges, 0);
+        records.set(patches, edges.length);
+        records.set([out.weld.vertexCount, out.weld.triangleCount, out.weld.edgeCount], edges.length + patches.length);
+    }
+    const header = new Uint32Array([0x524D5443, 1, records.length, outVertices.length, outIndices.length, 0, name.length]);
     new Float32Array(header.buffer, 20, 1)[0] = out.milliseconds;
-    const words = header.length + out.patches.length + outVertices.length + outIndices.length + Math.ceil(name.length / 4);
+    const words = header.length + records.length + outVertices.length + outIndices.length + Math.ceil(name.length / 4);
     const result = new Uint32Array(words);
     result.set(header, 0);
-    result.set(out.patches, header.length);
-    result.set(outVertices, header.length + out.patches.length);
-    result.set(outIndices, header.length + out.patches.length + outVertices.length);
+    result.set(records, header.length);
+    result.set(outVertices, header.length + records.length);
+    result.set(outIndices, header.length + records.length + outVertices.length);
     new Uint8Array(result.buffer, 4 * (words - Math.ceil(name.length / 4))).set(name);
     writeFileSync(resultFile, result);
 } catch (e) {

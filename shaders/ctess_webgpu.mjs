@@ -10,8 +10,8 @@
 //   const out = await pipeline.run(params, meshVertices, meshIndices); // out.vertices, out.indices: GPUBuffers
 //
 // Bindings (group 0, BINDINGS storage buffers): params, table blob, mesh vertices, mesh indices, patch records and
-// totals, output vertices, output indices. Errors throw; a mesh past the pipeline's limits throws an Error whose
-// `pastLimits` is true, before any output buffer is made.
+// totals, output vertices, output indices, the welded output's area (a placeholder when not welding). Errors throw;
+// a mesh past the pipeline's limits throws an Error whose `pastLimits` is true, before any output buffer is made.
 
 export function f32Bits(x) {
     return new Uint32Array(new Float32Array([x]).buffer)[0];
@@ -25,6 +25,43 @@ export function requiredLimits(adapter) {
         maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize,
         maxBufferSize: adapter.limits.maxBufferSize,
     };
+}
+
+// The mesh's edges as rt::weld_edge_list lists them (docs/shaders.md, "Welded output"): each face's (a face with an
+// index >= vertexCount is culled and has none; a triangle's (w0, w1), (w1, w2), (w2, w0), a quad's four), keyed
+// lo = min, hi = max, sorted by (lo, hi) and distinct. meshIndices: the triangles' 3 indices each, then the quads'
+// 4. Returns a Uint32Array of 4 words per edge (rt::WeldedEdge: lo, hi, then 0, 0 for the passes to fill).
+export function weldEdgeList(meshIndices, triangleCount, quadCount, vertexCount) {
+    // A counting sort by lo (lo < vertexCount), then each lo's few hi sorted: no 64-bit keys in JS.
+    const start = new Uint32Array(vertexCount + 1);
+    const each = (visit) => {
+        for (let f = 0; f < triangleCount + quadCount; f++) {
+            const m = f < triangleCount ? 3 : 4, at = f < triangleCount ? 3 * f : 3 * triangleCount + 4 * (f - triangleCount);
+            let culled = false;
+            for (let k = 0; k < m; k++) culled ||= meshIndices[at + k] >= vertexCount;
+            if (culled) continue;
+            for (let k = 0; k < m; k++) {
+                const i = meshIndices[at + k], j = meshIndices[at + (k + 1) % m];
+                visit(Math.min(i, j), Math.max(i, j));
+            }
+        }
+    };
+    each((lo) => { start[lo + 1]++; });
+    for (let v = 0; v < vertexCount; v++) start[v + 1] += start[v];
+    const hi = new Uint32Array(start[vertexCount]), fill = start.slice(0, vertexCount);
+    each((lo, h) => { hi[fill[lo]++] = h; });
+    const out = new Uint32Array(4 * hi.length);
+    let n = 0;
+    for (let lo = 0; lo < vertexCount; lo++) {
+        const his = hi.subarray(start[lo], start[lo + 1]).sort();
+        for (let k = 0; k < his.length; k++) {
+            if (k > 0 && his[k] === his[k - 1]) continue;
+            out[4 * n] = lo;
+            out[4 * n + 1] = his[k];
+            n++;
+        }
+    }
+    return out.slice(0, 4 * n);
 }
 
 export class MeshPipeline {
@@ -122,7 +159,7 @@ export class MeshPipeline {
 
     // Encodes passes ([pipeline, workgroups] each, one compute pass each; workgroups a count, or [buffer, offset]
     // for an indirect dispatch of the three words at that byte offset; or {copy: [source, offset, target,
-    // offset, bytes]} between passes) on the seven buffers, submits them and resolves when the queue is done, with
+    // offset, bytes]} between passes) on the eight buffers, submits them and resolves when the queue is done, with
     // the milliseconds from submit.
     async dispatch(buffers, passes) {
         const bindGroup = this.device.createBindGroup({
@@ -161,6 +198,8 @@ export class MeshPipeline {
     // docs/algorithm.md §8.7: RGB texels, 3 floats each, and run() gets options.tangents)}; run() then needs
     // options.texels. Values rt::displacement_valid refuses (non-finite numbers, factorBound < 0, normalStep
     // outside (0, 0.5]) throw.
+    // weld (true: the welded output, docs/shaders.md "Welded output"; run() then welds), keepDegenerate
+    // (WeldOptions::keep_degenerate: keep the welded triangles whose ids repeat; default false).
     params(f, extra = 0) {
         const C = this.constants;
         const code = (value, what, names) => {
@@ -183,6 +222,7 @@ export class MeshPipeline {
         p[C.PARAM_QUAD_COUNT] = f.quadCount ?? 0;
         p[C.PARAM_QUAD_RULE] = code(f.quadRule ?? 'longer-pair', 'quad rule',
                                     { 'longer-pair': C.QUAD_RULE_LONGER_PAIR, 'as-labelled': C.QUAD_RULE_AS_LABELLED });
+        p[C.PARAM_WELD] = f.weld ? C.WELD_ON | (f.keepDegenerate ? C.WELD_KEEP_DEGENERATE : 0) : 0;
         const d = f.displacement;
         if (d) {
             const [scale, factor, offset, normalStep, bound] = [d.scale ?? 1, d.factor ?? 1, d.offset ?? 0,
@@ -217,6 +257,16 @@ export class MeshPipeline {
     // levels again on regions grown to what it needed (at least twice the nodes), up to options.maxSplitCapacity
     // (default: the device's binding size), past which run() throws, naming the nodes needed. The result then
     // also has splitLeaves and splitCapacity.
+    // Welding (params' weld; docs/shaders.md, "Welded output"; 'cp' and 'uniform' only, in one batch: the
+    // 'uniform-split' pattern and options.batchVertices throw): after the counts (the unwelded totals are the weld's
+    // slots) binding 7 gets the mesh's edge list (weldEdgeList) and the weld's counting passes run (each edge's
+    // points and their prefix sums, each patch's weld, each shared id's writer, the patches' prefix sums); a patch
+    // edge missing from the list or a prefix sum past its bound throws, and the welded totals are recounted and
+    // checked against the limits before the outputs are made at those totals. The emit is the vertex passes (each
+    // slot writing the welded vertex it owns), ctess_weld_triangles (the kept triangles) and
+    // ctess_weld_lone_vertices (the mesh vertices no face reaches). vertexCount and triangleCount are the welded
+    // totals, and the result also has weld: {edges (rt::WeldedEdge, 4 words each), patches (rt::WeldedPatch, 4
+    // words each; Uint32Arrays), edgeCount, vertexCount, triangleCount}. With countsOnly the weld's counts run too.
     async run(params, meshVertices, meshIndices, options = {}) {
         const C = this.constants;
         const { max_patches: maxPatches, max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
@@ -240,6 +290,10 @@ export class MeshPipeline {
             if (words * 4 > maxBinding) throw new Error(`${what}: ${words * 4} bytes in one storage binding, past the device's ${maxBinding}`);
         // Splitting: binding 4 holds the split area after the totals (rt::gpu::split_buffer_words).
         const split = params[C.PARAM_PATTERN] === C.PATTERN_UNIFORM_SPLIT;
+        const welded = (params[C.PARAM_WELD] & C.WELD_ON) !== 0;
+        if (welded && split) throw new Error("weld: the 'uniform-split' pattern is not welded on the GPU (docs/shaders.md, \"Welded output\")");
+        if (welded && (options.batchVertices ?? Infinity) !== Infinity)
+            throw new Error('weld: the welded output is emitted in one batch (no batchVertices)');
         const roots = n + quads; // one per base triangle, two per quad
         // A default start never above the run's limit; at least the roots.
         let capacity = split ? Math.max(options.splitCapacity || Math.min(65536, options.maxSplitCapacity || 65536), roots, 1) : 0;
@@ -259,12 +313,15 @@ export class MeshPipeline {
         // Vector displacement (docs/algorithm.md §8.7) has its own two.
         const vector = displaced && (params[C.PARAM_DISPLACEMENT_FLAGS] & C.DISPLACEMENT_VECTOR) !== 0;
         const vertexPass = (quad) => `emit_${vector ? 'vector_' : ''}${displaced ? 'displaced_' : ''}${quad ? 'quad_' : ''}vertices`;
+        // A welded run's triangles are ctess_weld_triangles'.
         const wanted = [first0 < Math.min(end0, triangles) ? vertexPass(false) : null,
-                        first0 < Math.min(end0, triangles) ? 'emit_triangles' : null,
+                        first0 < Math.min(end0, triangles) && !welded ? 'emit_triangles' : null,
                         end0 > Math.max(first0, triangles) ? vertexPass(true) : null,
-                        end0 > Math.max(first0, triangles) ? 'emit_quad_triangles' : null];
+                        end0 > Math.max(first0, triangles) && !welded ? 'emit_quad_triangles' : null];
         const [emitVertices, emitTriangles, emitQuadVertices, emitQuadTriangles] =
             options.countsOnly ? [] : await Promise.all(wanted.map((name) => name && this.pipelineOf(name)));
+        const weldPasses = welded ? await Promise.all(['weld_edges', 'weld_edge_scan', 'weld_count', 'weld_writers', 'weld_scan',
+                                                       'weld_triangles', 'weld_lone_vertices'].map((name) => this.pipelineOf(name))) : [];
         // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
@@ -282,7 +339,9 @@ export class MeshPipeline {
             const bParams = keep(this.storage(params));
             const bMesh = keep(this.storage(meshVertices));
             const bIndices = keep(this.storage(meshIndices));
-            const none = [keep(this.storage(null, 4)), keep(this.storage(null, 4))];
+            // Placeholders for bindings 5 to 7 where a pass writes no outputs or no weld (every binding is bound in
+            // every pass; one buffer may not be two writable bindings).
+            const none = [keep(this.storage(null, 4)), keep(this.storage(null, 4)), keep(this.storage(null, 4))];
             const setup = options.setup ? [this.extra[options.setup.entry], options.setup.groups]
                                         : [this.setup, Math.max(1, Math.min(Math.ceil(n / this.setupGroup), maxGroups))];
             let bPatches, patches, splitLeaves = 0, milliseconds = 0;
@@ -322,7 +381,7 @@ export class MeshPipeline {
             }
             const totalV = patches[n * this.patchWords], totalT = patches[n * this.patchWords + 1];
             const splitInfo = split ? { splitLeaves, splitCapacity: capacity } : {};
-            if (options.countsOnly)
+            if (options.countsOnly && !welded)
                 return await scoped({ patches, vertexCount: totalV, triangleCount: totalT, vertices: null, indices: null, milliseconds, ...splitInfo });
             // The u32 totals wrap (the shader then writes TOTALS_OVERFLOW): recount them exactly before sizing.
             let sumV = 0, sumT = 0;
@@ -332,6 +391,11 @@ export class MeshPipeline {
             }
             if (sumV > maxVertices || sumT > maxTriangles) throw pastLimits(`${sumV} vertices, ${sumT} triangles`);
             if (sumV !== totalV || sumT !== totalT) throw new Error("the prefix sum's totals differ from the records' counts");
+            if (welded) {
+                return await scoped(await this.weldRun({ params, patches, slots: totalV, meshIndices, tables, bParams, bMesh,
+                                                         bIndices, bPatches, none, keep, milliseconds, maxGroups, maxBinding,
+                                                         emitVertices, emitQuadVertices, weldPasses, pastLimits, options }));
+            }
             const vertexCount = totalV, triangleCount = totalT;
             if (vertexCount * C.VERTEX_WORDS * 4 > maxBinding || triangleCount * 12 > maxBinding)
                 throw new Error(`${vertexCount} vertices / ${triangleCount} triangles need more than ${maxBinding} ` +
@@ -360,7 +424,7 @@ export class MeshPipeline {
                 const passes = [[splitPasses[5], split ? Math.min(splitLeaves, maxGroups) : 0], [emitVertices, groups[0]],
                                 [emitTriangles, groups[0]], [emitQuadVertices, groups[1]], [emitQuadTriangles, groups[1]]]
                     .filter(([, g]) => g > 0);
-                milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices], passes);
+                milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices, none[2]], passes);
                 first = end;
             }
             return await scoped({ patches, vertexCount, triangleCount, vertices, indices, milliseconds, ...splitInfo });
@@ -370,6 +434,64 @@ export class MeshPipeline {
         } finally {
             for (const b of temporary) b.destroy();
         }
+    }
+
+    // run()'s welded branch (docs/shaders.md, "Welded output"), after the counts: binding 7 (rt::gpu::weld_word,
+    // rt::gpu::weld_buffer_words words) with the header and the edge list, the weld's counting passes as the Vulkan
+    // host's MeshPipeline::record_weld_counts, the welded totals recounted and checked, then the emit as
+    // record_weld_emit. Resolves to run()'s result.
+    async weldRun({ params, patches, slots, meshIndices, tables, bParams, bMesh, bIndices, bPatches, none, keep, milliseconds,
+                    maxGroups, maxBinding, emitVertices, emitQuadVertices, weldPasses, pastLimits, options }) {
+        const C = this.constants;
+        const { max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
+        const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT], triangles = n - quads;
+        const meshVertexCount = params[C.PARAM_MESH_VERTEX_COUNT];
+        const edgeList = weldEdgeList(meshIndices, triangles, quads, meshVertexCount);
+        const edgeCount = edgeList.length / C.WELD_EDGE_WORDS;
+        const weldWords = C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS + n * C.WELD_PATCH_WORDS + meshVertexCount +
+                          slots * (2 + C.WELD_SORT_WORDS);
+        if (weldWords * 4 > maxBinding)
+            throw new Error(`weld: binding 7 would be ${weldWords * 4} bytes, past the device's ${maxBinding}`);
+        const head = new Uint32Array(C.WELD_HEADER_WORDS + edgeList.length);
+        head[C.WELD_EDGES] = edgeCount;
+        head[C.WELD_SLOTS] = slots;
+        head.set(edgeList, C.WELD_HEADER_WORDS);
+        const bWeld = keep(this.storage(head, weldWords));
+        const group = C.EMIT_GROUP;
+        const grid = (items) => Math.max(1, Math.min(Math.ceil(items / group), maxGroups)); // grid-stride passes
+        const [edgePoints, edgeScan, count, writers, scan, weldTriangles, lone] = weldPasses;
+        milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, none[0], none[1], bWeld],
+                                            [[edgePoints, grid(Math.max(edgeCount, meshVertexCount + slots))], [edgeScan, 1],
+                                             [count, Math.max(1, Math.min(n, maxGroups))], [writers, grid(slots)], [scan, 1]]);
+        const records = C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS;
+        const words = await this.read(bWeld, records + n * C.WELD_PATCH_WORDS);
+        if (words[C.WELD_STATUS] & C.WELD_MISSING_EDGE) throw new Error('weld: a patch edge is missing from the edge list');
+        const edges = words.slice(C.WELD_HEADER_WORDS, records), weldPatches = words.slice(records);
+        // Recounted exactly, as the CPU's setup_welded adds them up.
+        let vertexCount = meshVertexCount, triangleCount = 0;
+        for (let e = 0; e < edgeCount; e++) vertexCount += edges[e * C.WELD_EDGE_WORDS + C.WEDGE_VERTEX_COUNT];
+        for (let t = 0; t < n; t++) {
+            vertexCount += weldPatches[t * C.WELD_PATCH_WORDS + C.WPATCH_VERTEX_COUNT];
+            triangleCount += weldPatches[t * C.WELD_PATCH_WORDS + C.WPATCH_TRIANGLE_COUNT];
+        }
+        if (vertexCount > maxVertices || triangleCount > maxTriangles) throw pastLimits(`welded: ${vertexCount} vertices, ${triangleCount} triangles`);
+        if ((words[C.WELD_STATUS] & C.WELD_OVERFLOW) || words[C.WELD_VERTICES] !== vertexCount || words[C.WELD_TRIANGLES] !== triangleCount)
+            throw new Error("weld: the prefix sums differ from the records' counts");
+        const weld = { edges, patches: weldPatches, edgeCount, vertexCount, triangleCount };
+        if (options.countsOnly) return { patches, vertexCount, triangleCount, vertices: null, indices: null, milliseconds, weld };
+        if (vertexCount * C.VERTEX_WORDS * 4 > maxBinding || triangleCount * 12 > maxBinding)
+            throw new Error(`${vertexCount} welded vertices / ${triangleCount} triangles need more than ${maxBinding} ` +
+                            'bytes in one storage binding');
+        const vertices = this.storage(null, vertexCount * C.VERTEX_WORDS, options.vertexUsage ?? 0);
+        const indices = this.storage(null, triangleCount * 3, options.indexUsage ?? 0);
+        // The emit range's triangles and quads (the params' [first, end)), then every mesh vertex no face reaches.
+        const first = params[C.PARAM_FIRST_PATCH], end = params[C.PARAM_END_PATCH];
+        const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))];
+        const passes = [[emitVertices, Math.min(groups[0], maxGroups)], [emitQuadVertices, Math.min(groups[1], maxGroups)],
+                        [weldTriangles, Math.min(groups[0] + groups[1], maxGroups)], [lone, grid(meshVertexCount)]]
+            .filter(([, g]) => g > 0);
+        milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices, bWeld], passes);
+        return { patches, vertexCount, triangleCount, vertices, indices, milliseconds, weld };
     }
 
     // The pipeline of a pass of layout.json, compiled once, on first use (a failure is not kept: the next run

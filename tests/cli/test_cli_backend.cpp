@@ -48,11 +48,11 @@ nlohmann::json run_mesh(const std::string& backend, const std::string& args, con
     // Vulkan on lavapipe, Dawn on its GLES backend (the one the GPU tests use), and no leak check in ctess
     // under the asan-ubsan preset: lavapipe leaks 128 bytes in a module the loader has unloaded by exit
     // (tests/gpu/test_gpu.cpp).
-    const Run r =
-        ctess::test::run_shell("VK_DRIVER_FILES=" CTESS_LAVAPIPE_ICD " CTESS_DAWN_BACKEND=opengles "
-                               "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " CTESS_CLI
-                               " mesh " + std::string(unwelded ? "--unwelded " : "") + "--backend " + backend +
-                               " --stats --out " + out + " " + args + " 2>&1");
+    const Run r = ctess::test::run_shell(
+        "VK_DRIVER_FILES=" CTESS_LAVAPIPE_ICD " CTESS_DAWN_BACKEND=opengles "
+        "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " CTESS_CLI " mesh " +
+        std::string(unwelded ? "--unwelded " : "") + "--backend " + backend + " --stats --out " + out + " " +
+        args + " 2>&1");
     INFO(backend << " " << args << "\n" << r.out);
     REQUIRE(r.exit_code == 0);
     return nlohmann::json::parse(r.out);
@@ -196,7 +196,8 @@ TEST_CASE("ctess mesh --backend: refusals exit non-zero with the reason and writ
     ctess::test::check_refused(
         {
             {in + " --backend vulkan --pattern uniform", 2,
-             "--backend vulkan: the GPU welds --pattern cp; --pattern uniform (split at any factor) is welded "
+             "--backend vulkan: the GPU welds --pattern cp; --pattern uniform (split at any factor) is "
+             "welded "
              "on the CPU only"},
             {in + " --backend webgpu --pattern uniform", 2, "add --unwelded"},
             {in + " --backend vulkan --threads 2", 2, "--threads goes with the CPU's welded output"},

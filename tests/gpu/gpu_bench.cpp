@@ -1,9 +1,10 @@
 // ctess_gpu_bench: times the GPU mesh pipeline on lavapipe (Vulkan) and Dawn (WebGPU on GLES/llvmpipe), for
 // one or more shader builds in the same run, on the 1,152-patch factor sweep and a 50 k-patch grid; with
 // --split, uniform density clamped to N beside split (docs/shaders.md, "Splitting") on scenes whose deepest
-// leaves are at depth 0, 1 and 2, for the first build. Not a test: docs/shaders.md quotes its output.
+// leaves are at depth 0, 1 and 2, for the first build; with --weld, the welded output beside the unwelded one
+// on lavapipe (docs/shaders.md, "Welded output"). Not a test: docs/shaders.md quotes its output.
 //
-//   ctess_gpu_bench [--split] LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]
+//   ctess_gpu_bench [--split | --weld] LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]
 //
 // Each build runs each scene once to warm the driver's shader cache, then `repeats` times; the median of the
 // submit-to-completion times is printed. Every build's vertices and indices must equal the CPU pipeline's
@@ -113,15 +114,66 @@ int split_table(const Build& build, vulkan::Runner& runner, int repeats) {
     return 0;
 }
 
+// The welded output (docs/shaders.md, "Welded output") beside the unwelded one, CP and uniform, on lavapipe:
+// median times of the whole run and of its counting submissions, the welded run relative to the unwelded, and
+// the CPU's single-threaded setup_welded + emit_welded_mesh on the same scene. Every welded output must equal
+// the CPU's.
+int weld_table(vulkan::Runner& runner, int repeats) {
+    struct Case {
+        const char* name;
+        Scene scene;
+    };
+    Scene big = factor_sweep_grid(64, 158, rt::Surface::pn_triangles);
+    big.options.dice.dice_rate = 12.0f;
+    std::vector<Case> cases = {
+        {"1,152-patch sweep, PN", factor_sweep_grid(64, 24, rt::Surface::pn_triangles)},
+        {"50 k-patch grid, PN, DiceRate 12", big}};
+    std::printf(
+        "\n| scene | pattern | output | vertices | triangles | lavapipe median ms (of %d) | counting, ms | "
+        "welded / unwelded | CPU ms (one thread) |\n|---|---|---|---|---|---|---|---|---|\n",
+        repeats);
+    for (Case& c : cases)
+        for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
+            c.scene.options.pattern = pattern;
+            PipelineOutput cpu[2];
+            std::vector<double> ms[2], counts_ms[2], cpu_ms[2];
+            for (int r = -1; r < repeats; ++r)
+                for (int k = 0; k < 2; ++k) { // unwelded, welded
+                    const PipelineOutput reference = k == 0 ? run_cpu(rt::cp_tables_64, c.scene)
+                                                            : run_cpu_welded(rt::cp_tables_64, c.scene);
+                    const PipelineOutput gpu =
+                        k == 0 ? run_vulkan(runner, c.scene) : run_vulkan_welded(runner, c.scene);
+                    if (r < 0) {
+                        cpu[k] = reference;
+                        if (!same_output(reference, gpu)) return 1;
+                        continue;
+                    }
+                    ms[k].push_back(gpu.milliseconds);
+                    counts_ms[k].push_back(gpu.counts_milliseconds);
+                    cpu_ms[k].push_back(reference.milliseconds);
+                }
+            for (int k = 0; k < 2; ++k) {
+                char ratio[32] = "1";
+                if (k == 1) std::snprintf(ratio, sizeof ratio, "%.2f", median(ms[1]) / median(ms[0]));
+                std::printf("| %s | %s | %s | %u | %u | %.1f | %.1f | %s | %.1f |\n", c.name,
+                            pattern == rt::Pattern::cp ? "CP" : "uniform", k == 0 ? "unwelded" : "welded",
+                            cpu[k].total_vertices(), cpu[k].total_triangles(), median(ms[k]),
+                            median(counts_ms[k]), ratio, median(cpu_ms[k]));
+            }
+            std::fflush(stdout);
+        }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     std::vector<Build> builds;
-    bool split_only = false;
+    bool split_only = false, weld_only = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--split") {
-            split_only = true;
+        if (arg == "--split" || arg == "--weld") {
+            (arg == "--split" ? split_only : weld_only) = true;
             continue;
         }
         const std::size_t eq = arg.find('=');
@@ -149,6 +201,7 @@ int main(int argc, char** argv) {
         std::vector<std::unique_ptr<vulkan::Runner>> runners;
         for (const Build& b : builds) runners.push_back(std::make_unique<vulkan::Runner>(b.dir, 64));
         if (split_only) return split_table(builds.front(), *runners.front(), repeats);
+        if (weld_only) return weld_table(*runners.front(), repeats);
         std::printf(
             "| scene | patches | vertices | triangles | backend | build | median ms (of %d) | of which "
             "setup + prefix sum, ms | emit passes, ms |\n"

@@ -71,9 +71,11 @@ PipelineOutput run_vulkan_welded(vulkan::Runner& runner, const Scene& scene, Run
 namespace {
 
 // Scene file for run_wgsl.mjs, u32 little-endian: "CTSC", 3, params[gen::param_word::words], vertex
-// floats, index word count, then the vertex floats and the index words (binding 3: mesh_index_words).
-void write_scene_file(const Scene& scene, const std::string& path) {
-    const std::array<std::uint32_t, pipeline_param_words> params = pipeline_params(scene);
+// floats, index word count, then the vertex floats and the index words (binding 3: mesh_index_words). Welded:
+// the params are rt::gpu::weld_params (their weld word tells run_wgsl.mjs).
+void write_scene_file(const Scene& scene, const std::string& path, bool welded) {
+    const std::array<std::uint32_t, pipeline_param_words> params =
+        welded ? rt::gpu::weld_params(scene.view(), scene.options) : pipeline_params(scene);
     const std::vector<std::uint32_t> index_words = mesh_index_words(scene);
     const std::vector<float> vertex_floats = mesh_vertex_data(scene); // with displacement's directions
     std::ofstream f(path, std::ios::binary);
@@ -106,18 +108,16 @@ PipelineOutput read_result_file(const std::string& path) {
     return out;
 }
 
-} // namespace
-
-std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string& script,
-                                     const std::string& shader_dir, unsigned max_factor,
-                                     const std::vector<DawnJob>& jobs, RunLimits limits) {
+std::vector<PipelineOutput> run_dawn_jobs(const std::string& node, const std::string& script,
+                                          const std::string& shader_dir, unsigned max_factor,
+                                          const std::vector<DawnJob>& jobs, RunLimits limits, bool welded) {
     std::string cmd = "CTESS_MAX_WORKGROUPS=" + std::to_string(limits.max_workgroups) +
                       " CTESS_SPLIT_CAPACITY=" + std::to_string(limits.split_capacity) +
                       " CTESS_MAX_SPLIT_CAPACITY=" + std::to_string(limits.max_split_capacity) +
                       (limits.counts_only ? " CTESS_COUNTS_ONLY=1 " : " ") + node + " " + script + " " +
                       shader_dir + " " + std::to_string(max_factor);
     for (const DawnJob& job : jobs) {
-        write_scene_file(*job.scene, job.work_file + ".scene");
+        write_scene_file(*job.scene, job.work_file + ".scene", welded);
         std::remove((job.work_file + ".result").c_str());
         cmd += " " + job.work_file + ".scene " + job.work_file + ".result";
     }
@@ -138,6 +138,28 @@ std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string&
     std::vector<PipelineOutput> out;
     for (const DawnJob& job : jobs) out.push_back(read_result_file(job.work_file + ".result"));
     return out;
+}
+
+} // namespace
+
+std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string& script,
+                                     const std::string& shader_dir, unsigned max_factor,
+                                     const std::vector<DawnJob>& jobs, RunLimits limits) {
+    return run_dawn_jobs(node, script, shader_dir, max_factor, jobs, limits, false);
+}
+
+std::vector<PipelineOutput> run_dawn_welded(const std::string& node, const std::string& script,
+                                            const std::string& shader_dir, unsigned max_factor,
+                                            const std::vector<DawnJob>& jobs, RunLimits limits) {
+    // As Runner::tessellate_welded: the options the shaders weld, and no split or counts-only run.
+    for (const DawnJob& job : jobs)
+        if (const rt::PipelineStatus st = rt::gpu::gpu_weld_status(job.scene->view(), job.scene->options);
+            st != rt::PipelineStatus::ok)
+            throw std::runtime_error(std::string("the shaders do not weld this scene: ") +
+                                     rt::pipeline_status_message(st));
+    limits.counts_only = false;
+    limits.split_capacity = limits.max_split_capacity = 0;
+    return run_dawn_jobs(node, script, shader_dir, max_factor, jobs, limits, true);
 }
 
 } // namespace ctess::gpu_test

@@ -42,5 +42,11 @@ struct DawnJob {
 std::vector<PipelineOutput> run_dawn(const std::string& node, const std::string& script,
                                      const std::string& shader_dir, unsigned max_factor,
                                      const std::vector<DawnJob>& jobs, RunLimits limits = {});
+// The welded output (docs/shaders.md, "Welded output") of each job's scene in run_cpu_welded's shape, as
+// run_vulkan_welded: the scene files carry rt::gpu::weld_params, which run_wgsl.mjs runs welded. Throws when
+// rt::gpu::gpu_weld_status refuses a scene.
+std::vector<PipelineOutput> run_dawn_welded(const std::string& node, const std::string& script,
+                                            const std::string& shader_dir, unsigned max_factor,
+                                            const std::vector<DawnJob>& jobs, RunLimits limits = {});
 
 } // namespace ctess::gpu_test

@@ -1,5 +1,6 @@
 // The WebGPU host's refusals of displacement data that the params do not describe (docs/shaders.md,
-// "Displacement"), on Dawn's null backend: run() throws before it dispatches anything, so no driver is needed.
+// "Displacement") and of welded runs it does not make ("Welded output"), and its weld edge list, on Dawn's null
+// backend: run() throws before it dispatches anything, so no driver is needed.
 //   node host_checks.mjs SHADER_DIR
 // Exit status 0 when every check holds, else 1 with the failed checks.
 import { readFileSync } from 'node:fs';
@@ -10,7 +11,7 @@ Object.assign(globalThis, globals);
 const [dir] = process.argv.slice(2);
 const gpu = create(['backend=null']); // kept referenced for the whole run (docs/shaders.md, "Running them")
 const adapter = await gpu.requestAdapter();
-const { MeshPipeline, requiredLimits } = await import(pathToFileURL(`${dir}/ctess_webgpu.mjs`).href);
+const { MeshPipeline, requiredLimits, weldEdgeList } = await import(pathToFileURL(`${dir}/ctess_webgpu.mjs`).href);
 const device = await adapter.requestDevice({ requiredLimits: requiredLimits(adapter) });
 const load = (name) => {
     const bytes = readFileSync(`${dir}/${name}`);
@@ -58,6 +59,22 @@ await throws('vector mode with 4 x 3 - 1 tangent floats', () => pipeline.run(vec
              /11 tangent floats given for 3 mesh vertices/);
 await throws('vector mode with tangents that are not a Float32Array', () => pipeline.run(vector, vertices, indices, { texels: new Float32Array(6), tangents: [0, 0, 0, 1] }),
              /tangent floats/);
+
+// The welded output: the params' weld word, the refusals, and rt::weld_edge_list's list (culled faces add none,
+// a degenerate face its lo == hi edge, shared edges once, sorted by (lo, hi)).
+const weld = pipeline.params({ ...base, weld: true, keepDegenerate: true });
+check('params: weld and keepDegenerate set WELD_ON | WELD_KEEP_DEGENERATE',
+      weld[C.PARAM_WELD] === (C.WELD_ON | C.WELD_KEEP_DEGENERATE));
+check('params: no weld leaves PARAM_WELD 0', pipeline.params(base)[C.PARAM_WELD] === 0);
+await throws('weld with the uniform-split pattern', () => pipeline.run(pipeline.params({ ...base, weld: true, pattern: 'uniform-split' }), vertices, indices),
+             /uniform-split/);
+await throws('weld with a batched emit', () => pipeline.run(weld, vertices, indices, { batchVertices: 1000 }), /one batch/);
+// Triangles (2, 1, 0), (0, 2, 3), (1, 1, 4), (0, 1, 9) (culled: 9 >= 5 vertices), quad (3, 2, 4, 0).
+const list = weldEdgeList(new Uint32Array([2, 1, 0, 0, 2, 3, 1, 1, 4, 0, 1, 9, 3, 2, 4, 0]), 4, 1, 5);
+const expected = [[0, 1], [0, 2], [0, 3], [0, 4], [1, 1], [1, 2], [1, 4], [2, 3], [2, 4]];
+check(`weldEdgeList: ${list.length / 4} edges, sorted and distinct`,
+      list.length === 4 * expected.length && expected.every(([lo, hi], e) => list[4 * e] === lo && list[4 * e + 1] === hi &&
+                                                                          list[4 * e + 2] === 0 && list[4 * e + 3] === 0));
 device.destroy();
 console.log(`${failed ? 'FAILED' : 'passed'}: ${failed} failed`);
 process.exit(failed ? 1 : 0);

@@ -90,7 +90,8 @@ inline std::vector<std::uint32_t> welded_records(const std::vector<rt::WeldedEdg
     std::vector<std::uint32_t> words((edges.size() + patches.size()) * 4);
     if (!edges.empty()) std::memcpy(words.data(), edges.data(), edges.size() * sizeof(rt::WeldedEdge));
     if (!patches.empty())
-        std::memcpy(words.data() + edges.size() * 4, patches.data(), patches.size() * sizeof(rt::WeldedPatch));
+        std::memcpy(words.data() + edges.size() * 4, patches.data(),
+                    patches.size() * sizeof(rt::WeldedPatch));
     words.insert(words.end(), {totals.vertices, totals.triangles, totals.edges});
     return words;
 }

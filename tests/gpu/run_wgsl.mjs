@@ -7,6 +7,9 @@
 // CTESS_MAX_WORKGROUPS caps every dispatch (the passes stride over the rest; default MAX_DISPATCH_WORKGROUPS,
 // the one-dispatch limit); CTESS_COUNTS_ONLY=1 runs only the setup and prefix-sum passes and returns no outputs;
 // CTESS_SPLIT_CAPACITY and CTESS_MAX_SPLIT_CAPACITY are run()'s splitCapacity and maxSplitCapacity (0: defaults).
+// A scene whose params weld (PARAM_WELD's WELD_ON; docs/shaders.md, "Welded output") runs welded, in one batch, and
+// its result's records are the weld's: the edges' words, the patches' words, then the welded vertex, triangle and
+// edge totals (run_cpu_welded's shape, tests/gpu/pipeline_output.hpp).
 // The passes run through the installed host module ctess_webgpu.mjs beside the shaders (docs/shaders.md,
 // "Hosts"), which takes every layout number from the generated ctess_mesh_<max>.layout.json. File formats: tests/gpu/gpu_pipeline.cpp. Exit status 0, or 1 with a message (also when the mesh's totals do
 // not fit in 32 bits: the prefix sum then writes 0xFFFFFFFF).
@@ -67,12 +70,14 @@ for (let job = 0; job < files.length; job += 2) {
         meshVertices = meshVertices.slice(0, own);
     }
     const n = params[C.PARAM_PATCH_COUNT];
+    const welded = (params[C.PARAM_WELD] & C.WELD_ON) !== 0;
     // Emit in batches of about 128k vertices, one submit each (the emit passes' patch range), as a host that streams
-    // a large mesh would.
+    // a large mesh would; a welded run in one.
     let out;
     try {
         out = await pipeline.run(params, meshVertices, meshIndices, {
-            maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly, batchVertices: 1 << 17,
+            maxWorkgroups: Number(process.env.CTESS_MAX_WORKGROUPS ?? C.MAX_DISPATCH_WORKGROUPS), countsOnly,
+            batchVertices: welded ? undefined : 1 << 17,
             splitCapacity: Number(process.env.CTESS_SPLIT_CAPACITY ?? 0), maxSplitCapacity: Number(process.env.CTESS_MAX_SPLIT_CAPACITY ?? 0),
             ...displacement });
     } catch (e) {
@@ -84,7 +89,15 @@ for (let job = 0; job < files.length; job += 2) {
     out.vertices?.destroy();
     out.indices?.destroy();
     if (deviceError) fail(deviceError);
-    const patches = out.patches, ms = out.milliseconds;
+    const ms = out.milliseconds;
+    let patches = out.patches;
+    if (welded) {
+        const w = out.weld;
+        patches = new Uint32Array(w.edges.length + w.patches.length + 3);
+        patches.set(w.edges, 0);
+        patches.set(w.patches, w.edges.length);
+        patches.set([w.vertexCount, w.triangleCount, w.edgeCount], w.edges.length + w.patches.length);
+    }
 
     const header = new Uint32Array([0x4F475443, patches.length, vertices.length, indices.length, 0]);
     new Float32Array(header.buffer, 16, 1)[0] = ms;
@@ -94,7 +107,7 @@ for (let job = 0; job < files.length; job += 2) {
     result.set(vertices, header.length + patches.length);
     result.set(indices, header.length + patches.length + vertices.length);
     writeFileSync(files[job + 1], result);
-    console.log(`run_wgsl: ${info.description ?? backend}: ${n} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles, ${ms.toFixed(2)} ms`);
+    console.log(`run_wgsl: ${info.description ?? backend}: ${n} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles${welded ? ' (welded)' : ''}, ${ms.toFixed(2)} ms`);
 }
 device.destroy();
 process.exit(0);

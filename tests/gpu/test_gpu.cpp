@@ -5,11 +5,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -1120,34 +1122,144 @@ TEST_CASE("GPU second implementation: CP PN, uniform Phong, quads, PN-AEN, displ
 // The welded output on the GPU (docs/shaders.md, "Welded output"): setup_welded's edges, patch records and
 // totals, and emit_welded_mesh's vertices and indices, bit for bit (positions within the bound).
 namespace {
-PipelineOutput run_gpu_welded(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
+PipelineOutput run_gpu_welded(unsigned max_factor, const Scene& scene, const char* name,
+                              RunLimits limits = {}) {
     if (backend() == Backend::vulkan) return run_vulkan_welded(runner(max_factor), scene, limits);
-    (void)name;
-    throw std::runtime_error("welded output: Vulkan only so far");
+    std::string work = std::string("welded_") + name; // a file name in a shell command: no spaces
+    std::replace(work.begin(), work.end(), ' ', '_');
+    return run_dawn_welded(node_command(), CTESS_RUN_WGSL, CTESS_SHADER_DIR, max_factor,
+                           {{&scene, dawn_work_file(max_factor, work.c_str())}}, limits)
+        .front();
 }
 void check_welded(unsigned max_factor, const Scene& scene, const char* name, RunLimits limits = {}) {
     const PipelineOutput cpu = run_cpu_welded(tables_for(max_factor), scene);
     const PipelineOutput gpu = run_gpu_welded(max_factor, scene, name, limits);
-    std::printf("%s, max %u, %s, %s, welded %s: %u patches, %u vertices, %u triangles; GPU %.1f ms, CPU %.1f ms\n",
-                backend_name(), max_factor, pattern_name(scene.options.pattern),
-                surface_name(scene.options.surface.surface), name, scene.patch_count(), cpu.total_vertices(),
-                cpu.total_triangles(), gpu.milliseconds, cpu.milliseconds);
+    std::printf(
+        "%s, max %u, %s, %s, welded %s: %u patches, %u vertices, %u triangles; GPU %.1f ms, CPU %.1f ms\n",
+        backend_name(), max_factor, pattern_name(scene.options.pattern),
+        surface_name(scene.options.surface.surface), name, scene.patch_count(), cpu.total_vertices(),
+        cpu.total_triangles(), gpu.milliseconds, cpu.milliseconds);
     const Comparison c = compare(cpu, gpu);
     INFO(name << ": " << c.first_difference);
     CHECK(c.equal());
 }
 } // namespace
 
-TEST_CASE("GPU welded output: the CPU's weld bit for bit, CP and uniform, triangles and quads, every surface") {
-    if (backend() != Backend::vulkan) return;
+TEST_CASE(
+    "GPU welded output: the CPU's weld bit for bit, CP and uniform, triangles and quads, every surface") {
     for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
         Scene torus = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed),
                                   rt::Surface::pn_triangles);
         torus.options.pattern = pattern;
         check_welded(64, torus, "mixed torus");
-        Scene sweep = factor_sweep_grid(pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : 64, 12,
-                                        rt::Surface::phong, 4);
+        Scene sweep = factor_sweep_grid(pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : 64,
+                                        12, rt::Surface::phong, 4);
         sweep.options.pattern = pattern;
         check_welded(64, sweep, "sweep grid");
     }
+}
+
+namespace {
+// Faces the weld's general path takes (docs/algorithm.md §7.4): a triangle and a quad with a repeated corner,
+// a culled triangle (an index past the vertices) and a mesh vertex no face reaches, added to a scene.
+void add_awkward_faces(Scene& s, bool faces = true) {
+    const auto n = static_cast<std::uint32_t>(s.vertices.size() / rt::mesh_vertex_floats);
+    if (faces) s.indices.insert(s.indices.end(), {0, 0, 5, 7, 7, 7, 1, 2, n + 7, 9, 3, 9});
+    if (faces && !s.quads.empty()) s.quads.insert(s.quads.end(), {3, 3, 4, 10, 6, 11, 6, 12});
+    const float* v = &s.vertices[0];
+    detail::push_vertex(s, {v[0] + 0.25f, v[1] - 0.5f, v[2] + 0.125f}, {0, 0, 1}, 0.3f,
+                        0.7f); // reached by no face
+}
+// The welded output's edges by index: how many edges of the kept triangles are used once, twice, more.
+std::array<std::size_t, 3> edge_uses(const PipelineOutput& out) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> uses;
+    for (std::size_t t = 0; t + 3 <= out.indices.size(); t += 3)
+        for (unsigned k = 0; k < 3; ++k) {
+            const std::uint32_t a = out.indices[t + k], b = out.indices[t + (k + 1) % 3];
+            ++uses[{std::min(a, b), std::max(a, b)}];
+        }
+    std::array<std::size_t, 3> count{};
+    for (const auto& [edge, n] : uses) ++count[std::min<std::size_t>(n, 3) - 1];
+    return count;
+}
+} // namespace
+
+TEST_CASE(
+    "GPU welded output: a closed mixed torus stays closed and 2-manifold by index, both maximum factors") {
+    for (const unsigned max_factor : {64u, 256u}) {
+        Scene torus = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed),
+                                  max_factor == 64 ? rt::Surface::phong : rt::Surface::flat);
+        const PipelineOutput cpu = run_cpu_welded(tables_for(max_factor), torus);
+        const PipelineOutput gpu =
+            run_gpu_welded(max_factor, torus, max_factor == 64 ? "weld_closed" : "weld_closed_256");
+        const Comparison c = compare(cpu, gpu);
+        INFO(c.first_difference);
+        CHECK(c.equal());
+        const std::array<std::size_t, 3> uses = edge_uses(gpu);
+        CHECK(uses[0] == 0); // no open edge
+        CHECK(uses[2] == 0); // no edge of three triangles
+        CHECK(uses[1] > 30 * torus.patch_count());
+    }
+}
+
+TEST_CASE("GPU welded output: repeated corners, culled faces, a vertex no face reaches, kept degenerate "
+          "triangles, 7 workgroups a dispatch") {
+    std::vector<std::pair<const char*, Scene>> scenes;
+    for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform})
+        for (const bool keep : {false, true}) {
+            Scene s = factor_sweep_grid(pattern == rt::Pattern::uniform ? rt::uniform_tables.max_factor : 64,
+                                        8, keep ? rt::Surface::pn_triangles : rt::Surface::flat, 3);
+            s.options.pattern = pattern;
+            s.options.weld.keep_degenerate = keep;
+            add_awkward_faces(s);
+            check_welded(64, s,
+                         pattern == rt::Pattern::cp ? (keep ? "awkward_cp_keep" : "awkward_cp")
+                                                    : (keep ? "awkward_uniform_keep" : "awkward_uniform"),
+                         RunLimits{7});
+        }
+}
+
+TEST_CASE("GPU welded output: displaced by a height and a vector map, with an unreached vertex") {
+    using rt::AddressMode, rt::Pattern, rt::Surface;
+    for (const bool vector : {false, true}) {
+        // displaced_case's grid and maps, with the awkward faces and the unreached vertex added before the
+        // directions (and tangents) are made for every vertex.
+        DisplacedCase c{factor_sweep_grid(64, 12, Surface::pn_triangles, 3),
+                        vector ? vector_texture(AddressMode::repeat, 0.02f, 0.004f)
+                               : height_texture(AddressMode::repeat, 0.02f, 0.004f),
+                        AddressMode::repeat, true};
+        for (std::size_t v = 0; v < c.scene.vertices.size(); v += rt::mesh_vertex_floats) {
+            c.scene.vertices[v + 6] = 2.5f * c.scene.vertices[v + 6] - 0.7f;
+            c.scene.vertices[v + 7] = 2.5f * c.scene.vertices[v + 7] - 0.7f;
+        }
+        add_awkward_faces(c.scene, !vector); // the uv tangents of vector mode need whole faces
+        displace(c.scene, *c.data, true);
+        check_welded(64, c.scene, vector ? "weld_vector" : "weld_height");
+    }
+}
+
+#if defined(CTESS_GPU_HAVE_MODELS)
+TEST_CASE("GPU welded output: PN-AEN on the split-normal icosphere (uv seams and hard edges)") {
+    for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform})
+        check_welded(64, aen_scene(64, rt::Surface::pn_aen, pattern),
+                     pattern == rt::Pattern::cp ? "weld_aen" : "weld_aen_uniform");
+}
+#endif
+
+TEST_CASE("Vulkan host: the split pattern is not welded on the GPU, an error, not output", "[vulkan]") {
+    Scene s = factor_sweep_grid(64, 4, rt::Surface::flat);
+    s.options.pattern = rt::Pattern::uniform_split;
+    CHECK_THROWS_WITH(runner(64).tessellate_welded(s.view(), s.options),
+                      Catch::Contains("not uniform_split"));
+    // The unwelded entry point refuses welded params.
+    CHECK_THROWS_WITH(runner(64).tessellate(s.view(), rt::gpu::weld_params(s.view(), s.options)),
+                      Catch::Contains("tessellate_welded"));
+}
+
+// The welded output on the second WebGPU implementation too (Dawn's Vulkan backend on SwiftShader): one run of
+// a mixed grid (CP, PN, repeated corners, a culled face, a vertex no face reaches).
+TEST_CASE("GPU second implementation: the welded output against the CPU's", "[second-implementation]") {
+    Scene s = factor_sweep_grid(64, 8, rt::Surface::pn_triangles, 3);
+    add_awkward_faces(s);
+    check_welded(64, s, "second_welded");
 }

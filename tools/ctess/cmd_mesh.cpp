@@ -433,9 +433,10 @@ int run_mesh(int argc, char** argv) {
     // The shaders weld CP and the clamped uniform pattern; `--pattern uniform` splits at any factor, whose
     // leaves the GPU writes unwelded only (docs/shaders.md, "Welded output").
     if (backend.name != "cpu" && !backend.unwelded && options.pattern == rt::Pattern::uniform_split)
-        throw UsageError("--backend " + backend.name +
-                         ": the GPU welds --pattern cp; --pattern uniform (split at any factor) is welded on the "
-                         "CPU only: add --unwelded for the shaders' unwelded output, or use --backend cpu");
+        throw UsageError(
+            "--backend " + backend.name +
+            ": the GPU welds --pattern cp; --pattern uniform (split at any factor) is welded on the "
+            "CPU only: add --unwelded for the shaders' unwelded output, or use --backend cpu");
 
     StageSeconds seconds;
     auto start = Clock::now();
@@ -573,8 +574,8 @@ int run_mesh(int argc, char** argv) {
             shader_pipeline = true;
             seconds.setup = seconds_since(start);
             start = Clock::now();
-            WeldedGpuOutput output =
-                backend.name == "vulkan" ? vulkan_welded_output(backend.run, plan.view, plan.options, device)
+            WeldedGpuOutput output = backend.name == "vulkan"
+                                         ? vulkan_welded_output(backend.run, plan.view, plan.options, device)
                                          : webgpu_welded_output(backend.run, plan.view, plan.options, device);
             check_triangle_limit(in, output.totals.triangles, max_triangles);
             copy_vertices(output.vertices);

@@ -59,10 +59,10 @@ void check_welded_output(const WeldedGpuOutput& out, const rt::MeshView& mesh, c
     for (std::size_t k = 0; indices_ok && k < out.indices.size(); ++k)
         indices_ok = out.indices[k] < out.vertices.size();
     if (!indices_ok)
-        throw std::runtime_error(fmt::format("--backend {}: the GPU's welded output is malformed ({} records for "
-                                             "{} patches, {} vertices, {} indices, or an index past the vertices)",
-                                             backend, out.patches.size(), mesh.patch_count(),
-                                             out.vertices.size(), out.indices.size()));
+        throw std::runtime_error(fmt::format(
+            "--backend {}: the GPU's welded output is malformed ({} records for "
+            "{} patches, {} vertices, {} indices, or an index past the vertices)",
+            backend, out.patches.size(), mesh.patch_count(), out.vertices.size(), out.indices.size()));
 }
 
 // A scratch folder under the system's temporary directory, removed with everything in it at scope exit.
@@ -98,7 +98,8 @@ void append_words(std::vector<std::uint32_t>& words, const void* data, std::size
 std::vector<std::uint32_t> webgpu_job(const GpuRun& run, const rt::MeshView& mesh,
                                       const rt::PipelineOptions& options, bool welded) {
     namespace pw = rt::gpu::param_word;
-    const auto params = welded ? rt::gpu::weld_params(mesh, options) : rt::gpu::pipeline_params(mesh, options);
+    const auto params =
+        welded ? rt::gpu::weld_params(mesh, options) : rt::gpu::pipeline_params(mesh, options);
     const rt::Displacement* d = options.displacement;
     const std::uint32_t flags = params[pw::displacement_flags];
     const bool displaced = (flags & rt::gpu::displacement_flag::on) != 0;

@@ -48,8 +48,8 @@ UnweldedOutput webgpu_output(const GpuRun& run, const rt::MeshView& mesh, const 
 
 // The shaders' welded output (docs/shaders.md, "Welded output"): rt::setup_welded's edges, records and totals
 // and rt::emit_welded_mesh's vertices and indices, for Pattern::cp and Pattern::uniform
-// (rt::gpu::gpu_weld_status must accept them). Checked as the unwelded output is (sizes, every index below the
-// vertex count); the same errors.
+// (rt::gpu::gpu_weld_status must accept them). Checked as the unwelded output is (sizes, every index below
+// the vertex count); the same errors.
 struct WeldedGpuOutput {
     rt::WeldedTotals totals;
     std::vector<rt::WeldedEdge> edges;

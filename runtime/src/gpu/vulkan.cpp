@@ -68,13 +68,15 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
 constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass = 12, split_expand_pass = 13,
                    split_records_pass = 14, split_points_pass = 15;
 // The weld passes' (docs/shaders.md, "Welded output").
-constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pass = 18, weld_writers_pass = 19,
-                   weld_scan_pass = 20, weld_triangles_pass = 21, weld_lone_vertices_pass = 22;
+constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pass = 18,
+                   weld_writers_pass = 19, weld_scan_pass = 20, weld_triangles_pass = 21,
+                   weld_lone_vertices_pass = 22;
 
 // Workgroups of count items at most per invocation's group of size, at least 1, at most max_workgroups.
 std::uint32_t grid_workgroups(std::uint64_t items, std::uint32_t size, std::uint32_t max_workgroups) {
     const std::uint64_t groups = items / size + (items % size != 0);
-    return static_cast<std::uint32_t>(std::max<std::uint64_t>(1, std::min<std::uint64_t>(groups, max_workgroups)));
+    return static_cast<std::uint32_t>(
+        std::max<std::uint64_t>(1, std::min<std::uint64_t>(groups, max_workgroups)));
 }
 
 void compute_barrier(VkCommandBuffer cmd) {
@@ -610,8 +612,8 @@ WeldedOutput Runner::tessellate_welded(const rt::MeshView& mesh, const rt::Pipel
 }
 
 Output Runner::run_pipeline(const rt::MeshView& mesh,
-                            const std::array<std::uint32_t, rt::gpu::param_word::words>& params, RunOptions run,
-                            const rt::Displacement* displacement, WeldedOutput* welded) {
+                            const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
+                            RunOptions run, const rt::Displacement* displacement, WeldedOutput* welded) {
     namespace pw = rt::gpu::param_word;
     namespace flag = rt::gpu::displacement_flag;
     const std::uint32_t n = params[pw::patch_count];
@@ -766,9 +768,9 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         dsai.pSetLayouts = &layout;
         VkDescriptorSet set;
         check(vkAllocateDescriptorSets(d.device, &dsai, &set), "vkAllocateDescriptorSets");
-        const VkBuffer buffers[rt::gpu::binding::count] = {b_params.buffer,  b_tables.buffer,  b_mesh.buffer,
-                                                           b_indices.buffer, b_patches.buffer, vertices,
-                                                           indices,          weld};
+        const VkBuffer buffers[rt::gpu::binding::count] = {
+            b_params.buffer,  b_tables.buffer, b_mesh.buffer, b_indices.buffer,
+            b_patches.buffer, vertices,        indices,       weld};
         d.pipeline->write_descriptor_set(set, buffers);
         return set;
     };
@@ -852,7 +854,8 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         weld[rt::gpu::weld_word::edges] = edge_count;
         weld[rt::gpu::weld_word::slots] = out.totals.vertices;
         if (edge_count != 0)
-            std::memcpy(weld + rt::gpu::weld_word::header_words, edges.data(), edge_count * sizeof(rt::WeldedEdge));
+            std::memcpy(weld + rt::gpu::weld_word::header_words, edges.data(),
+                        edge_count * sizeof(rt::WeldedEdge));
         const VkDescriptorSet weld_set = descriptor_set(b_none.buffer, b_none.buffer, b_weld.buffer);
         const double weld_ms = d.submit([&](VkCommandBuffer cmd) {
             d.pipeline->record_weld_counts(cmd, weld_set, n, edge_count, mesh_vertices, out.totals.vertices,
@@ -861,7 +864,8 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         welded->counts_milliseconds = out.counts_milliseconds + weld_ms;
         if ((weld[rt::gpu::weld_word::status] & rt::gpu::weld_status::missing_edge) != 0)
             throw Error("the weld met a patch edge missing from the edge list");
-        const auto* weld_edges = reinterpret_cast<const rt::WeldedEdge*>(weld + rt::gpu::weld_word::header_words);
+        const auto* weld_edges =
+            reinterpret_cast<const rt::WeldedEdge*>(weld + rt::gpu::weld_word::header_words);
         const auto* weld_patches = reinterpret_cast<const rt::WeldedPatch*>(weld_edges + edge_count);
         welded->edges.assign(weld_edges, weld_edges + edge_count);
         welded->patches.assign(weld_patches, weld_patches + n);
@@ -872,15 +876,18 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
             weld_v += wp.vertex_count;
             weld_t += wp.triangle_count;
         }
-        if (const rt::PipelineStatus st = rt::check_pipeline_size(n, weld_v, weld_t); st != rt::PipelineStatus::ok)
+        if (const rt::PipelineStatus st = rt::check_pipeline_size(n, weld_v, weld_t);
+            st != rt::PipelineStatus::ok)
             throw Error(rt::pipeline_status_message(st));
         if ((weld[rt::gpu::weld_word::status] & rt::gpu::weld_status::overflow) != 0 ||
             weld[rt::gpu::weld_word::vertices] != weld_v || weld[rt::gpu::weld_word::triangles] != weld_t)
             throw Error("the weld's prefix sums differ from its records' counts");
-        welded->totals = {static_cast<std::uint32_t>(weld_v), static_cast<std::uint32_t>(weld_t), edge_count, 0};
+        welded->totals = {static_cast<std::uint32_t>(weld_v), static_cast<std::uint32_t>(weld_t), edge_count,
+                          0};
         const Device::Buffer b_vertices = make(weld_v * sizeof(rt::TessVertex), nullptr, 0);
         const Device::Buffer b_out_indices = make(weld_t * 12, nullptr, 0);
-        const VkDescriptorSet emit_set = descriptor_set(b_vertices.buffer, b_out_indices.buffer, b_weld.buffer);
+        const VkDescriptorSet emit_set =
+            descriptor_set(b_vertices.buffer, b_out_indices.buffer, b_weld.buffer);
         const double emit_ms = d.submit([&](VkCommandBuffer cmd) {
             d.pipeline->record_weld_emit(cmd, emit_set, triangle_patches, quad_patches, mesh_vertices,
                                          run.max_workgroups, displace, vector);
@@ -891,7 +898,8 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
             std::memcpy(static_cast<void*>(welded->vertices.data()), b_vertices.mapped,
                         welded->vertices.size() * sizeof(rt::TessVertex));
         welded->indices.resize(static_cast<std::size_t>(weld_t) * 3);
-        if (weld_t != 0) std::memcpy(welded->indices.data(), b_out_indices.mapped, welded->indices.size() * 4);
+        if (weld_t != 0)
+            std::memcpy(welded->indices.data(), b_out_indices.mapped, welded->indices.size() * 4);
         return out;
     }
 
@@ -904,8 +912,8 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
             d.pipeline->record_split_emit(cmd, emit_set, out.split_leaves, triangle_patches != 0,
                                           quad_patches != 0, run.max_workgroups, displace, vector);
         else
-            d.pipeline->record_emit(cmd, emit_set, triangle_patches, quad_patches, run.max_workgroups, displace,
-                                    vector);
+            d.pipeline->record_emit(cmd, emit_set, triangle_patches, quad_patches, run.max_workgroups,
+                                    displace, vector);
     });
     out.vertices.resize(out.totals.vertices);
     if (!out.vertices.empty())

@@ -1417,7 +1417,8 @@ unsigned patch_edges(const MeshView& mesh, std::uint32_t p, WeldedEdge (&out)[4]
 } // namespace
 
 std::uint32_t weld_edge_list(const MeshView& mesh, std::span<WeldedEdge> edges) {
-    if (edges.size() < weld_edge_capacity(mesh) || check_pipeline_size(mesh.patch_count(), 0, 0) != PipelineStatus::ok)
+    if (edges.size() < weld_edge_capacity(mesh) ||
+        check_pipeline_size(mesh.patch_count(), 0, 0) != PipelineStatus::ok)
         return 0;
     const auto count = static_cast<std::uint32_t>(mesh.patch_count());
     std::size_t n = 0;

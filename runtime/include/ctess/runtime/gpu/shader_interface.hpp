@@ -26,7 +26,8 @@ inline constexpr std::uint32_t mesh_indices = 3;  // 3 per base triangle, then 4
 inline constexpr std::uint32_t patches = 4;       // PatchRecord per patch, then the totals, read/write
 inline constexpr std::uint32_t out_vertices = 5;  // TessVertex per output vertex, written
 inline constexpr std::uint32_t out_indices = 6;   // 3 per output triangle, written
-inline constexpr std::uint32_t weld = 7; // the welded output's edges, records and scratch (weld_word), read/write
+inline constexpr std::uint32_t weld =
+    7; // the welded output's edges, records and scratch (weld_word), read/write
 inline constexpr std::uint32_t count = 8;
 } // namespace binding
 
@@ -64,7 +65,8 @@ inline constexpr std::uint32_t split_capacity = 22;
 inline constexpr std::uint32_t weld = 23;
 inline constexpr std::uint32_t words = 24;
 } // namespace param_word
-static_assert(param_word::eye + 3 == param_word::mesh_vertex_count && param_word::weld + 1 == param_word::words);
+static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
+              param_word::weld + 1 == param_word::words);
 
 // The bits of param_word::weld.
 namespace weld_flag {
@@ -167,14 +169,14 @@ constexpr std::uint64_t split_roots(std::uint64_t triangles, std::uint64_t quads
 // The welded output on the GPU (Pattern::cp and Pattern::uniform; docs/shaders.md, "Welded output";
 // docs/algorithm.md §7.4): binding 7 holds a header, the mesh's edges as rt::WeldedEdge (the host writes lo
 // and hi, sorted and distinct: rt::weld_edge_list; the passes fill the rest), one rt::WeldedPatch per patch,
-// then scratch: one writer word per shared id (mesh vertices, then at most one edge point per unwelded vertex),
-// one map word per unwelded vertex (slot) and weld_sort_words per slot for the sort of each patch's points.
-// Every count and offset is setup_welded's, bit for bit.
+// then scratch: one writer word per shared id (mesh vertices, then at most one edge point per unwelded
+// vertex), one map word per unwelded vertex (slot) and weld_sort_words per slot for the sort of each patch's
+// points. Every count and offset is setup_welded's, bit for bit.
 namespace weld_word {
-inline constexpr std::uint32_t edges = 0;  // the edges in the list (host)
-inline constexpr std::uint32_t slots = 1;  // the unwelded vertices the scratch holds (host: the totals')
-inline constexpr std::uint32_t shared = 2; // mesh vertices + edge points: the patches' first interior id
-inline constexpr std::uint32_t vertices = 3; // WeldedTotals::vertices
+inline constexpr std::uint32_t edges = 0;     // the edges in the list (host)
+inline constexpr std::uint32_t slots = 1;     // the unwelded vertices the scratch holds (host: the totals')
+inline constexpr std::uint32_t shared = 2;    // mesh vertices + edge points: the patches' first interior id
+inline constexpr std::uint32_t vertices = 3;  // WeldedTotals::vertices
 inline constexpr std::uint32_t triangles = 4; // WeldedTotals::triangles
 inline constexpr std::uint32_t status = 5;    // weld_status bits; 0 when the passes' output is whole
 inline constexpr std::uint32_t header_words = 8;
@@ -183,8 +185,8 @@ namespace weld_status {
 inline constexpr std::uint32_t overflow = 1;     // a total past 2^31 (ids) or 2^32
 inline constexpr std::uint32_t missing_edge = 2; // a patch edge not in the host's list
 } // namespace weld_status
-// A slot's map word: a shared id (below 2^31), or weld_map::interior | the rank of the slot's domain point among
-// the patch's distinct interior points, with weld_map::representative on the first slot of each point.
+// A slot's map word: a shared id (below 2^31), or weld_map::interior | the rank of the slot's domain point
+// among the patch's distinct interior points, with weld_map::representative on the first slot of each point.
 namespace weld_map {
 inline constexpr std::uint32_t interior = 1u << 31;
 inline constexpr std::uint32_t representative = 1u << 30;
@@ -198,8 +200,8 @@ inline constexpr std::uint32_t weld_sort_words = 3; // a slot's domain point (u,
 // unwelded vertices.
 constexpr std::uint64_t weld_buffer_words(std::uint64_t edges, std::uint64_t patch_count,
                                           std::uint64_t mesh_vertices, std::uint64_t slots) {
-    return weld_word::header_words + edges * weld_edge_words + patch_count * weld_patch_words + mesh_vertices +
-           slots * (2 + weld_sort_words);
+    return weld_word::header_words + edges * weld_edge_words + patch_count * weld_patch_words +
+           mesh_vertices + slots * (2 + weld_sort_words);
 }
 
 // Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride
@@ -300,7 +302,7 @@ inline PipelineStatus gpu_weld_status(const MeshView& mesh, const PipelineOption
 
 // The params of a welded run: pipeline_params with weld_flag::on and options.weld's keep_degenerate.
 inline std::array<std::uint32_t, param_word::words> weld_params(const MeshView& mesh,
-                                                               const PipelineOptions& options) {
+                                                                const PipelineOptions& options) {
     std::array<std::uint32_t, param_word::words> p = pipeline_params(mesh, options);
     p[param_word::weld] = weld_flag::on | (options.weld.keep_degenerate ? weld_flag::keep_degenerate : 0u);
     return p;

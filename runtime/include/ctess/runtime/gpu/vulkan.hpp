@@ -125,12 +125,12 @@ class MeshPipeline {
 
     // The welded output (Pattern::cp and Pattern::uniform; docs/shaders.md, "Welded output"). After
     // record_counts, record_weld_counts records the weld's counting passes: each edge's points and the
-    // edges' prefix sums, each patch's weld (slots mapped, interior points sorted and ranked, kept triangles),
-    // each shared id's writer, and the patches' prefix sums. Binding 7 then holds setup_welded's edges, patch
-    // records and totals (rt::gpu::weld_word); before it the host writes the header's edges and slots words
-    // and the edges' lo and hi (rt::weld_edge_list); binding 7 is rt::gpu::weld_buffer_words(edges,
-    // patch_count, mesh_vertices, slots) words, slots the unwelded vertex total. The params set
-    // rt::gpu::weld_flag::on (rt::gpu::weld_params).
+    // edges' prefix sums, each patch's weld (slots mapped, interior points sorted and ranked, kept
+    // triangles), each shared id's writer, and the patches' prefix sums. Binding 7 then holds setup_welded's
+    // edges, patch records and totals (rt::gpu::weld_word); before it the host writes the header's edges and
+    // slots words and the edges' lo and hi (rt::weld_edge_list); binding 7 is
+    // rt::gpu::weld_buffer_words(edges, patch_count, mesh_vertices, slots) words, slots the unwelded vertex
+    // total. The params set rt::gpu::weld_flag::on (rt::gpu::weld_params).
     void record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                             std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
                             std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
@@ -220,10 +220,10 @@ class Runner {
                       RunOptions run = {}, const rt::Displacement* displacement = nullptr);
 
     // The welded output of mesh with options (rt::gpu::gpu_weld_status must be ok: Pattern::cp or
-    // Pattern::uniform), bit for bit rt::setup_welded's and rt::emit_welded_mesh's (positions and normals within
-    // the bound of docs/shaders.md where the evaluation is not exact). The edge list is rt::weld_edge_list's,
-    // computed here; the welded totals are checked against rt::check_pipeline_size before the outputs are
-    // allocated. run.counts_only and the split options do not apply.
+    // Pattern::uniform), bit for bit rt::setup_welded's and rt::emit_welded_mesh's (positions and normals
+    // within the bound of docs/shaders.md where the evaluation is not exact). The edge list is
+    // rt::weld_edge_list's, computed here; the welded totals are checked against rt::check_pipeline_size
+    // before the outputs are allocated. run.counts_only and the split options do not apply.
     WeldedOutput tessellate_welded(const rt::MeshView& mesh, const rt::PipelineOptions& options,
                                    RunOptions run = {});
 

@@ -83,7 +83,7 @@ enum class Pattern : std::uint32_t {
     cp = 0,
     uniform = 1, // uniform density, factors rounded and clamped to the table's N (the shaders' pass)
     // Uniform density at any factor up to 32,768 (uniform_split_max_factor): patches above N split with the
-        // table's own patterns (UniformSplit, docs/algorithm.md §3.5, §7.5); the same output as uniform up to N.
+    // table's own patterns (UniformSplit, docs/algorithm.md §3.5, §7.5); the same output as uniform up to N.
     // Its records carry no setup block; the shaders split too (docs/shaders.md, "Splitting").
     uniform_split = 2,
     // The D3D11 tessellator's triangle domain (docs/algorithm.md §5, §7.6) with the partitioning named, CPU
@@ -343,8 +343,8 @@ constexpr std::uint64_t weld_edge_capacity(const MeshView& mesh) {
 
 // The mesh's edges as setup_welded lists them: each face's (culled faces none, a quad's four), keyed lo < hi
 // (lo == hi for a degenerate face), sorted and distinct at the front of edges (weld_edge_capacity entries),
-// first_vertex and vertex_count 0. Returns how many. A function of the indices alone, so a GPU host computes it
-// once per mesh (docs/shaders.md, "Welded output"). 0 when edges is too small.
+// first_vertex and vertex_count 0. Returns how many. A function of the indices alone, so a GPU host computes
+// it once per mesh (docs/shaders.md, "Welded output"). 0 when edges is too small.
 std::uint32_t weld_edge_list(const MeshView& mesh, std::span<WeldedEdge> edges);
 
 // Counts: the sorted distinct edges (totals.edges of them, at the front of edges), every patch's counts and
