@@ -189,6 +189,22 @@ TEST_CASE("ctess mesh --backend vulkan (welded): the CPU's welded faces exactly,
     }
 }
 
+TEST_CASE("ctess mesh --backend webgpu (welded): the CPU's file byte for byte (box.obj's quads, flat)",
+          "[cli][mesh][webgpu]") {
+    const std::string args = "--in " + box + " --dice-rate 1 --camera 1,2,3";
+    const std::string cpu_file = scratch("welded_box_cpu.glb"), gpu_file = scratch("welded_box_webgpu.glb");
+    const nlohmann::json cpu = run_mesh("cpu", args, cpu_file, false);
+    const nlohmann::json gpu = run_mesh("webgpu", args, gpu_file, false);
+    CHECK(gpu["output"] == "welded");
+    CHECK(gpu["welded"]["shader_pipeline"] == true);
+    CHECK(gpu["output_triangles"] == cpu["output_triangles"]);
+    CHECK(cpu["output_open_edges"] == 0); // closed by position across its 24 vertices' uv seams
+    CHECK(gpu["output_open_edges"] == 0);
+    const std::string cpu_bytes = read_bytes(cpu_file);
+    CHECK(cpu_bytes.size() > 1000000);
+    CHECK((cpu_bytes == read_bytes(gpu_file)));
+}
+
 TEST_CASE("ctess mesh --backend: refusals exit non-zero with the reason and write nothing", "[cli][mesh]") {
     const std::string out = scratch("refused.ply");
     std::filesystem::remove(out);
