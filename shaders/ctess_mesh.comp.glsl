@@ -2176,6 +2176,7 @@ void ctess_weld_edge_scan() {
 // the patch's points by (u, v, slot)), the patch's distinct interior points and kept triangles.
 shared uint weld_lane[EMIT_GROUP];
 shared uint weld_kept_count;
+shared uint weld_distinct;
 // The inclusive prefix sum of each lane's flag in weld_lane; every lane must call it.
 uint weld_lane_scan(bool flag) {
     uint lane = gl_LocalInvocationID.x;
@@ -2214,41 +2215,75 @@ void ctess_weld_count() {
             weld[o + 1u] = key.y;
             weld[o + 2u] = i;
         }
+        if (lane == 0u) weld_distinct = 0u;
         memoryBarrierBuffer();
         barrier();
-        // A bitonic sort, every comparator ascending (each block's first stage compares mirrored pairs), with the
-        // entries past n taken as +inf: a comparator that reaches past n is skipped.
-        uint size = 1u;
-        while (size < n) size <<= 1;
-        for (uint k = 2u; k <= size; k <<= 1) {
-            for (uint j = k >> 1; j > 0u; j >>= 1) {
-                for (uint q = lane; q < size / 2u; q += EMIT_GROUP) {
-                    uint i = (q / j) * 2u * j + q % j;
-                    uint partner = j == (k >> 1) ? i ^ (k - 1u) : i + j;
-                    if (partner >= n) continue;
-                    uint oa = weld_sort(wp.first + i), ob = weld_sort(wp.first + partner);
-                    if (weld_sort_less(ob, oa)) {
-                        for (uint w = 0u; w < WELD_SORT_WORDS; ++w) {
-                            uint x = weld[oa + w];
-                            weld[oa + w] = weld[ob + w];
-                            weld[ob + w] = x;
+        uint distinct = 0u;
+        if (n <= WELD_COUNTED_RANKS) {
+            // A small patch ranks by counting: a slot is its point's first when no earlier slot has the point, and
+            // its rank counts the first slots of smaller points (the sort's numbering, with two barriers where the
+            // sort takes one per stage: a software adapter pays for each).
+            for (uint i = lane; i < n; i += EMIT_GROUP) {
+                uint o = weld_sort(wp.first + i);
+                bool first = weld[o] != 0xFFFFFFFFu;
+                for (uint j = 0u; j < i && first; ++j) {
+                    uint oj = weld_sort(wp.first + j);
+                    first = weld[oj] != weld[o] || weld[oj + 1u] != weld[o + 1u];
+                }
+                weld[o + 2u] = first ? 1u : 0u;
+            }
+            memoryBarrierBuffer();
+            barrier();
+            uint firsts = 0u;
+            for (uint i = lane; i < n; i += EMIT_GROUP) {
+                uint o = weld_sort(wp.first + i);
+                if (weld[o] == 0xFFFFFFFFu) continue;
+                uint rank = 0u;
+                for (uint j = 0u; j < n; ++j) {
+                    uint oj = weld_sort(wp.first + j);
+                    if (weld[oj + 2u] != 0u && (weld[oj] < weld[o] || (weld[oj] == weld[o] && weld[oj + 1u] < weld[o + 1u]))) ++rank;
+                }
+                bool first = weld[o + 2u] != 0u;
+                if (first) ++firsts;
+                weld[weld_map(wp.first + i)] = WELD_INTERIOR | rank | (first ? WELD_REPRESENTATIVE : 0u);
+            }
+            atomicAdd(weld_distinct, firsts);
+            barrier();
+            distinct = weld_distinct;
+        } else {
+            // A bitonic sort, every comparator ascending (each block's first stage compares mirrored pairs), with the
+            // entries past n taken as +inf: a comparator that reaches past n is skipped.
+            uint size = 1u;
+            while (size < n) size <<= 1;
+            for (uint k = 2u; k <= size; k <<= 1) {
+                for (uint j = k >> 1; j > 0u; j >>= 1) {
+                    for (uint q = lane; q < size / 2u; q += EMIT_GROUP) {
+                        uint i = (q / j) * 2u * j + q % j;
+                        uint partner = j == (k >> 1) ? i ^ (k - 1u) : i + j;
+                        if (partner >= n) continue;
+                        uint oa = weld_sort(wp.first + i), ob = weld_sort(wp.first + partner);
+                        if (weld_sort_less(ob, oa)) {
+                            for (uint w = 0u; w < WELD_SORT_WORDS; ++w) {
+                                uint x = weld[oa + w];
+                                weld[oa + w] = weld[ob + w];
+                                weld[ob + w] = x;
+                            }
                         }
                     }
+                    memoryBarrierBuffer();
+                    barrier();
                 }
-                memoryBarrierBuffer();
+            }
+            // The interior entries (first after the sort) numbered by distinct point.
+            for (uint base_ = 0u; base_ < n; base_ += EMIT_GROUP) {
+                uint j = base_ + lane, o = weld_sort(wp.first + min(j, n - 1u));
+                bool interior = j < n && weld[o] != 0xFFFFFFFFu;
+                bool fresh = interior && (j == 0u || weld[o - WELD_SORT_WORDS] != weld[o] || weld[o - WELD_SORT_WORDS + 1u] != weld[o + 1u]);
+                uint rank = distinct + weld_lane_scan(fresh) - 1u;
+                if (interior) weld[weld_map(wp.first + weld[o + 2u])] = WELD_INTERIOR | rank | (fresh ? WELD_REPRESENTATIVE : 0u);
+                distinct += weld_lane[EMIT_GROUP - 1u];
                 barrier();
             }
-        }
-        // The interior entries (first after the sort) numbered by distinct point.
-        uint distinct = 0u;
-        for (uint base_ = 0u; base_ < n; base_ += EMIT_GROUP) {
-            uint j = base_ + lane, o = weld_sort(wp.first + min(j, n - 1u));
-            bool interior = j < n && weld[o] != 0xFFFFFFFFu;
-            bool fresh = interior && (j == 0u || weld[o - WELD_SORT_WORDS] != weld[o] || weld[o - WELD_SORT_WORDS + 1u] != weld[o + 1u]);
-            uint rank = distinct + weld_lane_scan(fresh) - 1u;
-            if (interior) weld[weld_map(wp.first + weld[o + 2u])] = WELD_INTERIOR | rank | (fresh ? WELD_REPRESENTATIVE : 0u);
-            distinct += weld_lane[EMIT_GROUP - 1u];
-            barrier();
         }
         if (lane == 0u) weld_kept_count = 0u;
         memoryBarrierBuffer();

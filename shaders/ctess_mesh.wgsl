@@ -2276,6 +2276,7 @@ fn ctess_weld_edge_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
 // the patch's points by (u, v, slot)), the patch's distinct interior points and kept triangles.
 var<workgroup> weld_lane: array<u32, EMIT_GROUP>;
 var<workgroup> weld_kept_count: atomic<u32>;
+var<workgroup> weld_distinct: atomic<u32>;
 // A patch's count that the workgroup's barriers depend on, through workgroupUniformLoad: values read from a
 // read_write binding are not uniform to WGSL's analysis, and a barrier must be in uniform control flow.
 var<workgroup> weld_uniform: u32;
@@ -2326,43 +2327,77 @@ fn ctess_weld_count(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgrou
             weld[o + 1u] = key.y;
             weld[o + 2u] = i;
         }
+        if (lane == 0u) { atomicStore(&weld_distinct, 0u); }
         storageBarrier();
         workgroupBarrier();
-        // A bitonic sort, every comparator ascending (each block's first stage compares mirrored pairs), with the
-        // entries past n taken as +inf: a comparator that reaches past n is skipped.
-        var size = 1u;
-        while (size < n) { size <<= 1u; }
-        for (var k = 2u; k <= size; k <<= 1u) {
-            for (var j = k >> 1u; j > 0u; j >>= 1u) {
-                for (var q = lane; q < size / 2u; q += EMIT_GROUP) {
-                    let i = (q / j) * 2u * j + q % j;
-                    let partner = select(i + j, i ^ (k - 1u), j == (k >> 1u));
-                    if (partner >= n) { continue; }
-                    let oa = weld_sort(wp.first + i);
-                    let ob = weld_sort(wp.first + partner);
-                    if (weld_sort_less(ob, oa)) {
-                        for (var w = 0u; w < WELD_SORT_WORDS; w++) {
-                            let x = weld[oa + w];
-                            weld[oa + w] = weld[ob + w];
-                            weld[ob + w] = x;
+        var distinct = 0u;
+        if (n <= WELD_COUNTED_RANKS) {
+            // A small patch ranks by counting: a slot is its point's first when no earlier slot has the point, and
+            // its rank counts the first slots of smaller points (the sort's numbering, with two barriers where the
+            // sort takes one per stage: a software adapter pays for each).
+            for (var i = lane; i < n; i += EMIT_GROUP) {
+                let o = weld_sort(wp.first + i);
+                var first = weld[o] != 0xFFFFFFFFu;
+                for (var j = 0u; j < i && first; j++) {
+                    let oj = weld_sort(wp.first + j);
+                    first = weld[oj] != weld[o] || weld[oj + 1u] != weld[o + 1u];
+                }
+                weld[o + 2u] = select(0u, 1u, first);
+            }
+            storageBarrier();
+            workgroupBarrier();
+            var firsts = 0u;
+            for (var i = lane; i < n; i += EMIT_GROUP) {
+                let o = weld_sort(wp.first + i);
+                if (weld[o] == 0xFFFFFFFFu) { continue; }
+                var rank = 0u;
+                for (var j = 0u; j < n; j++) {
+                    let oj = weld_sort(wp.first + j);
+                    if (weld[oj + 2u] != 0u && (weld[oj] < weld[o] || (weld[oj] == weld[o] && weld[oj + 1u] < weld[o + 1u]))) { rank++; }
+                }
+                let first = weld[o + 2u] != 0u;
+                if (first) { firsts++; }
+                weld[weld_map(wp.first + i)] = WELD_INTERIOR | rank | select(0u, WELD_REPRESENTATIVE, first);
+            }
+            atomicAdd(&weld_distinct, firsts);
+            workgroupBarrier();
+            distinct = atomicLoad(&weld_distinct);
+        } else {
+            // A bitonic sort, every comparator ascending (each block's first stage compares mirrored pairs), with the
+            // entries past n taken as +inf: a comparator that reaches past n is skipped.
+            var size = 1u;
+            while (size < n) { size <<= 1u; }
+            for (var k = 2u; k <= size; k <<= 1u) {
+                for (var j = k >> 1u; j > 0u; j >>= 1u) {
+                    for (var q = lane; q < size / 2u; q += EMIT_GROUP) {
+                        let i = (q / j) * 2u * j + q % j;
+                        let partner = select(i + j, i ^ (k - 1u), j == (k >> 1u));
+                        if (partner >= n) { continue; }
+                        let oa = weld_sort(wp.first + i);
+                        let ob = weld_sort(wp.first + partner);
+                        if (weld_sort_less(ob, oa)) {
+                            for (var w = 0u; w < WELD_SORT_WORDS; w++) {
+                                let x = weld[oa + w];
+                                weld[oa + w] = weld[ob + w];
+                                weld[ob + w] = x;
+                            }
                         }
                     }
+                    storageBarrier();
+                    workgroupBarrier();
                 }
-                storageBarrier();
+            }
+            // The interior entries (first after the sort) numbered by distinct point.
+            for (var base_ = 0u; base_ < n; base_ += EMIT_GROUP) {
+                let j = base_ + lane;
+                let o = weld_sort(wp.first + min(j, n - 1u));
+                let interior = j < n && weld[o] != 0xFFFFFFFFu;
+                let fresh = interior && (j == 0u || weld[o - WELD_SORT_WORDS] != weld[o] || weld[o - WELD_SORT_WORDS + 1u] != weld[o + 1u]);
+                let rank = distinct + weld_lane_scan(lane, fresh) - 1u;
+                if (interior) { weld[weld_map(wp.first + weld[o + 2u])] = WELD_INTERIOR | rank | select(0u, WELD_REPRESENTATIVE, fresh); }
+                distinct += weld_lane[EMIT_GROUP - 1u];
                 workgroupBarrier();
             }
-        }
-        // The interior entries (first after the sort) numbered by distinct point.
-        var distinct = 0u;
-        for (var base_ = 0u; base_ < n; base_ += EMIT_GROUP) {
-            let j = base_ + lane;
-            let o = weld_sort(wp.first + min(j, n - 1u));
-            let interior = j < n && weld[o] != 0xFFFFFFFFu;
-            let fresh = interior && (j == 0u || weld[o - WELD_SORT_WORDS] != weld[o] || weld[o - WELD_SORT_WORDS + 1u] != weld[o + 1u]);
-            let rank = distinct + weld_lane_scan(lane, fresh) - 1u;
-            if (interior) { weld[weld_map(wp.first + weld[o + 2u])] = WELD_INTERIOR | rank | select(0u, WELD_REPRESENTATIVE, fresh); }
-            distinct += weld_lane[EMIT_GROUP - 1u];
-            workgroupBarrier();
         }
         if (lane == 0u) { atomicStore(&weld_kept_count, 0u); }
         storageBarrier();

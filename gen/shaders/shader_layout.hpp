@@ -271,6 +271,7 @@ inline constexpr std::array shader_constants = {
     ShaderConstant{"WPATCH_TRIANGLE_COUNT", CTESS_WORD_OF(rt::WeldedPatch, triangle_count),
                    "rt::WeldedPatch::triangle_count"},
     ShaderConstant{"WELD_SORT_WORDS", rt::gpu::weld_sort_words, "rt::gpu::weld_sort_words"},
+    ShaderConstant{"WELD_COUNTED_RANKS", rt::gpu::weld_counted_ranks, "rt::gpu::weld_counted_ranks"},
     // the uniform-factor rule (the shaders' uniform_factor)
     ShaderConstant{"UNIFORM_ROUND_FROM_BITS", uniform_round_from_bits, "uniform::round_factor: 1.5f"},
     ShaderConstant{"F32_INFINITY_BITS", f32_infinity_bits, "uniform::round_factor: +inf"},

@@ -195,6 +195,9 @@ inline constexpr std::uint32_t rank_mask = representative - 1;
 inline constexpr std::uint32_t weld_edge_words = sizeof(WeldedEdge) / 4;
 inline constexpr std::uint32_t weld_patch_words = sizeof(WeldedPatch) / 4;
 inline constexpr std::uint32_t weld_sort_words = 3; // a slot's domain point (u, v) and its index in the patch
+// Patches of at most this many slots rank their interior points by counting (O(n) per slot, two barriers)
+// instead of the bitonic sort (a barrier per stage); both give the same ranks.
+inline constexpr std::uint32_t weld_counted_ranks = 128;
 
 // Words of binding 7 for a weld of edges edges, patch_count patches, mesh_vertices mesh vertices and slots
 // unwelded vertices.
