@@ -2194,9 +2194,12 @@ bool weld_sort_less(uint a, uint b) {
     uvec3 x = uvec3(weld[a], weld[a + 1u], weld[a + 2u]), y = uvec3(weld[b], weld[b + 1u], weld[b + 2u]);
     return x.x != y.x ? x.x < y.x : x.y != y.y ? x.y < y.y : x.z < y.z;
 }
+// One patch per workgroup: the host dispatches batches from WELD_FIRST_PATCH, so that no invocation loops over
+// several patches (llvmpipe ends every loop of an invocation after 65,535 iterations in all, without an error).
 void ctess_weld_count() {
     uint lane = gl_LocalInvocationID.x;
-    for (uint t = gl_WorkGroupID.x; t < patch_count(); t += gl_NumWorkGroups.x) {
+    uint first_patch = weld[WELD_FIRST_PATCH], end = min(patch_count(), first_patch + gl_NumWorkGroups.x);
+    for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         uint wpw = weld_patch(t);
         WeldPatch wp;
         if (!weld_load(t, wp)) {
@@ -2326,10 +2329,12 @@ void ctess_weld_scan() {
 }
 
 // Weld emit, a workgroup per patch of the emit range (triangles and quads): the kept triangles in pattern order.
+// One patch per workgroup, batches from WELD_FIRST_PATCH as ctess_weld_count's, within the params' emit range.
 void ctess_weld_triangles() {
     uint lane = gl_LocalInvocationID.x;
-    uint end = min(params[PARAM_END_PATCH], patch_count());
-    for (uint t = params[PARAM_FIRST_PATCH] + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
+    uint first_patch = max(weld[WELD_FIRST_PATCH], params[PARAM_FIRST_PATCH]);
+    uint end = min(min(params[PARAM_END_PATCH], patch_count()), weld[WELD_FIRST_PATCH] + gl_NumWorkGroups.x);
+    for (uint t = first_patch + gl_WorkGroupID.x; t < end; t += gl_NumWorkGroups.x) {
         WeldPatch wp;
         if (!weld_load(t, wp)) continue;
         uint wpw = weld_patch(t);

@@ -2280,6 +2280,7 @@ var<workgroup> weld_distinct: atomic<u32>;
 // A patch's count that the workgroup's barriers depend on, through workgroupUniformLoad: values read from a
 // read_write binding are not uniform to WGSL's analysis, and a barrier must be in uniform control flow.
 var<workgroup> weld_uniform: u32;
+var<workgroup> weld_batch: u32; // the batch's first patch (apart from weld_uniform, which the loop rewrites)
 // The inclusive prefix sum of each lane's flag in weld_lane; every lane must call it.
 fn weld_lane_scan(lane: u32, flag: bool) -> u32 {
     weld_lane[lane] = select(0u, 1u, flag);
@@ -2304,7 +2305,12 @@ fn weld_sort_less(a: u32, b: u32) -> bool {
 fn ctess_weld_count(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                     @builtin(local_invocation_id) lid: vec3<u32>) {
     let lane = lid.x;
-    for (var t = wid.x; t < patch_count(); t += groups.x) {
+    // One patch per workgroup: the host dispatches batches from WELD_FIRST_PATCH, so that no invocation loops over
+    // several patches (llvmpipe ends every loop of an invocation after 65,535 iterations in all, without an error).
+    if (lane == 0u) { weld_batch = weld[WELD_FIRST_PATCH]; }
+    let first_patch = workgroupUniformLoad(&weld_batch);
+    let end = min(patch_count(), first_patch + groups.x);
+    for (var t = first_patch + wid.x; t < end; t += groups.x) {
         let wpw = weld_patch(t);
         var wp: WeldPatch;
         let loaded = weld_load(t, &wp);
@@ -2450,8 +2456,11 @@ fn ctess_weld_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
 fn ctess_weld_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
                         @builtin(local_invocation_id) lid: vec3<u32>) {
     let lane = lid.x;
-    let end = min(params[PARAM_END_PATCH], patch_count());
-    for (var t = params[PARAM_FIRST_PATCH] + wid.x; t < end; t += groups.x) {
+    // One patch per workgroup, batches from WELD_FIRST_PATCH as ctess_weld_count's, within the params' emit range.
+    if (lane == 0u) { weld_batch = weld[WELD_FIRST_PATCH]; }
+    let batch = workgroupUniformLoad(&weld_batch);
+    let end = min(min(params[PARAM_END_PATCH], patch_count()), batch + groups.x);
+    for (var t = max(batch, params[PARAM_FIRST_PATCH]) + wid.x; t < end; t += groups.x) {
         var wp: WeldPatch;
         let loaded = weld_load(t, &wp);
         // The pattern's triangles, 0 for a culled patch, the same for every lane (ctess_weld_count).

@@ -446,6 +446,14 @@ export class MeshPipeline {
         const { max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
         const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT], triangles = n - quads;
         const meshVertexCount = params[C.PARAM_MESH_VERTEX_COUNT];
+        // A patch's sort runs in one workgroup: past WELD_MAX_PATCH_SLOTS a software driver's loop limit could cut
+        // it short, so such a mesh is refused (as the C++ host).
+        for (let t = 0; t < n; t++) {
+            const v = patches[t * this.patchWords + C.REC_VERTEX_COUNT];
+            if (v > C.WELD_MAX_PATCH_SLOTS)
+                throw new Error(`weld: patch ${t} has ${v} unwelded vertices, past the ${C.WELD_MAX_PATCH_SLOTS} the GPU weld ` +
+                                'takes in one workgroup (docs/shaders.md, "Welded output"): weld it on the CPU, or use max factor 64');
+        }
         const edgeList = weldEdgeList(meshIndices, triangles, quads, meshVertexCount);
         const edgeCount = edgeList.length / C.WELD_EDGE_WORDS;
         const weldWords = C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS + n * C.WELD_PATCH_WORDS + meshVertexCount +
@@ -460,9 +468,22 @@ export class MeshPipeline {
         const group = C.EMIT_GROUP;
         const grid = (items) => Math.max(1, Math.min(Math.ceil(items / group), maxGroups)); // grid-stride passes
         const [edgePoints, edgeScan, count, writers, scan, weldTriangles, lone] = weldPasses;
+        // The count and triangle passes run a patch per workgroup, in batches of maxGroups whose first patch is
+        // copied into the header's WELD_FIRST_PATCH word before each dispatch (as the C++ host's vkCmdFillBuffer).
+        const firsts = [];
+        for (let first = 0; first < n; first += maxGroups) firsts.push(first);
+        const bFirsts = keep(this.storage(Uint32Array.from(firsts.length ? firsts : [0])));
+        const batches = (pass, from, to) => {
+            const steps = [];
+            for (let first = from; first < to; first += maxGroups) {
+                steps.push({ copy: [bFirsts, 4 * Math.floor(first / maxGroups), bWeld, 4 * C.WELD_FIRST_PATCH, 4] });
+                steps.push([pass, Math.min(maxGroups, to - first)]);
+            }
+            return steps;
+        };
         milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, none[0], none[1], bWeld],
                                             [[edgePoints, grid(Math.max(edgeCount, meshVertexCount + slots))], [edgeScan, 1],
-                                             [count, Math.max(1, Math.min(n, maxGroups))], [writers, grid(slots)], [scan, 1]]);
+                                             ...batches(count, 0, n), [writers, grid(slots)], [scan, 1]]);
         const records = C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS;
         const words = await this.read(bWeld, records + n * C.WELD_PATCH_WORDS);
         if (words[C.WELD_STATUS] & C.WELD_MISSING_EDGE) throw new Error('weld: a patch edge is missing from the edge list');
@@ -487,9 +508,10 @@ export class MeshPipeline {
         // The emit range's triangles and quads (the params' [first, end)), then every mesh vertex no face reaches.
         const first = params[C.PARAM_FIRST_PATCH], end = params[C.PARAM_END_PATCH];
         const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))];
+        // The triangles' batches start at multiples of maxGroups (bFirsts' entries) from the one holding `first`.
         const passes = [[emitVertices, Math.min(groups[0], maxGroups)], [emitQuadVertices, Math.min(groups[1], maxGroups)],
-                        [weldTriangles, Math.min(groups[0] + groups[1], maxGroups)], [lone, grid(meshVertexCount)]]
-            .filter(([, g]) => g > 0);
+                        [lone, grid(meshVertexCount)]].filter(([, g]) => g > 0);
+        if (end > first) passes.push(...batches(weldTriangles, first - (first % maxGroups), end));
         milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices, bWeld], passes);
         return { patches, vertexCount, triangleCount, vertices, indices, milliseconds, weld };
     }

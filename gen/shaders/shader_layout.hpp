@@ -272,6 +272,8 @@ inline constexpr std::array shader_constants = {
                    "rt::WeldedPatch::triangle_count"},
     ShaderConstant{"WELD_SORT_WORDS", rt::gpu::weld_sort_words, "rt::gpu::weld_sort_words"},
     ShaderConstant{"WELD_COUNTED_RANKS", rt::gpu::weld_counted_ranks, "rt::gpu::weld_counted_ranks"},
+    ShaderConstant{"WELD_MAX_PATCH_SLOTS", rt::gpu::weld_max_patch_slots, "rt::gpu::weld_max_patch_slots"},
+    ShaderConstant{"WELD_FIRST_PATCH", rt::gpu::weld_word::first_patch, "rt::gpu::weld_word::first_patch"},
     // the uniform-factor rule (the shaders' uniform_factor)
     ShaderConstant{"UNIFORM_ROUND_FROM_BITS", uniform_round_from_bits, "uniform::round_factor: 1.5f"},
     ShaderConstant{"F32_INFINITY_BITS", f32_infinity_bits, "uniform::round_factor: +inf"},

@@ -1256,10 +1256,34 @@ TEST_CASE("Vulkan host: the split pattern is not welded on the GPU, an error, no
                       Catch::Contains("tessellate_welded"));
 }
 
-// The welded output on the second WebGPU implementation too (Dawn's Vulkan backend on SwiftShader): one run of
-// a mixed grid (CP, PN, repeated corners, a culled face, a vertex no face reaches).
+// The welded output on the second WebGPU implementation too (Dawn's Vulkan backend on SwiftShader): one run
+// of a mixed grid (CP, PN, repeated corners, a culled face, a vertex no face reaches).
 TEST_CASE("GPU second implementation: the welded output against the CPU's", "[second-implementation]") {
     Scene s = factor_sweep_grid(64, 8, rt::Surface::pn_triangles, 3);
     add_awkward_faces(s);
     check_welded(64, s, "second_welded");
+}
+
+// Software drivers end an invocation's loops after 65,535 iterations in all (llvmpipe, silently): the count
+// and triangle passes run a patch per workgroup in batches, so 16 patches of 2,145 slots through one
+// workgroup a dispatch weld as the CPU does; a patch past rt::gpu::weld_max_patch_slots (its sort in one
+// workgroup) is refused.
+TEST_CASE(
+    "GPU welded output: one workgroup a dispatch for 16 large patches; a patch past the slot limit is an "
+    "error") {
+    Scene big = repeated_big_triangle(16);
+    check_welded(64, big, "weld_batches", RunLimits{1});
+    // Max 256: the (256, 256, 256) pattern has more slots than the weld takes in one workgroup.
+    Scene one = repeated_big_triangle(1);
+    REQUIRE(run_cpu(rt::cp_tables_256, one).total_vertices() > rt::gpu::weld_max_patch_slots);
+    CHECK_THROWS_WITH(run_gpu_welded(256, one, "weld_too_large"), Catch::Contains("past the 16384"));
+    // Just under the limit at max 256: the eye moved away until the patch has at most 16,384 slots.
+    Scene under = repeated_big_triangle(1);
+    for (float z = 1.0f;; z *= 1.25f) {
+        under.options.dice.eye = {0.0f, 30.0f, z};
+        if (run_cpu(rt::cp_tables_256, under).total_vertices() <= rt::gpu::weld_max_patch_slots) break;
+    }
+    INFO("slots " << run_cpu(rt::cp_tables_256, under).total_vertices());
+    CHECK(run_cpu(rt::cp_tables_256, under).total_vertices() > rt::gpu::weld_max_patch_slots / 2);
+    check_welded(256, under, "weld_large_patch");
 }

@@ -302,7 +302,8 @@ UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& 
 
 // A GPU backend asked for options the shaders do not run: the reason, as the user typed the options.
 [[noreturn]] void refuse_gpu_options(const std::string& backend, const std::string& pattern,
-                                     const rt::PipelineOptions& options, rt::PipelineStatus status) {
+                                     const rt::PipelineOptions& options, rt::PipelineStatus status,
+                                     bool unwelded) {
     if (status != rt::PipelineStatus::bad_option)
         throw std::runtime_error(
             fmt::format("--backend {}: {}", backend, rt::pipeline_status_message(status)));
@@ -314,9 +315,10 @@ UnweldedPlan unwelded_plan(const rt::MeshView& view, const rt::PipelineOptions& 
                           "--edge-length")
             : std::string(rt::pipeline_status_message(status));
     throw UsageError(fmt::format("--backend {}: the GPU pipeline does not run these options: {} "
-                                 "(rt::gpu::gpu_options_status; docs/shaders.md, \"Hosts\"). --backend cpu "
-                                 "--unwelded writes their unwelded output",
-                                 backend, reason));
+                                 "(rt::gpu::gpu_options_status; docs/shaders.md, \"Hosts\"). {}",
+                                 backend, reason,
+                                 unwelded ? "--backend cpu --unwelded writes their unwelded output"
+                                          : "--backend cpu writes their welded output"));
 }
 
 // Runs work(k) for k < threads, k = 0 on the calling thread: std::jthread joins on unwinding too, and an
@@ -429,7 +431,7 @@ int run_mesh(int argc, char** argv) {
     // The options alone, before the model is loaded: a pattern or factor mode the shaders lack.
     if (backend.name != "cpu")
         if (const UnweldedPlan early = unwelded_plan(rt::MeshView{}, options); !early.shaders)
-            refuse_gpu_options(backend.name, pattern, options, early.gpu_status);
+            refuse_gpu_options(backend.name, pattern, options, early.gpu_status, backend.unwelded);
     // The shaders weld CP and the clamped uniform pattern; `--pattern uniform` splits at any factor, whose
     // leaves the GPU writes unwelded only (docs/shaders.md, "Welded output").
     if (backend.name != "cpu" && !backend.unwelded && options.pattern == rt::Pattern::uniform_split)
@@ -509,7 +511,7 @@ int run_mesh(int argc, char** argv) {
     if (backend.unwelded) {
         const UnweldedPlan plan = unwelded_plan(view, options);
         if (backend.name != "cpu" && !plan.shaders)
-            refuse_gpu_options(backend.name, pattern, options, plan.gpu_status);
+            refuse_gpu_options(backend.name, pattern, options, plan.gpu_status, backend.unwelded);
         shader_pipeline = plan.shaders;
         // The counts on the CPU first, whatever the backend: the limit before any output is allocated, and
         // clamped_edges (the shaders do not count them).
@@ -570,7 +572,8 @@ int run_mesh(int argc, char** argv) {
             // ids, as --unwelded's plan): the CPU's welded faces exactly, floats within the bound
             // (docs/cli.md, "GPU backends").
             const UnweldedPlan plan = unwelded_plan(view, options);
-            if (!plan.shaders) refuse_gpu_options(backend.name, pattern, options, plan.gpu_status);
+            if (!plan.shaders)
+                refuse_gpu_options(backend.name, pattern, options, plan.gpu_status, backend.unwelded);
             shader_pipeline = true;
             seconds.setup = seconds_since(start);
             start = Clock::now();

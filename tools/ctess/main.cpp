@@ -35,7 +35,7 @@ commands:
            [--displace HEIGHT.png | --displace-gltf | --displace-vector RGB.png] [--displace-scale S]
            [--displace-offset O]
            [--displace-address repeat|clamp] [--displace-grow]
-           [--unwelded [--backend cpu|vulkan|webgpu] [--shaders DIR] [--backend-timeout S]]
+           [--unwelded] [--backend cpu|vulkan|webgpu [--shaders DIR] [--backend-timeout S]]
   serve    [--port N] [--viewer DIR] [--shaders DIR]   the browser viewer on 127.0.0.1 (docs/viewer.md)
 
 pattern modes: cp, d3d11-integer, d3d11-pow2, d3d11-odd, d3d11-even, uniform (tri, three factors)

@@ -72,6 +72,22 @@ constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pa
                    weld_writers_pass = 19, weld_scan_pass = 20, weld_triangles_pass = 21,
                    weld_lone_vertices_pass = 22;
 
+// Writes one u32 of buffer between compute passes (vkCmdFillBuffer), ordered after the passes before it and
+// before the ones after it.
+void fill_word(VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset, std::uint32_t value) {
+    auto before = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    before.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    before.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
+                         &before, 0, nullptr, 0, nullptr);
+    vkCmdFillBuffer(cmd, buffer, offset, 4, value);
+    auto after = vk_struct<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    after.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                         &after, 0, nullptr, 0, nullptr);
+}
+
 // Workgroups of count items at most per invocation's group of size, at least 1, at most max_workgroups.
 std::uint32_t grid_workgroups(std::uint64_t items, std::uint32_t size, std::uint32_t max_workgroups) {
     const std::uint64_t groups = items / size + (items % size != 0);
@@ -327,6 +343,7 @@ void MeshPipeline::record_split_emit(VkCommandBuffer cmd, VkDescriptorSet set, s
 
 void MeshPipeline::record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                                       std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
+                                      VkBuffer weld, VkDeviceSize weld_offset,
                                       std::uint32_t max_workgroups) const {
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
@@ -341,8 +358,13 @@ void MeshPipeline::record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_edge_scan_pass));
     vkCmdDispatch(cmd, 1, 1, 1);
     compute_barrier(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_count_pass));
-    vkCmdDispatch(cmd, std::max(1u, rt::gpu::emit_workgroups(patch_count, max_workgroups)), 1, 1);
+    // A patch per workgroup, in batches of at most max_workgroups from the header's first-patch word.
+    const VkDeviceSize first_word = weld_offset + 4 * rt::gpu::weld_word::first_patch;
+    for (std::uint32_t first = 0; first < patch_count; first += max_workgroups) {
+        fill_word(cmd, weld, first_word, first);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_count_pass));
+        vkCmdDispatch(cmd, std::min(max_workgroups, patch_count - first), 1, 1);
+    }
     compute_barrier(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_writers_pass));
     vkCmdDispatch(cmd, grid_workgroups(slots, group, max_workgroups), 1, 1);
@@ -352,8 +374,9 @@ void MeshPipeline::record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, 
     compute_barrier(cmd);
 }
 
-void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                                    std::uint32_t quad_patches, std::uint32_t mesh_vertices,
+void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t first_patch,
+                                    std::uint32_t triangle_patches, std::uint32_t quad_patches,
+                                    std::uint32_t mesh_vertices, VkBuffer weld, VkDeviceSize weld_offset,
                                     std::uint32_t max_workgroups, bool displaced, bool vector) const {
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
@@ -365,9 +388,12 @@ void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, st
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
         vkCmdDispatch(cmd, rt::gpu::emit_workgroups(count[kind], max_workgroups), 1, 1);
     }
-    if (triangle_patches + quad_patches != 0) {
+    // The triangles a patch per workgroup, in batches from the header's first-patch word (as the count pass).
+    const std::uint32_t end = first_patch + triangle_patches + quad_patches;
+    for (std::uint32_t first = first_patch; first < end; first += max_workgroups) {
+        fill_word(cmd, weld, weld_offset + 4 * rt::gpu::weld_word::first_patch, first);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_triangles_pass));
-        vkCmdDispatch(cmd, rt::gpu::emit_workgroups(triangle_patches + quad_patches, max_workgroups), 1, 1);
+        vkCmdDispatch(cmd, std::min(max_workgroups, end - first), 1, 1);
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_lone_vertices_pass));
     vkCmdDispatch(cmd, grid_workgroups(mesh_vertices, rt::gpu::emit_workgroup, max_workgroups), 1, 1);
@@ -482,7 +508,8 @@ struct Runner::Device {
                         std::to_string(limits.maxStorageBufferRange) + ")");
         auto bci = vk_struct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
         bci.size = bytes;
-        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+        bci.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT;
         bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         check(vkCreateBuffer(device, &bci, nullptr, &b.buffer), "vkCreateBuffer");
         VkMemoryRequirements req;
@@ -839,7 +866,15 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
                         quad_patches = end > quad_first ? end - quad_first : 0;
     if (welded != nullptr) {
         // The weld (docs/shaders.md, "Welded output"): binding 7 with the mesh's edge list, then the weld's
-        // counting passes, then the outputs at the welded totals.
+        // counting passes, then the outputs at the welded totals. A patch's sort runs in one workgroup: past
+        // weld_max_patch_slots a software driver's loop limit could cut it short, so such a mesh is refused.
+        for (std::uint32_t p = 0; p < n; ++p)
+            if (out.patches[p].vertex_count > rt::gpu::weld_max_patch_slots)
+                throw Error(
+                    "patch " + std::to_string(p) + " has " + std::to_string(out.patches[p].vertex_count) +
+                    " unwelded vertices, past the " + std::to_string(rt::gpu::weld_max_patch_slots) +
+                    " the GPU weld takes in one workgroup (docs/shaders.md, \"Welded output\"): weld it "
+                    "on the CPU (rt::emit_welded_mesh), or use max factor 64");
         std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
         const std::uint32_t edge_count = rt::weld_edge_list(mesh, edges);
         const std::uint32_t mesh_vertices = params[pw::mesh_vertex_count];
@@ -859,7 +894,7 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         const VkDescriptorSet weld_set = descriptor_set(b_none.buffer, b_none.buffer, b_weld.buffer);
         const double weld_ms = d.submit([&](VkCommandBuffer cmd) {
             d.pipeline->record_weld_counts(cmd, weld_set, n, edge_count, mesh_vertices, out.totals.vertices,
-                                           run.max_workgroups);
+                                           b_weld.buffer, 0, run.max_workgroups);
         });
         welded->counts_milliseconds = out.counts_milliseconds + weld_ms;
         if ((weld[rt::gpu::weld_word::status] & rt::gpu::weld_status::missing_edge) != 0)
@@ -889,8 +924,8 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         const VkDescriptorSet emit_set =
             descriptor_set(b_vertices.buffer, b_out_indices.buffer, b_weld.buffer);
         const double emit_ms = d.submit([&](VkCommandBuffer cmd) {
-            d.pipeline->record_weld_emit(cmd, emit_set, triangle_patches, quad_patches, mesh_vertices,
-                                         run.max_workgroups, displace, vector);
+            d.pipeline->record_weld_emit(cmd, emit_set, first, triangle_patches, quad_patches, mesh_vertices,
+                                         b_weld.buffer, 0, run.max_workgroups, displace, vector);
         });
         welded->milliseconds = welded->counts_milliseconds + emit_ms;
         welded->vertices.resize(static_cast<std::size_t>(weld_v));

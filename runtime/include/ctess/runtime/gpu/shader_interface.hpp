@@ -1,4 +1,4 @@
-// What a host of the generated mesh pipeline shaders (docs/shaders.md) binds and writes: the seven storage
+// What a host of the generated mesh pipeline shaders (docs/shaders.md) binds and writes: the eight storage
 // bindings, the params words, the workgroup sizes and the totals after the patch records. The shaders get
 // these numbers from gen/shaders/shader_layout.hpp, which takes them from here, so the C++ hosts
 // (<ctess/runtime/gpu/vulkan.hpp>), the JS host (ctess_webgpu.mjs, through layout.json) and the shaders share
@@ -179,6 +179,9 @@ inline constexpr std::uint32_t shared = 2;    // mesh vertices + edge points: th
 inline constexpr std::uint32_t vertices = 3;  // WeldedTotals::vertices
 inline constexpr std::uint32_t triangles = 4; // WeldedTotals::triangles
 inline constexpr std::uint32_t status = 5;    // weld_status bits; 0 when the passes' output is whole
+// The first patch of a batch of the count and triangle passes (one patch per workgroup; the host writes it
+// before each dispatch).
+inline constexpr std::uint32_t first_patch = 6;
 inline constexpr std::uint32_t header_words = 8;
 } // namespace weld_word
 namespace weld_status {
@@ -198,6 +201,10 @@ inline constexpr std::uint32_t weld_sort_words = 3; // a slot's domain point (u,
 // Patches of at most this many slots rank their interior points by counting (O(n) per slot, two barriers)
 // instead of the bitonic sort (a barrier per stage); both give the same ranks.
 inline constexpr std::uint32_t weld_counted_ranks = 128;
+// The most slots (unwelded vertices) a patch may have to be welded on the GPU: its sort runs in one
+// workgroup, and past this an invocation's loops could pass llvmpipe's 65,535 iterations (hosts refuse such a
+// mesh). Max 64 never reaches it (4,290 at most); at max 256 the largest patches do.
+inline constexpr std::uint32_t weld_max_patch_slots = 16384;
 
 // Words of binding 7 for a weld of edges edges, patch_count patches, mesh_vertices mesh vertices and slots
 // unwelded vertices.

@@ -131,14 +131,21 @@ class MeshPipeline {
     // slots words and the edges' lo and hi (rt::weld_edge_list); binding 7 is
     // rt::gpu::weld_buffer_words(edges, patch_count, mesh_vertices, slots) words, slots the unwelded vertex
     // total. The params set rt::gpu::weld_flag::on (rt::gpu::weld_params).
+    // The count pass runs a patch per workgroup, in batches of max_workgroups whose first patch it writes
+    // into binding 7's header between dispatches (vkCmdFillBuffer): binding 7 is weld at weld_offset, created
+    // with VK_BUFFER_USAGE_TRANSFER_DST_BIT. Every patch must have at most rt::gpu::weld_max_patch_slots
+    // unwelded vertices (a host refuses others).
     void record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                             std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
+                            VkBuffer weld, VkDeviceSize weld_offset,
                             std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
     // The welded vertices (the vertex passes, each slot writing the id it owns) and kept triangles of the
-    // params' patch range, which holds triangle_patches base triangles and quad_patches quads, and the mesh
-    // vertices no face reaches; the outputs sized from binding 7's totals.
-    void record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_patches,
-                          std::uint32_t quad_patches, std::uint32_t mesh_vertices,
+    // params' patch range [first_patch, first_patch + triangle_patches + quad_patches), which holds
+    // triangle_patches base triangles and quad_patches quads, and the mesh vertices no face reaches; the
+    // outputs sized from binding 7's totals. The triangles run in batches as record_weld_counts' count pass.
+    void record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t first_patch,
+                          std::uint32_t triangle_patches, std::uint32_t quad_patches,
+                          std::uint32_t mesh_vertices, VkBuffer weld, VkDeviceSize weld_offset,
                           std::uint32_t max_workgroups = rt::max_dispatch_workgroups, bool displaced = false,
                           bool vector = false) const;
 
