@@ -263,28 +263,44 @@ bool have_vulkan_backend() {
     return CTESS_HAVE_VULKAN != 0;
 }
 
+namespace {
+
+#if CTESS_HAVE_VULKAN
+// A Runner on the loader's first device, its name in `device`, and run(runner)'s output; Vulkan's errors
+// named as the backend's.
+template <class Run>
+auto with_vulkan(const GpuRun& run, std::string& device, Run&& tessellate) {
+    try {
+        vulkan::Runner runner(run.shader_dir, run.max_factor);
+        device = runner.device_name();
+        return tessellate(runner);
+    } catch (const vulkan::Error& e) {
+        throw std::runtime_error(fmt::format("--backend vulkan: {}", e.what()));
+    }
+}
+#else
+[[noreturn]] void no_vulkan() {
+    throw std::runtime_error(
+        "--backend vulkan: this ctess was built without Vulkan (install Debian libvulkan-dev "
+        "and rebuild; ctess::vulkan)");
+}
+#endif
+
+} // namespace
+
 UnweldedOutput vulkan_output([[maybe_unused]] const GpuRun& run, [[maybe_unused]] const rt::MeshView& mesh,
                              [[maybe_unused]] const rt::PipelineOptions& options,
                              [[maybe_unused]] std::string& device) {
 #if CTESS_HAVE_VULKAN
-    UnweldedOutput out;
-    try {
-        vulkan::Runner runner(run.shader_dir, run.max_factor);
-        device = runner.device_name();
+    UnweldedOutput out = with_vulkan(run, device, [&](vulkan::Runner& runner) {
         vulkan::Output gpu = runner.tessellate(mesh, options);
-        out.totals = gpu.totals;
-        out.records = std::move(gpu.patches);
-        out.vertices = std::move(gpu.vertices);
-        out.indices = std::move(gpu.indices);
-    } catch (const vulkan::Error& e) {
-        throw std::runtime_error(fmt::format("--backend vulkan: {}", e.what()));
-    }
+        return UnweldedOutput{gpu.totals, std::move(gpu.patches), std::move(gpu.vertices),
+                              std::move(gpu.indices)};
+    });
     check_output(out, mesh, "vulkan");
     return out;
 #else
-    throw std::runtime_error(
-        "--backend vulkan: this ctess was built without Vulkan (install Debian libvulkan-dev "
-        "and rebuild; ctess::vulkan)");
+    no_vulkan();
 #endif
 }
 
@@ -293,25 +309,15 @@ WeldedGpuOutput vulkan_welded_output([[maybe_unused]] const GpuRun& run,
                                      [[maybe_unused]] const rt::PipelineOptions& options,
                                      [[maybe_unused]] std::string& device) {
 #if CTESS_HAVE_VULKAN
-    WeldedGpuOutput out;
-    try {
-        vulkan::Runner runner(run.shader_dir, run.max_factor);
-        device = runner.device_name();
+    WeldedGpuOutput out = with_vulkan(run, device, [&](vulkan::Runner& runner) {
         vulkan::WeldedOutput gpu = runner.tessellate_welded(mesh, options);
-        out.totals = gpu.totals;
-        out.edges = std::move(gpu.edges);
-        out.patches = std::move(gpu.patches);
-        out.vertices = std::move(gpu.vertices);
-        out.indices = std::move(gpu.indices);
-    } catch (const vulkan::Error& e) {
-        throw std::runtime_error(fmt::format("--backend vulkan: {}", e.what()));
-    }
+        return WeldedGpuOutput{gpu.totals, std::move(gpu.edges), std::move(gpu.patches),
+                               std::move(gpu.vertices), std::move(gpu.indices)};
+    });
     check_welded_output(out, mesh, "vulkan");
     return out;
 #else
-    throw std::runtime_error(
-        "--backend vulkan: this ctess was built without Vulkan (install Debian libvulkan-dev "
-        "and rebuild; ctess::vulkan)");
+    no_vulkan();
 #endif
 }
 
