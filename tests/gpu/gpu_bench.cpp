@@ -2,7 +2,7 @@
 // one or more shader builds in the same run, on the 1,152-patch factor sweep and a 50 k-patch grid; with
 // --split, uniform density clamped to N beside split (docs/shaders.md, "Splitting") on scenes whose deepest
 // leaves are at depth 0, 1 and 2, for the first build; with --weld, the welded output beside the unwelded one
-// on lavapipe (docs/shaders.md, "Welded output"). Not a test: docs/shaders.md quotes its output.
+// on both (docs/shaders.md, "Welded output"). Not a test: docs/shaders.md quotes its output.
 //
 //   ctess_gpu_bench [--split | --weld] LABEL=SHADER_DIR [LABEL=SHADER_DIR ...]
 //
@@ -114,11 +114,11 @@ int split_table(const Build& build, vulkan::Runner& runner, int repeats) {
     return 0;
 }
 
-// The welded output (docs/shaders.md, "Welded output") beside the unwelded one, CP and uniform, on lavapipe:
-// median times of the whole run and of its counting submissions, the welded run relative to the unwelded, and
-// the CPU's single-threaded setup_welded + emit_welded_mesh on the same scene. Every welded output must equal
-// the CPU's.
-int weld_table(vulkan::Runner& runner, int repeats) {
+// The welded output (docs/shaders.md, "Welded output") beside the unwelded one, CP and uniform, on lavapipe
+// and Dawn: median times of the whole run and of its counting submissions, the welded run relative to the
+// unwelded, and the CPU's single-threaded setup_welded + emit_welded_mesh on the same scene. Every welded
+// output must equal the CPU's.
+int weld_table(const Build& build, vulkan::Runner& runner, int repeats) {
     struct Case {
         const char* name;
         Scene scene;
@@ -129,39 +129,48 @@ int weld_table(vulkan::Runner& runner, int repeats) {
         {"1,152-patch sweep, PN", factor_sweep_grid(64, 24, rt::Surface::pn_triangles)},
         {"50 k-patch grid, PN, DiceRate 12", big}};
     std::printf(
-        "\n| scene | pattern | output | vertices | triangles | lavapipe median ms (of %d) | counting, ms | "
-        "welded / unwelded | CPU ms (one thread) |\n|---|---|---|---|---|---|---|---|---|\n",
+        "\n| scene | pattern | output | vertices | triangles | backend | median ms (of %d) | counting, ms | "
+        "welded / unwelded | CPU ms (one thread) |\n|---|---|---|---|---|---|---|---|---|---|\n",
         repeats);
+    const std::string work = std::string(CTESS_WORK_DIR) + "/bench_weld_" + build.label;
     for (Case& c : cases)
-        for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform}) {
-            c.scene.options.pattern = pattern;
-            PipelineOutput cpu[2];
-            std::vector<double> ms[2], counts_ms[2], cpu_ms[2];
-            for (int r = -1; r < repeats; ++r)
-                for (int k = 0; k < 2; ++k) { // unwelded, welded
-                    const PipelineOutput reference = k == 0 ? run_cpu(rt::cp_tables_64, c.scene)
-                                                            : run_cpu_welded(rt::cp_tables_64, c.scene);
-                    const PipelineOutput gpu =
-                        k == 0 ? run_vulkan(runner, c.scene) : run_vulkan_welded(runner, c.scene);
-                    if (r < 0) {
-                        cpu[k] = reference;
-                        if (!same_output(reference, gpu)) return 1;
-                        continue;
+        for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform})
+            for (const char* backend : {"lavapipe", "Dawn"}) {
+                c.scene.options.pattern = pattern;
+                PipelineOutput cpu[2];
+                std::vector<double> ms[2], counts_ms[2], cpu_ms[2];
+                for (int r = -1; r < repeats; ++r)
+                    for (int k = 0; k < 2; ++k) { // unwelded, welded
+                        const PipelineOutput reference = k == 0 ? run_cpu(rt::cp_tables_64, c.scene)
+                                                                : run_cpu_welded(rt::cp_tables_64, c.scene);
+                        PipelineOutput gpu;
+                        if (backend[0] == 'l')
+                            gpu = k == 0 ? run_vulkan(runner, c.scene) : run_vulkan_welded(runner, c.scene);
+                        else
+                            gpu = (k == 0 ? run_dawn : run_dawn_welded)(CTESS_NODE, CTESS_RUN_WGSL, build.dir,
+                                                                        64, {{&c.scene, work}}, RunLimits{})
+                                      .front();
+                        if (r < 0) {
+                            cpu[k] = reference;
+                            if (!same_output(reference, gpu)) return 1;
+                            continue;
+                        }
+                        ms[k].push_back(gpu.milliseconds);
+                        counts_ms[k].push_back(gpu.counts_milliseconds);
+                        cpu_ms[k].push_back(reference.milliseconds);
                     }
-                    ms[k].push_back(gpu.milliseconds);
-                    counts_ms[k].push_back(gpu.counts_milliseconds);
-                    cpu_ms[k].push_back(reference.milliseconds);
+                for (int k = 0; k < 2; ++k) {
+                    char ratio[32] = "1", counting[32] = "—";
+                    if (k == 1) std::snprintf(ratio, sizeof ratio, "%.2f", median(ms[1]) / median(ms[0]));
+                    if (median(counts_ms[k]) >= 0)
+                        std::snprintf(counting, sizeof counting, "%.1f", median(counts_ms[k]));
+                    std::printf("| %s | %s | %s | %u | %u | %s | %.1f | %s | %s | %.1f |\n", c.name,
+                                pattern == rt::Pattern::cp ? "CP" : "uniform", k == 0 ? "unwelded" : "welded",
+                                cpu[k].total_vertices(), cpu[k].total_triangles(), backend, median(ms[k]),
+                                counting, ratio, median(cpu_ms[k]));
                 }
-            for (int k = 0; k < 2; ++k) {
-                char ratio[32] = "1";
-                if (k == 1) std::snprintf(ratio, sizeof ratio, "%.2f", median(ms[1]) / median(ms[0]));
-                std::printf("| %s | %s | %s | %u | %u | %.1f | %.1f | %s | %.1f |\n", c.name,
-                            pattern == rt::Pattern::cp ? "CP" : "uniform", k == 0 ? "unwelded" : "welded",
-                            cpu[k].total_vertices(), cpu[k].total_triangles(), median(ms[k]),
-                            median(counts_ms[k]), ratio, median(cpu_ms[k]));
+                std::fflush(stdout);
             }
-            std::fflush(stdout);
-        }
     return 0;
 }
 
@@ -201,7 +210,7 @@ int main(int argc, char** argv) {
         std::vector<std::unique_ptr<vulkan::Runner>> runners;
         for (const Build& b : builds) runners.push_back(std::make_unique<vulkan::Runner>(b.dir, 64));
         if (split_only) return split_table(builds.front(), *runners.front(), repeats);
-        if (weld_only) return weld_table(*runners.front(), repeats);
+        if (weld_only) return weld_table(builds.front(), *runners.front(), repeats);
         std::printf(
             "| scene | patches | vertices | triangles | backend | build | median ms (of %d) | of which "
             "setup + prefix sum, ms | emit passes, ms |\n"
