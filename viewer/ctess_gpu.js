@@ -4,7 +4,7 @@
 // generated ctess_mesh_<max>.layout.json's: `constants` below.
 import { MeshPipeline, f32Bits, requiredLimits } from './shaders/ctess_webgpu.mjs';
 
-export const PATTERN_NAMES = ['cp', 'uniform']; // the layout's PATTERN_CP, PATTERN_UNIFORM
+export const PATTERN_NAMES = ['cp', 'uniform', 'uniform-split']; // the layout's PATTERN_CP, PATTERN_UNIFORM, PATTERN_UNIFORM_SPLIT
 
 // Resolves to {device, adapterInfo} or throws an Error whose message says plainly why WebGPU is unusable.
 export async function openDevice() {

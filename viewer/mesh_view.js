@@ -554,7 +554,7 @@ export class MeshView {
         // reading back each frame stays cheap; beyond it, ctessViewerChecksum() reads them on request.
         for (let k = 0; k < sides.length; k++)
             sides[k].checksum = sides[k].vertices + sides[k].triangles <= CHECKSUM_EVERY_FRAME ? await this.checksum(k) : null;
-        const uniformMax = patterns.slice(0, sides.length).includes('uniform') ? (await pipeline.uniformTables()).maxFactor : null;
+        const uniformMax = patterns.slice(0, sides.length).some((p) => p.startsWith('uniform')) ? (await pipeline.uniformTables()).maxFactor : null;
         this.ui.diceValue.textContent = `${dice} px`;
         this.ui.patches.textContent = mesh.patches;
         this.ui.vertices.textContent = sides.map((s) => s.vertices).join(' | ');
@@ -567,7 +567,8 @@ export class MeshView {
         const sideMs = (s) => `${D3D11_PATTERNS.includes(s.mode) ? 'ctess serve' : 'GPU passes'} ${s.computeMs.toFixed(1)} ms`;
         this.ui.frameTime.textContent = `${frameMs.toFixed(1)} ms (${sides.map(sideMs).join(' + ')})` +
             (compiled ? '; first draw with these passes, which compiles them' : '');
-        const caption = (s) => `${s.mode === 'uniform' ? 'uniform density' : D3D11_PATTERNS.includes(s.mode) ? `${s.mode} (ctess serve, CPU)` : 'CP'}: ` +
+        const caption = (s) => `${s.mode === 'uniform' ? 'uniform density' : s.mode === 'uniform-split' ? 'uniform density, split above N'
+                                   : D3D11_PATTERNS.includes(s.mode) ? `${s.mode} (ctess serve, CPU)` : 'CP'}: ` +
                                `${s.vertices} vertices, ${s.triangles} triangles`;
         this.ui.captionA.textContent = caption(sides[0]);
         this.ui.captionB.textContent = compare ? caption(sides[1]) : '';

@@ -236,7 +236,9 @@ async function redraw() {
             if (state.view === 'pattern') await redrawPattern();
             else {
                 const m = await meshView.redraw(state.max);
-                const name = (mode) => (mode === 'uniform' ? `uniform density, factors clamped to [1, ${m.uniformMax}]` : 'CP');
+                const name = (mode) => (mode === 'uniform' ? `uniform density, factors clamped to [1, ${m.uniformMax}]`
+                                        : mode === 'uniform-split' ? `uniform density, split above ${m.uniformMax}`
+                                        : mode.startsWith('d3d11') ? mode : 'CP');
                 setStatus(`mesh · ${m.model ? m.model.name : m.mesh} · ${name(m.mode)}${m.compare ? ` | ${name(m.compare.mode)}` : ''} · ` +
                           `${m.surface}${m.displacement ? ' displaced' : ''} · DiceRate ${m.diceRate} px · max ${m.max} · computed by the generated WGSL on WebGPU`);
                 syncUrl();
@@ -411,10 +413,10 @@ const numbers = (text, count) => {
     return v.length === count && v.every(Number.isFinite) ? v : null;
 };
 if (MESH_NAMES.includes(query.get('mesh'))) $('mesh-kind').value = query.get('mesh');
-if (['cp', 'uniform'].includes(query.get('pattern'))) $('mesh-pattern').value = query.get('pattern');
+if (['cp', 'uniform', 'uniform-split'].includes(query.get('pattern'))) $('mesh-pattern').value = query.get('pattern');
 if (SURFACE_NAMES.includes(query.get('surface'))) $('surface').value = query.get('surface');
 if (Number(query.get('dice')) > 0) $('dice').value = query.get('dice');
-if (['cp', 'uniform'].includes(query.get('compare'))) {
+if (['cp', 'uniform', 'uniform-split'].includes(query.get('compare'))) {
     $('compare').checked = true;
     $('compare-pattern').value = query.get('compare');
 }

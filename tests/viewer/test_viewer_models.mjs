@@ -4,7 +4,8 @@
 // (glTF2/BoxTextured-glTF-Binary/BoxTextured.glb: 24 vertices at 8 positions) by drag and drop, plus a height
 // map, sets the camera exactly (URL and JS hook) and the DiceRate, and compares the page's counts and the
 // checksums of its output buffers (window.ctessViewer, and window.ctessViewerChecksum on request) with `ctess mesh --stats`'s
-// `gpu` block for the same options: CP and uniform side by side, PN-AEN, Phong with displacement, and the seamed
+// `gpu` block for the same options: CP and uniform side by side (and uniform split above N against `--unwelded`),
+// PN-AEN, Phong with displacement, and the seamed
 // model given its own KHR_materials_displacement image with factors grown by its bound, beside D3D11 fractional_even
 // (computed by ctess serve on the CPU), then an RGB vector map. The built-in
 // quad torus displaced by the map stays closed and moves by at most the height bound. A .gltf whose buffer is a
@@ -46,8 +47,9 @@ const base = await new Promise((resolve, reject) => {
 process.on('exit', () => server.kill());
 
 // The canvas the viewer draws (640 x 600) and its field of view (45 degrees) are the CLI's --resolution and --fov.
-const cliStats = (file, { pattern, surface, dice, eye, displace }) => JSON.parse(execFileSync(ctess, [
-    'mesh', '--in', file, '--stats', '--pattern', pattern, '--surface', surface, '--dice-rate', String(dice),
+const cliStats = (file, { pattern, surface, dice, eye, displace, unwelded }) => JSON.parse(execFileSync(ctess, [
+    'mesh', '--in', file, '--stats', ...(unwelded ? ['--unwelded'] : []), '--pattern', pattern, '--surface', surface,
+    '--dice-rate', String(dice),
     '--camera', eye.join(','), '--fov', '45', '--resolution', '640,600',
     ...(displace ? [...(displace.gltf ? ['--displace-gltf'] : [displace.vector ? '--displace-vector' : '--displace', displace.file]),
                     '--displace-scale', String(displace.scale),
@@ -176,6 +178,29 @@ state = await viewerState((eye) => window.ctessViewer?.model?.name === 'BoxTextu
 check(state.model.vertex_count === 24 && state.model.open_edges === 0 && state.quads === 0 && page.url().includes('camera=2.2'),
       `seamed model: ${JSON.stringify(state.model)}, URL ${page.url()}`);
 await sameAsCli(state, seams, { surface: 'pn-aen', dice: 20, eye: seamsEye }, [['cp', 0], ['uniform', 1]]);
+
+// ---- uniform density split above N beside it (docs/shaders.md, "Splitting"): the CLI's --unwelded --pattern
+// uniform runs the same passes, so its counts and checksums are the page's ----
+await page.selectOption('#compare-pattern', 'uniform-split');
+await page.locator('#dice').fill('2');
+state = await viewerState(() => window.ctessViewer?.compare?.mode === 'uniform-split' && window.ctessViewer.diceRate === 2);
+{
+    const ref = cliStats(seams, { surface: 'pn-aen', dice: 2, eye: seamsEye, pattern: 'uniform', unwelded: true });
+    const sum = await page.evaluate(() => window.ctessViewerChecksum(1));
+    const what = `BoxTextured.glb uniform split pn-aen DiceRate 2`;
+    let ok = check(state.factorScaleBits === ref.gpu.factor_scale_bits, `${what}: factor scale bits ${state.factorScaleBits}, CLI ${ref.gpu.factor_scale_bits}`);
+    ok &&= check(ref.gpu.clamped_edges > 0, `${what}: the factors do not pass N (the CLI's clamped uniform clamps ${ref.gpu.clamped_edges} edges)`);
+    const shown = await page.textContent('#status');
+    ok &&= check(shown.includes('CP | uniform density, split above'), `${what}: the status says "${shown}"`);
+    ok &&= check(state.compare.vertices === ref.output_vertices && state.compare.triangles === ref.output_triangles,
+                 `${what}: ${state.compare.vertices}/${state.compare.triangles}; CLI ${ref.output_vertices}/${ref.output_triangles}`);
+    ok &&= check(JSON.stringify(sum) === JSON.stringify(ref.unwelded.checksum), `${what}: checksums ${JSON.stringify(sum)}, CLI ${JSON.stringify(ref.unwelded.checksum)}`);
+    if (ok) compared++;
+    console.log(`${what}: ${state.compare.triangles} triangles (clamped to N: ${ref.gpu.triangles}) ${ok ? '=' : '!='} the CLI's`);
+}
+await page.selectOption('#compare-pattern', 'uniform');
+await page.locator('#dice').fill('20');
+await viewerState(() => window.ctessViewer?.compare?.mode === 'uniform' && window.ctessViewer.diceRate === 20);
 
 // ---- the model's own KHR_materials_displacement image, factors grown by its bound (--displace-gltf --displace-grow) ----
 // BoxTextured.glb with the extension added to its material, pointing at its own embedded texture (CesiumLogoFlat,
