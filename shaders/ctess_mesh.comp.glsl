@@ -140,18 +140,18 @@ void load_column_record(inout Patch p) {
     p.b = uintBitsToFloat(tables[rec + 3u]);
 }
 
+// The line of a line state (token, t16) from its token record; T0 reads as T1's shape at t = 0.
+Edge line_edge(uvec2 s) {
+    uint shape = s.x == 0u ? 1u : s.x;
+    uint rec = tables[TOKEN_RECORD + 2u * (shape - 1u)];
+    return Edge(rec & 0xFFFFu, s.x == 0u ? 0u : s.y, rec >> 16, tables[TOKEN_RECORD + 2u * (shape - 1u) + 1u]);
+}
+
 // The whole setup from the line states: the setup pass runs it once per patch.
 Patch patch_setup(uvec2 s0, uvec2 s1, uvec2 s2) {
     Patch p = patch_zero();
     uvec2 s[3] = uvec2[3](s0, s1, s2);
-    for (uint k = 0u; k < 3u; ++k) {
-        uint shape = s[k].x == 0u ? 1u : s[k].x;
-        uint rec = tables[TOKEN_RECORD + 2u * (shape - 1u)];
-        p.e[k].points = rec & 0xFFFFu;
-        p.e[k].segments = rec >> 16;
-        p.e[k].half_step = tables[TOKEN_RECORD + 2u * (shape - 1u) + 1u];
-        p.e[k].t16 = s[k].x == 0u ? 0u : s[k].y;
-    }
+    for (uint k = 0u; k < 3u; ++k) p.e[k] = line_edge(s[k]);
     p.c0 = s0.x == 0u;
     p.c1 = s1.x == 0u;
     p.c2 = s2.x == 0u;
@@ -2004,8 +2004,7 @@ uint line_rank(float f, uint x) {
     }
     uvec2 s = line_state(f);
     if (s.x == 0u) return 0u;
-    uint rec = tables[TOKEN_RECORD + 2u * (s.x - 1u)];
-    Edge e = Edge(rec & 0xFFFFu, s.y, rec >> 16, tables[TOKEN_RECORD + 2u * (s.x - 1u) + 1u]);
+    Edge e = line_edge(s);
     uint rank = 0u, previous = 0u;
     for (uint i = 1u; i < e.segments; ++i) {
         uint point = edge_point(e, i);

@@ -120,18 +120,18 @@ fn load_column_record(p: ptr<function, Patch>) {
     (*p).b = bitcast<f32>(tables[rec + 3u]);
 }
 
+// The line of a line state (token, t16) from its token record; T0 reads as T1's shape at t = 0.
+fn line_edge(s: vec2<u32>) -> Edge {
+    let shape = select(s.x, 1u, s.x == 0u);
+    let rec = tables[TOKEN_RECORD + 2u * (shape - 1u)];
+    return Edge(rec & 0xFFFFu, select(s.y, 0u, s.x == 0u), rec >> 16u, tables[TOKEN_RECORD + 2u * (shape - 1u) + 1u]);
+}
+
 // The whole setup from the line states: the setup pass runs it once per patch.
 fn patch_setup(s0: vec2<u32>, s1: vec2<u32>, s2: vec2<u32>) -> Patch {
     var p: Patch; // zero-initialised
     var s = array<vec2<u32>, 3>(s0, s1, s2);
-    for (var k = 0u; k < 3u; k++) {
-        let shape = select(s[k].x, 1u, s[k].x == 0u);
-        let rec = tables[TOKEN_RECORD + 2u * (shape - 1u)];
-        p.e[k].points = rec & 0xFFFFu;
-        p.e[k].segments = rec >> 16u;
-        p.e[k].half_step = tables[TOKEN_RECORD + 2u * (shape - 1u) + 1u];
-        p.e[k].t16 = select(s[k].y, 0u, s[k].x == 0u);
-    }
+    for (var k = 0u; k < 3u; k++) { p.e[k] = line_edge(s[k]); }
     p.c0 = s0.x == 0u;
     p.c1 = s1.x == 0u;
     p.c2 = s2.x == 0u;
@@ -2076,8 +2076,7 @@ fn line_rank(f: f32, x: u32) -> u32 {
     }
     let s = line_state(f);
     if (s.x == 0u) { return 0u; }
-    let rec = tables[TOKEN_RECORD + 2u * (s.x - 1u)];
-    let e = Edge(rec & 0xFFFFu, s.y, rec >> 16u, tables[TOKEN_RECORD + 2u * (s.x - 1u) + 1u]);
+    let e = line_edge(s);
     var rank = 0u;
     var previous = 0u;
     for (var i = 1u; i < e.segments; i++) {

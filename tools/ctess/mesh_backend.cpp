@@ -37,14 +37,17 @@ namespace {
 
 // The shaders' output is used only once it has the sizes mesh implies and every index names a vertex, so a
 // driver's or a child's bad result cannot reach the writers.
+bool indices_within(const std::vector<std::uint32_t>& indices, std::size_t vertices) {
+    for (const std::uint32_t i : indices)
+        if (i >= vertices) return false;
+    return true;
+}
+
 void check_output(const UnweldedOutput& out, const rt::MeshView& mesh, const char* backend) {
     const bool sized = out.records.size() == mesh.patch_count() &&
                        out.vertices.size() == out.totals.vertices &&
                        out.indices.size() == 3 * std::size_t{out.totals.triangles};
-    bool indices_ok = sized;
-    for (std::size_t k = 0; indices_ok && k < out.indices.size(); ++k)
-        indices_ok = out.indices[k] < out.vertices.size();
-    if (!indices_ok)
+    if (!sized || !indices_within(out.indices, out.vertices.size()))
         throw std::runtime_error(fmt::format(
             "--backend {}: the GPU's output is malformed ({} records for {} "
             "patches, {} vertices, {} indices, or an index past the vertices)",
@@ -55,10 +58,7 @@ void check_welded_output(const WeldedGpuOutput& out, const rt::MeshView& mesh, c
     const bool sized = out.patches.size() == mesh.patch_count() && out.edges.size() == out.totals.edges &&
                        out.vertices.size() == out.totals.vertices &&
                        out.indices.size() == 3 * std::size_t{out.totals.triangles};
-    bool indices_ok = sized;
-    for (std::size_t k = 0; indices_ok && k < out.indices.size(); ++k)
-        indices_ok = out.indices[k] < out.vertices.size();
-    if (!indices_ok)
+    if (!sized || !indices_within(out.indices, out.vertices.size()))
         throw std::runtime_error(fmt::format(
             "--backend {}: the GPU's welded output is malformed ({} records for "
             "{} patches, {} vertices, {} indices, or an index past the vertices)",

@@ -88,6 +88,11 @@ void fill_word(VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset, std::u
                          &after, 0, nullptr, 0, nullptr);
 }
 
+// The vertex pass of kind 0 (base triangles) or 1 (quads): undisplaced, displaced or vector-displaced.
+unsigned vertex_pass(unsigned kind, bool displaced, bool vector) {
+    return !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
+}
+
 // Workgroups of count items at most per invocation's group of size, at least 1, at most max_workgroups.
 std::uint32_t grid_workgroups(std::uint64_t items, std::uint32_t size, std::uint32_t max_workgroups) {
     const std::uint64_t groups = items / size + (items % size != 0);
@@ -273,8 +278,8 @@ void MeshPipeline::record_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::ui
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (count[kind] == 0) continue;
         const std::uint32_t groups = rt::gpu::emit_workgroups(count[kind], max_workgroups);
-        const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipeline(vertex_pass(kind, displaced, vector)));
         vkCmdDispatch(cmd, groups, 1, 1);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(3 + 2 * kind));
         vkCmdDispatch(cmd, groups, 1, 1);
@@ -290,10 +295,8 @@ void MeshPipeline::record_split_counts(VkCommandBuffer cmd, VkDescriptorSet set,
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(0));
     vkCmdDispatch(cmd, groups > 0 ? groups : 1, 1, 1);
     compute_barrier(cmd);
-    const std::uint32_t root_groups =
-        roots / rt::gpu::split_workgroup + (roots % rt::gpu::split_workgroup != 0);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(split_roots_pass));
-    vkCmdDispatch(cmd, std::max(1u, std::min(root_groups, max_workgroups)), 1, 1);
+    vkCmdDispatch(cmd, grid_workgroups(roots, rt::gpu::split_workgroup, max_workgroups), 1, 1);
     indirect_barrier(cmd);
     const VkDeviceSize dispatch =
         patches_offset + 4 * (rt::gpu::split_area_word(patch_count) + rt::gpu::split_word::dispatch);
@@ -333,8 +336,8 @@ void MeshPipeline::record_split_emit(VkCommandBuffer cmd, VkDescriptorSet set, s
     compute_barrier(cmd);
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (!(kind == 0 ? triangles : quads)) continue;
-        const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipeline(vertex_pass(kind, displaced, vector)));
         vkCmdDispatch(cmd, groups, 1, 1);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(3 + 2 * kind));
         vkCmdDispatch(cmd, groups, 1, 1);
@@ -384,8 +387,8 @@ void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, st
     const std::uint32_t count[2] = {triangle_patches, quad_patches};
     for (unsigned kind = 0; kind < 2; ++kind) {
         if (count[kind] == 0) continue;
-        const unsigned vertex_pass = !displaced ? 2 + 2 * kind : vector ? 8 + kind : 6 + kind;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(vertex_pass));
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipeline(vertex_pass(kind, displaced, vector)));
         vkCmdDispatch(cmd, rt::gpu::emit_workgroups(count[kind], max_workgroups), 1, 1);
     }
     // The triangles a patch per workgroup, in batches from the header's first-patch word (as the count pass).
