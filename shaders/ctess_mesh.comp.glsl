@@ -2050,15 +2050,13 @@ bool weld_load(uint t, out WeldPatch wp) {
     return true;
 }
 
-// Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key
-// (a triangle's base weights (w1, w2), a quad's unit square); shared slots get key (~0, ~0), which sorts last.
-// The places are slot_place's (mesh_pipeline.cpp): a corner, else the first edge whose weight is zero (a quad
-// half's diagonal is inside), else inside; an edge point's parameter is measured from the lower mesh index.
-uint weld_slot(WeldPatch wp, uint i, out uvec2 key) {
-    uint side = i < wp.counts_a.x ? 0u : 1u;
-    uint local = side == 0u ? i : i - wp.counts_a.x;
-    uvec2 d = uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+// Where the point d of half `side` lies, as slot_place (mesh_pipeline.cpp): 0 a corner (its mesh vertex in
+// place.x), else 1 on the first mesh edge whose weight is zero (a quad half's diagonal is inside): its mesh
+// vertices in place.xy and its parameter from the lower index in place.z, else 2 inside, with its domain point in
+// key (a triangle's base weights (w1, w2), a quad's unit square). key is (~0, ~0) but inside.
+uint weld_place(WeldPatch wp, uint side, uvec2 d, out uvec3 place, out uvec2 key) {
     key = uvec2(0xFFFFFFFFu);
+    place = uvec3(0u);
     uint a, b, x;
     if (wp.quad) {
         if (side == 1u) d = uvec2(FIXED_ONE - d.x, FIXED_ONE - d.y); // half B: cp::quad_point
@@ -2068,28 +2066,50 @@ uint weld_slot(WeldPatch wp, uint i, out uvec2 key) {
         for (uint e = 0u; e < 4u && k == 4u; ++e) if (on_edge[e]) k = e;
         if (k == 4u) {
             key = d;
-            return WELD_INTERIOR;
+            return 2u;
         }
         a = wp.w[(k + wp.rot) % 4u];
         b = wp.w[(k + 1u + wp.rot) % 4u];
-        if (r[k] == 0u) return a;
-        if (r[k] == FIXED_ONE) return b;
+        if (r[k] == 0u || r[k] == FIXED_ONE) {
+            place.x = r[k] == 0u ? a : b;
+            return 0u;
+        }
         x = a <= b ? r[k] : FIXED_ONE - r[k];
     } else {
         uint pw[3] = uint[3](FIXED_ONE - d.x - d.y, d.x, d.y), w3[3];
         for (uint k = 0u; k < 3u; ++k) w3[(k + wp.rot) % 3u] = pw[k];
-        for (uint c = 0u; c < 3u; ++c) if (w3[c] == FIXED_ONE) return wp.w[c];
+        for (uint c = 0u; c < 3u; ++c) {
+            if (w3[c] == FIXED_ONE) {
+                place.x = wp.w[c];
+                return 0u;
+            }
+        }
         uint j = w3[0] == 0u ? 0u : w3[1] == 0u ? 1u : w3[2] == 0u ? 2u : 3u;
         if (j == 3u) {
             key = uvec2(w3[1], w3[2]);
-            return WELD_INTERIOR;
+            return 2u;
         }
         uint i1 = (j + 1u) % 3u, i2 = (j + 2u) % 3u;
         a = wp.w[i1];
         b = wp.w[i2];
         x = a <= b ? w3[i2] : w3[i1];
     }
-    return weld[weld_edge(weld_find_edge(a, b)) + WEDGE_FIRST_VERTEX] + line_rank(mesh_edge_factor(a, b), x);
+    place = uvec3(a, b, x);
+    return 1u;
+}
+
+// Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key;
+// shared slots get key (~0, ~0), which sorts last.
+uint weld_slot(WeldPatch wp, uint i, out uvec2 key) {
+    uint side = i < wp.counts_a.x ? 0u : 1u;
+    uint local = side == 0u ? i : i - wp.counts_a.x;
+    uvec2 d = uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+    uvec3 place;
+    uint kind = weld_place(wp, side, d, place, key);
+    if (kind == 0u) return place.x;
+    if (kind == 2u) return WELD_INTERIOR;
+    return weld[weld_edge(weld_find_edge(place.x, place.y)) + WEDGE_FIRST_VERTEX] +
+           line_rank(mesh_edge_factor(place.x, place.y), place.z);
 }
 
 // Pattern triangle k's slots (half B's after half A's vertices).
@@ -2114,9 +2134,15 @@ void ctess_weld_edges() {
     uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     uint ids = params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS];
     for (uint id = gl_GlobalInvocationID.x; id < ids; id += stride) weld[weld_writer(id)] = 0u;
+    // The split pattern counts by its sort (ctess_weld_split_counts): its owners' words start at 0.
+    bool split_ = split_pattern();
     for (uint e = gl_GlobalInvocationID.x; e < weld_edge_count(); e += stride) {
         uint m = weld_edge(e);
-        weld[m + WEDGE_VERTEX_COUNT] = line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
+        weld[m + WEDGE_VERTEX_COUNT] = split_ ? 0u : line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
+    }
+    if (!split_) return;
+    for (uint t = gl_GlobalInvocationID.x; t < patch_count(); t += stride) {
+        for (uint k = 0u; k < WELD_PATCH_WORDS; ++k) weld[weld_patch(t) + k] = 0u;
     }
 }
 
@@ -2310,9 +2336,12 @@ void ctess_weld_count() {
 // patches last to first, and within a patch its last slot). atomicMax: the result does not depend on the order.
 void ctess_weld_writers() {
     uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    // The split pattern's map words are ids (interior ones marked): every id gets a writer.
+    bool split_ = split_pattern();
     for (uint s = gl_GlobalInvocationID.x; s < weld[WELD_SLOTS]; s += stride) {
         uint m = weld[weld_map(s)];
-        if ((m & WELD_INTERIOR) == 0u) atomicMax(weld[weld_writer(m)], s + 1u);
+        if (split_) atomicMax(weld[weld_writer(m & ~WELD_INTERIOR)], s + 1u);
+        else if ((m & WELD_INTERIOR) == 0u) atomicMax(weld[weld_writer(m)], s + 1u);
     }
 }
 
@@ -2385,6 +2414,218 @@ void ctess_weld_lone_vertices() {
     }
 }
 
+// ---- the split pattern's weld: one sort over the mesh (docs/shaders.md, "Welded output", "The split pattern") ----
+// A split patch can have millions of slots, past one workgroup's sort, so every slot of the mesh gets a record
+// (owner, key, slot): a mesh edge's points are owned by the edge (owner e) and keyed by their parameter from the
+// lower index, a patch's interior points by the patch (owner edges + t) and their domain point; corners and the
+// padding have owner ~0 and sort last. Sorted, the distinct (owner, key) pairs in order are setup_welded's ids
+// after the mesh vertices: edges in list order, each by rank of its parameter, then the patches' interiors, each
+// by rank of its domain point. Binding 7 after the map words: two words of base weights per slot, the records
+// (WELD_SORT_RECORDS, a power of two) and two words per rank block. A slot's map word is its id, with
+// WELD_INTERIOR on interior points.
+uint weld_weights(uint s) { return weld_map(weld[WELD_SLOTS]) + 2u * s; }
+uint weld_record(uint i) { return weld_weights(weld[WELD_SLOTS]) + WELD_RECORD_WORDS * i; }
+uint weld_block(uint b) { return weld_record(weld[WELD_SORT_RECORDS]) + 2u * b; }
+uvec4 weld_load_record(uint i) {
+    uint o = weld_record(i);
+    return uvec4(weld[o], weld[o + 1u], weld[o + 2u], weld[o + 3u]);
+}
+void weld_store_record(uint i, uvec4 r) {
+    uint o = weld_record(i);
+    weld[o] = r.x;
+    weld[o + 1u] = r.y;
+    weld[o + 2u] = r.z;
+    weld[o + 3u] = r.w;
+}
+bool weld_record_less(uvec4 a, uvec4 b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z != b.z ? a.z < b.z : a.w < b.w;
+}
+// Patch t's corners and rotation as weld_load reads them; false for a culled patch.
+bool weld_corners(uint t, out WeldPatch wp) {
+    wp.quad = t >= triangle_count();
+    wp.rot = patches[t * PATCH_WORDS + REC_ROTATION];
+    wp.w = uint[4](0u, 0u, 0u, 0u);
+    if (wp.quad) return base_quad(t - triangle_count(), wp.w);
+    uvec3 w;
+    if (!base_triangle(t, w)) return false;
+    wp.w = uint[4](w.x, w.y, w.z, 0u);
+    return true;
+}
+
+// Split weld pass 1 (after the split passes, instead of ctess_weld_count), a workgroup per leaf: each leaf vertex's
+// base weights, and its map word (a corner's mesh vertex) or its record; the padding records.
+void ctess_weld_split_keys() {
+    uint slots = weld[WELD_SLOTS], stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    for (uint i = slots + gl_GlobalInvocationID.x; i < weld[WELD_SORT_RECORDS]; i += stride) weld_store_record(i, uvec4(0xFFFFFFFFu));
+    uint leaves = split_leaves();
+    for (uint item = gl_WorkGroupID.x; item < leaves; item += gl_NumWorkGroups.x) {
+        uint leaf = split_leaf(item), t = patches[leaf + NODE_PATCH];
+        uint first = patches[leaf + NODE_FIRST_VERTEX], count = patches[leaf + NODE_VERTICES];
+        WeldPatch wp;
+        if (count == 0u || !weld_corners(t, wp)) continue;
+        SplitNode s = load_node(leaf);
+        uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        uint side = wp.quad ? (patches[leaf + NODE_INFO] >> NODE_HALF_SHIFT) & 1u : 0u;
+        for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
+            uvec2 d = split_vertex(s, words, i), key;
+            uint o = weld_weights(first + i);
+            weld[o] = d.x;
+            weld[o + 1u] = d.y;
+            uvec3 place;
+            uint kind = weld_place(wp, side, d, place, key);
+            uvec4 r = uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, first + i);
+            if (kind == 0u) weld[weld_map(first + i)] = place.x;
+            else if (kind == 1u) r.xyz = uvec3(weld_find_edge(place.x, place.y), place.z, 0u);
+            else r.xyz = uvec3(weld_edge_count() + t, key);
+            weld_store_record(first + i, r);
+        }
+    }
+}
+
+// Split weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
+// written by the host before each dispatch), grid-stride over the record pairs: no invocation loops long.
+void ctess_weld_sort_step() {
+    uint n = weld[WELD_SORT_RECORDS], stage = weld[WELD_SORT_STAGE], step_ = weld[WELD_SORT_STEP];
+    for (uint i = gl_GlobalInvocationID.x; i < n / 2u; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {
+        uint low = i & (step_ - 1u), p = ((i - low) << 1u) | low, q = p + step_;
+        uvec4 a = weld_load_record(p), b = weld_load_record(q);
+        if (weld_record_less(b, a) == ((p & stage) == 0u)) {
+            weld_store_record(p, b);
+            weld_store_record(q, a);
+        }
+    }
+}
+
+// The rank passes' items: the sorted records (WELD_RANK_KEYS: flagged where a distinct (owner, key) starts) or
+// the unwelded triangles (WELD_RANK_TRIANGLES: flagged where kept, one word each over the records' area).
+uint weld_rank_items() {
+    return weld[WELD_RANK_MODE] == WELD_RANK_KEYS ? weld[WELD_SORT_RECORDS] : patches[patch_count() * PATCH_WORDS + 1u];
+}
+bool weld_rank_flag(uint i, uint items) {
+    if (i >= items) return false;
+    if (weld[WELD_RANK_MODE] != WELD_RANK_KEYS) return weld[weld_record(0u) + i] != 0u;
+    uvec4 r = weld_load_record(i);
+    if (r.x == 0xFFFFFFFFu) return false;
+    return i == 0u || weld_load_record(i - 1u).xyz != r.xyz;
+}
+
+// Split weld rank pass 1, a workgroup per block of WELD_RANK_BLOCK items: the block's flags counted.
+void ctess_weld_rank_blocks() {
+    uint lane = gl_LocalInvocationID.x, items = weld_rank_items();
+    uint blocks = (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK;
+    for (uint b = gl_WorkGroupID.x; b < blocks; b += gl_NumWorkGroups.x) {
+        uint count = 0u;
+        for (uint c = 0u; c < WELD_RANK_BLOCK; c += EMIT_GROUP)
+            if (weld_rank_flag(b * WELD_RANK_BLOCK + c + lane, items)) ++count;
+        weld_lane[lane] = count;
+        barrier();
+        for (uint d = 1u; d < EMIT_GROUP; d <<= 1) {
+            uint add = lane >= d ? weld_lane[lane - d] : 0u;
+            barrier();
+            weld_lane[lane] += add;
+            barrier();
+        }
+        if (lane == 0u) weld[weld_block(b)] = weld_lane[EMIT_GROUP - 1u];
+        barrier();
+    }
+}
+
+// Split weld rank pass 2, one workgroup: the blocks' first ranks; the total in WELD_RANKED.
+void ctess_weld_rank_scan() {
+    uint items = weld_rank_items();
+    uvec2 end_ = weld_prefix(weld_block(0u), 2u, (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK, uvec2(0u), uvec2(1u, 0u), false, uvec2(0u));
+    if (gl_LocalInvocationID.x == 0u) weld[WELD_RANKED] = end_.x;
+}
+
+// Split weld rank pass 3, a workgroup per block: each item's rank. Keys: every slot's map word (the mesh vertices,
+// then the rank of its (owner, key)), and each owner's first id and end (its first and last records) in its
+// WeldedEdge or WeldedPatch, for ctess_weld_split_counts. Triangles: each triangle's exclusive rank among the kept
+// ones, with WELD_INTERIOR on a dropped one.
+void ctess_weld_rank_write() {
+    uint lane = gl_LocalInvocationID.x, items = weld_rank_items(), mode = weld[WELD_RANK_MODE];
+    uint blocks = (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK, base_id = params[PARAM_MESH_VERTEX_COUNT];
+    for (uint b = gl_WorkGroupID.x; b < blocks; b += gl_NumWorkGroups.x) {
+        uint before = weld[weld_block(b) + 1u];
+        for (uint c = 0u; c < WELD_RANK_BLOCK; c += EMIT_GROUP) {
+            uint i = b * WELD_RANK_BLOCK + c + lane;
+            bool flag = weld_rank_flag(i, items);
+            uint rank = before + weld_lane_scan(flag) - 1u; // the last flagged item up to i
+            if (i < items && mode != WELD_RANK_KEYS) {
+                weld[weld_record(0u) + i] = flag ? rank : (rank + 1u) | WELD_INTERIOR;
+            } else if (i < items) {
+                uvec4 r = weld_load_record(i);
+                if (r.x != 0xFFFFFFFFu) {
+                    uint id = base_id + rank, edges = weld_edge_count();
+                    weld[weld_map(r.w)] = id | (r.x >= edges ? WELD_INTERIOR : 0u);
+                    uint owner = r.x < edges ? weld_edge(r.x) + WEDGE_FIRST_VERTEX : weld_patch(r.x - edges) + WPATCH_FIRST_VERTEX;
+                    // WEDGE_VERTEX_COUNT and WPATCH_VERTEX_COUNT follow the first-vertex words.
+                    if (i == 0u || weld_load_record(i - 1u).x != r.x) weld[owner] = id;
+                    if (i + 1u == items || weld_load_record(i + 1u).x != r.x) weld[owner + 1u] = id + 1u;
+                }
+            }
+            before += weld_lane[EMIT_GROUP - 1u];
+            barrier();
+        }
+    }
+}
+
+// Split weld pass, a workgroup per leaf: each triangle's kept flag (its welded corners distinct, or
+// keep_degenerate) over the records' area, for the triangles' ranks.
+void ctess_weld_split_keep() {
+    uint leaves = split_leaves(), flags = weld_record(0u);
+    for (uint item = gl_WorkGroupID.x; item < leaves; item += gl_NumWorkGroups.x) {
+        uint leaf = split_leaf(item);
+        uint vfirst = patches[leaf + NODE_FIRST_VERTEX], tfirst = patches[leaf + NODE_FIRST_TRIANGLE];
+        uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        for (uint k = gl_LocalInvocationID.x; k < patches[leaf + NODE_TRIANGLES]; k += gl_WorkGroupSize.x) {
+            uvec3 s = uniform_triangle(words, k) + uvec3(vfirst);
+            uvec3 ids = uvec3(weld[weld_map(s.x)], weld[weld_map(s.y)], weld[weld_map(s.z)]) & uvec3(~WELD_INTERIOR);
+            weld[flags + tfirst + k] = weld_kept(ids) ? 1u : 0u;
+        }
+    }
+}
+
+// Split weld pass, grid-stride over the edges and patches: each one's counts from the ranks. An owner's
+// vertex_count word holds its end id when it has points (ctess_weld_rank_write), else 0; a patch's kept
+// triangles are the ranks at its first unwelded triangle and after its last.
+void ctess_weld_split_counts() {
+    uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x, edges = weld_edge_count(), flags = weld_record(0u);
+    uint triangles = patches[patch_count() * PATCH_WORDS + 1u];
+    for (uint e = gl_GlobalInvocationID.x; e < edges; e += stride) {
+        uint m = weld_edge(e), end_ = weld[m + WEDGE_VERTEX_COUNT];
+        weld[m + WEDGE_VERTEX_COUNT] = end_ == 0u ? 0u : end_ - weld[m + WEDGE_FIRST_VERTEX];
+    }
+    for (uint t = gl_GlobalInvocationID.x; t < patch_count(); t += stride) {
+        uint m = weld_patch(t), end_ = weld[m + WPATCH_VERTEX_COUNT];
+        weld[m + WPATCH_VERTEX_COUNT] = end_ == 0u ? 0u : end_ - weld[m + WPATCH_FIRST_VERTEX];
+        uint rec = t * PATCH_WORDS, first = patches[rec + REC_FIRST_TRIANGLE], count = patches[rec + REC_TRIANGLE_COUNT];
+        uint at = first < triangles ? weld[flags + first] & ~WELD_INTERIOR : weld[WELD_RANKED];
+        uint after = first + count < triangles ? weld[flags + first + count] & ~WELD_INTERIOR : weld[WELD_RANKED];
+        weld[m + WPATCH_TRIANGLE_COUNT] = count == 0u ? 0u : after - at;
+    }
+}
+
+// Split weld emit, a workgroup per leaf of the emit range: its kept triangles at their ranks.
+void ctess_weld_split_triangles() {
+    uint flags = weld_record(0u), end = min(params[PARAM_END_PATCH], patch_count());
+    uvec2 items = emit_items(true, params[PARAM_FIRST_PATCH], end);
+    for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
+        uint leaf = split_leaf(item), t = patches[leaf + NODE_PATCH];
+        if (t < params[PARAM_FIRST_PATCH] || t >= end) continue;
+        uint vfirst = patches[leaf + NODE_FIRST_VERTEX], tfirst = patches[leaf + NODE_FIRST_TRIANGLE];
+        uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        for (uint k = gl_LocalInvocationID.x; k < patches[leaf + NODE_TRIANGLES]; k += gl_WorkGroupSize.x) {
+            uint rank = weld[flags + tfirst + k];
+            if ((rank & WELD_INTERIOR) != 0u) continue;
+            uvec3 s = uniform_triangle(words, k) + uvec3(vfirst);
+            uint o = 3u * rank;
+            out_indices[o] = weld[weld_map(s.x)] & ~WELD_INTERIOR;
+            out_indices[o + 1u] = weld[weld_map(s.y)] & ~WELD_INTERIOR;
+            out_indices[o + 2u] = weld[weld_map(s.z)] & ~WELD_INTERIOR;
+        }
+    }
+}
+
 // Passes 3 and 4 (vertices), a workgroup per patch (looping when there are more patches than workgroups): every
 // output vertex of the emit range's triangles (quad_pass false: ctess_emit_vertices) or quads (true:
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
@@ -2409,7 +2650,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     bool split_ = split_pattern();
     // Welded (docs/shaders.md, "Welded output"): each slot writes its weld id's vertex when it is the id's writer
     // (the first slot of an interior point, the writer word's slot of a shared one), with u = v = 0 for shared ids.
-    bool weld_ = weld_on() && !split_;
+    bool weld_ = weld_on();
     uvec2 items = emit_items(split_, first_patch, end);
     for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
         uint leaf;
@@ -2480,17 +2721,25 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
             uint side = i < vertices_a ? 0u : 1u;
             uint local = side == 0u ? i : i - vertices_a;
-            // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass).
             uint o = (first + i) * VERTEX_WORDS;
             bool shared_id = false;
             if (weld_) {
                 uint m = weld[weld_map(first + i)];
                 shared_id = (m & WELD_INTERIOR) == 0u;
-                if (shared_id ? weld[weld_writer(m)] != first + i + 1u : (m & WELD_REPRESENTATIVE) == 0u) continue;
-                o = weld_output_id(m, first_interior) * VERTEX_WORDS;
+                if (split_) {
+                    // The split pattern's map words are ids (ctess_weld_split_keys), each written by its writer.
+                    if (weld[weld_writer(m & ~WELD_INTERIOR)] != first + i + 1u) continue;
+                    o = (m & ~WELD_INTERIOR) * VERTEX_WORDS;
+                } else {
+                    if (shared_id ? weld[weld_writer(m)] != first + i + 1u : (m & WELD_REPRESENTATIVE) == 0u) continue;
+                    o = weld_output_id(m, first_interior) * VERTEX_WORDS;
+                }
             }
-            uvec2 d = split_ ? uvec2(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V])
-                      : uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local);
+            // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass),
+            // welded ctess_weld_split_keys' in binding 7.
+            uint sw = weld_ && split_ ? weld_weights(first + i) : 0u;
+            uvec2 d = !split_ ? (uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local))
+                      : weld_ ? uvec2(weld[sw], weld[sw + 1u]) : uvec2(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V]);
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
             // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
             // q_k+2) with weights (1 - r, r, 0), the operations the neighbour across the edge runs (quad_vertex on

@@ -1246,12 +1246,40 @@ TEST_CASE("GPU welded output: PN-AEN on the split-normal icosphere (uv seams and
 }
 #endif
 
-TEST_CASE("Vulkan host: the split pattern is not welded on the GPU, an error, not output", "[vulkan]") {
+// The split pattern's weld, by one sort over the mesh (docs/shaders.md, "Welded output", "The split pattern"):
+// splits of depth 0 to 3 with quads, a closed mixed torus (closed and 2-manifold by index), awkward faces with
+// kept degenerate triangles, and PN-AEN across uv seams and hard edges.
+TEST_CASE("GPU welded output: the split pattern, depths 0 to 3, quads, a closed torus, awkward faces") {
+    Scene sweep = factor_sweep_grid(300, 4, rt::Surface::pn_triangles, 2);
+    sweep.options.pattern = rt::Pattern::uniform_split;
+    check_welded(64, sweep, "weld_split_sweep");
+    check_welded(64, split_strip(rt::Surface::flat), "weld_split_strip", RunLimits{7});
+    Scene torus = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed),
+                              rt::Surface::phong);
+    torus.options.pattern = rt::Pattern::uniform_split;
+    const PipelineOutput cpu = run_cpu_welded(tables_for(64), torus);
+    CHECK(split_depths(torus, run_cpu(tables_for(64), torus))[1] > 0); // some patches split
+    const PipelineOutput gpu = run_gpu_welded(64, torus, "weld_split_torus");
+    const Comparison c = compare(cpu, gpu);
+    INFO(c.first_difference);
+    CHECK(c.equal());
+    const std::array<std::size_t, 3> uses = edge_uses(gpu);
+    CHECK(uses[0] == 0);
+    CHECK(uses[2] == 0);
+    for (const bool keep : {false, true}) {
+        Scene s = factor_sweep_grid(200, 6, keep ? rt::Surface::pn_triangles : rt::Surface::flat, 3);
+        s.options.pattern = rt::Pattern::uniform_split;
+        s.options.weld.keep_degenerate = keep;
+        add_awkward_faces(s);
+        check_welded(64, s, keep ? "weld_split_awkward_keep" : "weld_split_awkward", RunLimits{5});
+    }
+#if defined(CTESS_GPU_HAVE_MODELS)
+    check_welded(64, aen_scene(64, rt::Surface::pn_aen, rt::Pattern::uniform_split), "weld_aen_split");
+#endif
+}
+
+TEST_CASE("Vulkan host: the unwelded entry point refuses welded params, an error, not output", "[vulkan]") {
     Scene s = factor_sweep_grid(64, 4, rt::Surface::flat);
-    s.options.pattern = rt::Pattern::uniform_split;
-    CHECK_THROWS_WITH(runner(64).tessellate_welded(s.view(), s.options),
-                      Catch::Contains("not uniform_split"));
-    // The unwelded entry point refuses welded params.
     CHECK_THROWS_WITH(runner(64).tessellate(s.view(), rt::gpu::weld_params(s.view(), s.options)),
                       Catch::Contains("tessellate_welded"));
 }

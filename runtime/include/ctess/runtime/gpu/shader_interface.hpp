@@ -182,8 +182,21 @@ inline constexpr std::uint32_t status = 5;    // weld_status bits; 0 when the pa
 // The first patch of a batch of the count and triangle passes (one patch per workgroup; the host writes it
 // before each dispatch).
 inline constexpr std::uint32_t first_patch = 6;
-inline constexpr std::uint32_t header_words = 8;
+// Pattern::uniform_split (the weld by one sort, docs/shaders.md "Welded output"): the sort's records, a power
+// of two (host: weld_sort_records), the bitonic stage and step of ctess_weld_sort_step, and which list the rank
+// passes scan (weld_rank_mode; the host writes these three before each dispatch), and the rank scan's total.
+inline constexpr std::uint32_t sort_records = 7;
+inline constexpr std::uint32_t sort_stage = 8;
+inline constexpr std::uint32_t sort_step = 9;
+inline constexpr std::uint32_t rank_mode = 10;
+inline constexpr std::uint32_t ranked = 11;
+inline constexpr std::uint32_t header_words = 12;
 } // namespace weld_word
+// What the rank passes scan: the sorted records' distinct keys (weld ids), or the kept triangles.
+namespace weld_rank_mode {
+inline constexpr std::uint32_t keys = 0;
+inline constexpr std::uint32_t triangles = 1;
+} // namespace weld_rank_mode
 namespace weld_status {
 inline constexpr std::uint32_t overflow = 1;     // a total past 2^31 (ids) or 2^32
 inline constexpr std::uint32_t missing_edge = 2; // a patch edge not in the host's list
@@ -212,6 +225,40 @@ constexpr std::uint64_t weld_buffer_words(std::uint64_t edges, std::uint64_t pat
                                           std::uint64_t mesh_vertices, std::uint64_t slots) {
     return weld_word::header_words + edges * weld_edge_words + patch_count * weld_patch_words +
            mesh_vertices + slots * (2 + weld_sort_words);
+}
+
+// Pattern::uniform_split is welded by one sort over the whole mesh (a split patch can have millions of slots):
+// every slot's record (owner, key, slot; weld_record_words) sorted by a bitonic network of global steps, the
+// distinct keys ranked by a scan in blocks of weld_rank_block items, and the kept triangles ranked the same way.
+inline constexpr std::uint32_t weld_record_words = 4;
+inline constexpr std::uint32_t weld_rank_block = 4096; // items per workgroup of the rank passes (64 x 64)
+// The sort's records: a power of two, at least the slots, and enough words (weld_record_words each) for one
+// flag per unwelded triangle afterwards.
+constexpr std::uint64_t weld_sort_records(std::uint64_t slots, std::uint64_t triangles) {
+    std::uint64_t need = slots > (triangles + 3) / 4 ? slots : (triangles + 3) / 4, n = 2;
+    while (n < need) n *= 2;
+    return n;
+}
+constexpr std::uint64_t weld_rank_blocks(std::uint64_t slots, std::uint64_t triangles) {
+    const std::uint64_t records = weld_sort_records(slots, triangles);
+    return ((records > triangles ? records : triangles) + weld_rank_block - 1) / weld_rank_block;
+}
+// Words of binding 7 for the split pattern's weld: the header, edges and patches as weld_buffer_words, a writer
+// word per id, a map word and two words of base weights per slot, the sort's records and two words per rank
+// block.
+constexpr std::uint64_t weld_split_buffer_words(std::uint64_t edges, std::uint64_t patch_count,
+                                                std::uint64_t mesh_vertices, std::uint64_t slots,
+                                                std::uint64_t triangles) {
+    return weld_word::header_words + edges * weld_edge_words + patch_count * weld_patch_words +
+           mesh_vertices + slots * 4 + weld_record_words * weld_sort_records(slots, triangles) +
+           2 * weld_rank_blocks(slots, triangles);
+}
+// The compare-exchange steps of the bitonic sort of n records (n a power of two): (stage, step) for stage
+// 2, 4, ..., n and step stage / 2, ..., 1.
+constexpr std::uint32_t weld_sort_steps(std::uint64_t n) {
+    std::uint32_t log = 0;
+    while ((std::uint64_t{1} << log) < n) ++log;
+    return log * (log + 1) / 2;
 }
 
 // Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride
@@ -303,10 +350,8 @@ inline PipelineStatus gpu_options_status(const MeshView& mesh, const PipelineOpt
 }
 
 // Whether the shaders weld mesh with options (the welded output, docs/shaders.md "Welded output"): as
-// gpu_options_status, for Pattern::cp and Pattern::uniform (a split patch's leaves are not welded on the GPU:
-// bad_option).
+// gpu_options_status (Pattern::cp, uniform and uniform_split).
 inline PipelineStatus gpu_weld_status(const MeshView& mesh, const PipelineOptions& options) {
-    if (options.pattern == Pattern::uniform_split) return PipelineStatus::bad_option;
     return gpu_options_status(mesh, options);
 }
 

@@ -149,7 +149,28 @@ class MeshPipeline {
                           std::uint32_t max_workgroups = rt::max_dispatch_workgroups, bool displaced = false,
                           bool vector = false) const;
 
-    static constexpr unsigned passes = 23;
+    // The welded output of Pattern::uniform_split (docs/shaders.md, "Welded output", "The split pattern"):
+    // after record_split_counts, the weld by one sort over the mesh's slots: each leaf vertex's record, a
+    // bitonic sort (rt::gpu::weld_sort_steps(records) dispatches, each after the host writes its stage and step
+    // into binding 7's header), the distinct keys ranked, the kept triangles flagged and ranked, each edge's
+    // and patch's counts, the prefix sums and each id's writer. Binding 7 is
+    // rt::gpu::weld_split_buffer_words(edges, patch_count, mesh_vertices, slots, triangles) words (slots and
+    // triangles the unwelded totals), its header's edges, slots and sort_records
+    // (rt::gpu::weld_sort_records(slots, triangles)) words and the edges' lo and hi written by the host.
+    // leaves: the split header's parents after record_split_counts.
+    void record_split_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                                  std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
+                                  std::uint32_t triangles, std::uint32_t leaves, VkBuffer weld,
+                                  VkDeviceSize weld_offset,
+                                  std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+    // The welded vertices and kept triangles of the split pattern's leaves of the params' patch range, and the
+    // mesh vertices no face reaches.
+    void record_split_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t leaves,
+                                bool triangles, bool quads, std::uint32_t mesh_vertices,
+                                std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
+                                bool displaced = false, bool vector = false) const;
+
+    static constexpr unsigned passes = 31;
 
   private:
     void destroy() noexcept;
@@ -164,7 +185,8 @@ class MeshPipeline {
                                                 // displaced vertices of triangles and of quads,
                                                 // vector-displaced vertices of both, then the six split
                                                 // passes (roots, count, scan, expand, records, points),
-                                                // then the seven weld passes
+                                                // then the seven weld passes and the
+                                                // split pattern's eight
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
@@ -226,8 +248,8 @@ class Runner {
                       const std::array<std::uint32_t, rt::gpu::param_word::words>& params,
                       RunOptions run = {}, const rt::Displacement* displacement = nullptr);
 
-    // The welded output of mesh with options (rt::gpu::gpu_weld_status must be ok: Pattern::cp or
-    // Pattern::uniform), bit for bit rt::setup_welded's and rt::emit_welded_mesh's (positions and normals
+    // The welded output of mesh with options (rt::gpu::gpu_weld_status must be ok: Pattern::cp, uniform or
+    // uniform_split), bit for bit rt::setup_welded's and rt::emit_welded_mesh's (positions and normals
     // within the bound of docs/shaders.md where the evaluation is not exact). The edge list is
     // rt::weld_edge_list's, computed here; the welded totals are checked against rt::check_pipeline_size
     // before the outputs are allocated. run.counts_only and the split options do not apply.
