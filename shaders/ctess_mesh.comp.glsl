@@ -1961,6 +1961,9 @@ void ctess_prefix_sum() {
 // edge's first id plus the rank of its parameter from the lower index, an interior point the patch's first id plus
 // the rank of its exact domain point among the patch's distinct interior points.
 bool weld_on() { return (params[PARAM_WELD] & WELD_ON) != 0u; }
+// The weld by one sort over the mesh (ctess_weld_keys and after): the split pattern's, and any other's with a
+// patch past WELD_MAX_PATCH_SLOTS.
+bool weld_sorted() { return split_pattern() || (params[PARAM_WELD] & WELD_SORTED) != 0u; }
 uint weld_edge_count() { return weld[WELD_EDGES]; }
 uint weld_edge(uint e) { return WELD_HEADER_WORDS + e * WELD_EDGE_WORDS; }
 uint weld_patch(uint t) { return weld_edge(weld_edge_count()) + t * WELD_PATCH_WORDS; }
@@ -2134,13 +2137,13 @@ void ctess_weld_edges() {
     uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     uint ids = params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS];
     for (uint id = gl_GlobalInvocationID.x; id < ids; id += stride) weld[weld_writer(id)] = 0u;
-    // The split pattern counts by its sort (ctess_weld_split_counts): its owners' words start at 0.
-    bool split_ = split_pattern();
+    // The weld by one sort counts from the ranks (ctess_weld_owner_counts): its owners' words start at 0.
+    bool sorted_ = weld_sorted();
     for (uint e = gl_GlobalInvocationID.x; e < weld_edge_count(); e += stride) {
         uint m = weld_edge(e);
-        weld[m + WEDGE_VERTEX_COUNT] = split_ ? 0u : line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
+        weld[m + WEDGE_VERTEX_COUNT] = sorted_ ? 0u : line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
     }
-    if (!split_) return;
+    if (!sorted_) return;
     for (uint t = gl_GlobalInvocationID.x; t < patch_count(); t += stride) {
         for (uint k = 0u; k < WELD_PATCH_WORDS; ++k) weld[weld_patch(t) + k] = 0u;
     }
@@ -2336,11 +2339,11 @@ void ctess_weld_count() {
 // patches last to first, and within a patch its last slot). atomicMax: the result does not depend on the order.
 void ctess_weld_writers() {
     uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-    // The split pattern's map words are ids (interior ones marked): every id gets a writer.
-    bool split_ = split_pattern();
+    // The weld by one sort has ids in its map words (interior ones marked): every id gets a writer.
+    bool sorted_ = weld_sorted();
     for (uint s = gl_GlobalInvocationID.x; s < weld[WELD_SLOTS]; s += stride) {
         uint m = weld[weld_map(s)];
-        if (split_) atomicMax(weld[weld_writer(m & ~WELD_INTERIOR)], s + 1u);
+        if (sorted_) atomicMax(weld[weld_writer(m & ~WELD_INTERIOR)], s + 1u);
         else if ((m & WELD_INTERIOR) == 0u) atomicMax(weld[weld_writer(m)], s + 1u);
     }
 }
@@ -2414,15 +2417,15 @@ void ctess_weld_lone_vertices() {
     }
 }
 
-// ---- the split pattern's weld: one sort over the mesh (docs/shaders.md, "Welded output", "The split pattern") ----
-// A split patch can have millions of slots, past one workgroup's sort, so every slot of the mesh gets a record
-// (owner, key, slot): a mesh edge's points are owned by the edge (owner e) and keyed by their parameter from the
-// lower index, a patch's interior points by the patch (owner edges + t) and their domain point; corners and the
-// padding have owner ~0 and sort last. Sorted, the distinct (owner, key) pairs in order are setup_welded's ids
-// after the mesh vertices: edges in list order, each by rank of its parameter, then the patches' interiors, each
-// by rank of its domain point. Binding 7 after the map words: two words of base weights per slot, the records
-// (WELD_SORT_RECORDS, a power of two) and two words per rank block. A slot's map word is its id, with
-// WELD_INTERIOR on interior points.
+// ---- the weld by one sort over the mesh (docs/shaders.md, "Welded output", "One sort"; WELD_SORTED) ----
+// A split patch can have millions of slots, and any patch past WELD_MAX_PATCH_SLOTS is past one workgroup's sort,
+// so every slot of the mesh gets a record (owner, key, slot): a mesh edge's points are owned by the edge (owner e)
+// and keyed by their parameter from the lower index, a patch's interior points by the patch (owner edges + t) and
+// their domain point; corners and the padding have owner ~0 and sort last. Sorted, the distinct (owner, key) pairs
+// in order are setup_welded's ids after the mesh vertices: edges in list order, each by rank of its parameter,
+// then the patches' interiors, each by rank of its domain point. Binding 7 after the map words: two words of base
+// weights per slot (the split pattern's leaves), the records (WELD_SORT_RECORDS, a power of two) and two words per
+// rank block. A slot's map word is its id, with WELD_INTERIOR on interior points.
 uint weld_weights(uint s) { return weld_map(weld[WELD_SLOTS]) + 2u * s; }
 uint weld_record(uint i) { return weld_weights(weld[WELD_SLOTS]) + WELD_RECORD_WORDS * i; }
 uint weld_block(uint b) { return weld_record(weld[WELD_SORT_RECORDS]) + 2u * b; }
@@ -2451,38 +2454,54 @@ bool weld_corners(uint t, out WeldPatch wp) {
     wp.w = uint[4](w.x, w.y, w.z, 0u);
     return true;
 }
+// Slot s of patch t, at point d of half `side`: its map word (a corner's mesh vertex) or its record.
+void weld_key(WeldPatch wp, uint t, uint side, uvec2 d, uint s) {
+    uvec3 place;
+    uvec2 key;
+    uint kind = weld_place(wp, side, d, place, key);
+    uvec4 r = uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, s);
+    if (kind == 0u) weld[weld_map(s)] = place.x;
+    else if (kind == 1u) r.xyz = uvec3(weld_find_edge(place.x, place.y), place.z, 0u);
+    else r.xyz = uvec3(weld_edge_count() + t, key);
+    weld_store_record(s, r);
+}
+// The sorted weld's work items: the split pattern's leaves, or the patches.
+uint weld_items() { return split_pattern() ? split_leaves() : patch_count(); }
 
-// Split weld pass 1 (after the split passes, instead of ctess_weld_count), a workgroup per leaf: each leaf vertex's
-// base weights, and its map word (a corner's mesh vertex) or its record; the padding records.
-void ctess_weld_split_keys() {
+// Sorted weld pass 1 (after the counts, instead of ctess_weld_count), a workgroup per leaf or patch: each slot's
+// map word (a corner's mesh vertex) or record, a split leaf's base weights; the padding records.
+void ctess_weld_keys() {
     uint slots = weld[WELD_SLOTS], stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     for (uint i = slots + gl_GlobalInvocationID.x; i < weld[WELD_SORT_RECORDS]; i += stride) weld_store_record(i, uvec4(0xFFFFFFFFu));
-    uint leaves = split_leaves();
-    for (uint item = gl_WorkGroupID.x; item < leaves; item += gl_NumWorkGroups.x) {
+    bool split_ = split_pattern();
+    for (uint item = gl_WorkGroupID.x; item < weld_items(); item += gl_NumWorkGroups.x) {
+        WeldPatch wp;
+        if (!split_) {
+            if (!weld_load(item, wp)) continue;
+            for (uint i = gl_LocalInvocationID.x; i < wp.vertices; i += gl_WorkGroupSize.x) {
+                uint side = i < wp.counts_a.x ? 0u : 1u, local = side == 0u ? i : i - wp.counts_a.x;
+                uvec2 d = uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+                weld_key(wp, item, side, d, wp.first + i);
+            }
+            continue;
+        }
         uint leaf = split_leaf(item), t = patches[leaf + NODE_PATCH];
         uint first = patches[leaf + NODE_FIRST_VERTEX], count = patches[leaf + NODE_VERTICES];
-        WeldPatch wp;
         if (count == 0u || !weld_corners(t, wp)) continue;
         SplitNode s = load_node(leaf);
         uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
         uint side = wp.quad ? (patches[leaf + NODE_INFO] >> NODE_HALF_SHIFT) & 1u : 0u;
         for (uint i = gl_LocalInvocationID.x; i < count; i += gl_WorkGroupSize.x) {
-            uvec2 d = split_vertex(s, words, i), key;
+            uvec2 d = split_vertex(s, words, i);
             uint o = weld_weights(first + i);
             weld[o] = d.x;
             weld[o + 1u] = d.y;
-            uvec3 place;
-            uint kind = weld_place(wp, side, d, place, key);
-            uvec4 r = uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, first + i);
-            if (kind == 0u) weld[weld_map(first + i)] = place.x;
-            else if (kind == 1u) r.xyz = uvec3(weld_find_edge(place.x, place.y), place.z, 0u);
-            else r.xyz = uvec3(weld_edge_count() + t, key);
-            weld_store_record(first + i, r);
+            weld_key(wp, t, side, d, first + i);
         }
     }
 }
 
-// Split weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
+// Sorted weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
 // written by the host before each dispatch), grid-stride over the record pairs: no invocation loops long.
 void ctess_weld_sort_step() {
     uint n = weld[WELD_SORT_RECORDS], stage = weld[WELD_SORT_STAGE], step_ = weld[WELD_SORT_STEP];
@@ -2509,7 +2528,7 @@ bool weld_rank_flag(uint i, uint items) {
     return i == 0u || weld_load_record(i - 1u).xyz != r.xyz;
 }
 
-// Split weld rank pass 1, a workgroup per block of WELD_RANK_BLOCK items: the block's flags counted.
+// Sorted weld rank pass 1, a workgroup per block of WELD_RANK_BLOCK items: the block's flags counted.
 void ctess_weld_rank_blocks() {
     uint lane = gl_LocalInvocationID.x, items = weld_rank_items();
     uint blocks = (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK;
@@ -2530,16 +2549,16 @@ void ctess_weld_rank_blocks() {
     }
 }
 
-// Split weld rank pass 2, one workgroup: the blocks' first ranks; the total in WELD_RANKED.
+// Sorted weld rank pass 2, one workgroup: the blocks' first ranks; the total in WELD_RANKED.
 void ctess_weld_rank_scan() {
     uint items = weld_rank_items();
     uvec2 end_ = weld_prefix(weld_block(0u), 2u, (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK, uvec2(0u), uvec2(1u, 0u), false, uvec2(0u));
     if (gl_LocalInvocationID.x == 0u) weld[WELD_RANKED] = end_.x;
 }
 
-// Split weld rank pass 3, a workgroup per block: each item's rank. Keys: every slot's map word (the mesh vertices,
+// Sorted weld rank pass 3, a workgroup per block: each item's rank. Keys: every slot's map word (the mesh vertices,
 // then the rank of its (owner, key)), and each owner's first id and end (its first and last records) in its
-// WeldedEdge or WeldedPatch, for ctess_weld_split_counts. Triangles: each triangle's exclusive rank among the kept
+// WeldedEdge or WeldedPatch, for ctess_weld_owner_counts. Triangles: each triangle's exclusive rank among the kept
 // ones, with WELD_INTERIOR on a dropped one.
 void ctess_weld_rank_write() {
     uint lane = gl_LocalInvocationID.x, items = weld_rank_items(), mode = weld[WELD_RANK_MODE];
@@ -2569,26 +2588,46 @@ void ctess_weld_rank_write() {
     }
 }
 
-// Split weld pass, a workgroup per leaf: each triangle's kept flag (its welded corners distinct, or
+// Triangle k of a sorted weld's item (a leaf, or a patch wp): its slots and its unwelded index.
+uvec4 weld_item_triangle(bool split_, uint item, WeldPatch wp, uint k) {
+    if (!split_) return uvec4(weld_triangle_slots(wp, k) + uvec3(wp.first), patches[item * PATCH_WORDS + REC_FIRST_TRIANGLE] + k);
+    uint leaf = split_leaf(item);
+    uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+    return uvec4(uniform_triangle(words, k) + uvec3(patches[leaf + NODE_FIRST_VERTEX]), patches[leaf + NODE_FIRST_TRIANGLE] + k);
+}
+// A sorted weld's item's triangles; false for a culled patch.
+bool weld_item_load(bool split_, uint item, out WeldPatch wp, out uint triangles) {
+    triangles = 0u;
+    if (split_) {
+        triangles = patches[split_leaf(item) + NODE_TRIANGLES];
+        return true;
+    }
+    if (!weld_load(item, wp)) return false;
+    triangles = wp.triangles;
+    return true;
+}
+
+// Sorted weld pass, a workgroup per leaf or patch: each triangle's kept flag (its welded corners distinct, or
 // keep_degenerate) over the records' area, for the triangles' ranks.
-void ctess_weld_split_keep() {
-    uint leaves = split_leaves(), flags = weld_record(0u);
-    for (uint item = gl_WorkGroupID.x; item < leaves; item += gl_NumWorkGroups.x) {
-        uint leaf = split_leaf(item);
-        uint vfirst = patches[leaf + NODE_FIRST_VERTEX], tfirst = patches[leaf + NODE_FIRST_TRIANGLE];
-        uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
-        for (uint k = gl_LocalInvocationID.x; k < patches[leaf + NODE_TRIANGLES]; k += gl_WorkGroupSize.x) {
-            uvec3 s = uniform_triangle(words, k) + uvec3(vfirst);
+void ctess_weld_keep() {
+    uint flags = weld_record(0u);
+    bool split_ = split_pattern();
+    for (uint item = gl_WorkGroupID.x; item < weld_items(); item += gl_NumWorkGroups.x) {
+        WeldPatch wp;
+        uint triangles;
+        if (!weld_item_load(split_, item, wp, triangles)) continue;
+        for (uint k = gl_LocalInvocationID.x; k < triangles; k += gl_WorkGroupSize.x) {
+            uvec4 s = weld_item_triangle(split_, item, wp, k);
             uvec3 ids = uvec3(weld[weld_map(s.x)], weld[weld_map(s.y)], weld[weld_map(s.z)]) & uvec3(~WELD_INTERIOR);
-            weld[flags + tfirst + k] = weld_kept(ids) ? 1u : 0u;
+            weld[flags + s.w] = weld_kept(ids) ? 1u : 0u;
         }
     }
 }
 
-// Split weld pass, grid-stride over the edges and patches: each one's counts from the ranks. An owner's
+// Sorted weld pass, grid-stride over the edges and patches: each one's counts from the ranks. An owner's
 // vertex_count word holds its end id when it has points (ctess_weld_rank_write), else 0; a patch's kept
 // triangles are the ranks at its first unwelded triangle and after its last.
-void ctess_weld_split_counts() {
+void ctess_weld_owner_counts() {
     uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x, edges = weld_edge_count(), flags = weld_record(0u);
     uint triangles = patches[patch_count() * PATCH_WORDS + 1u];
     for (uint e = gl_GlobalInvocationID.x; e < edges; e += stride) {
@@ -2605,19 +2644,21 @@ void ctess_weld_split_counts() {
     }
 }
 
-// Split weld emit, a workgroup per leaf of the emit range: its kept triangles at their ranks.
-void ctess_weld_split_triangles() {
-    uint flags = weld_record(0u), end = min(params[PARAM_END_PATCH], patch_count());
-    uvec2 items = emit_items(true, params[PARAM_FIRST_PATCH], end);
+// Sorted weld emit, a workgroup per leaf or patch of the emit range: its kept triangles at their ranks.
+void ctess_weld_sorted_triangles() {
+    uint flags = weld_record(0u), first_patch = params[PARAM_FIRST_PATCH], end = min(params[PARAM_END_PATCH], patch_count());
+    bool split_ = split_pattern();
+    uvec2 items = emit_items(split_, first_patch, end);
     for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
-        uint leaf = split_leaf(item), t = patches[leaf + NODE_PATCH];
-        if (t < params[PARAM_FIRST_PATCH] || t >= end) continue;
-        uint vfirst = patches[leaf + NODE_FIRST_VERTEX], tfirst = patches[leaf + NODE_FIRST_TRIANGLE];
-        uvec3 words = uvec3(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
-        for (uint k = gl_LocalInvocationID.x; k < patches[leaf + NODE_TRIANGLES]; k += gl_WorkGroupSize.x) {
-            uint rank = weld[flags + tfirst + k];
+        uint leaf;
+        uint t = item_patch(split_, item, leaf);
+        WeldPatch wp;
+        uint triangles;
+        if (t < first_patch || t >= end || !weld_item_load(split_, item, wp, triangles)) continue;
+        for (uint k = gl_LocalInvocationID.x; k < triangles; k += gl_WorkGroupSize.x) {
+            uvec4 s = weld_item_triangle(split_, item, wp, k);
+            uint rank = weld[flags + s.w];
             if ((rank & WELD_INTERIOR) != 0u) continue;
-            uvec3 s = uniform_triangle(words, k) + uvec3(vfirst);
             uint o = 3u * rank;
             out_indices[o] = weld[weld_map(s.x)] & ~WELD_INTERIOR;
             out_indices[o + 1u] = weld[weld_map(s.y)] & ~WELD_INTERIOR;
@@ -2650,7 +2691,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
     bool split_ = split_pattern();
     // Welded (docs/shaders.md, "Welded output"): each slot writes its weld id's vertex when it is the id's writer
     // (the first slot of an interior point, the writer word's slot of a shared one), with u = v = 0 for shared ids.
-    bool weld_ = weld_on();
+    bool weld_ = weld_on(), sorted_ = weld_ && weld_sorted();
     uvec2 items = emit_items(split_, first_patch, end);
     for (uint item = items.x + gl_WorkGroupID.x; item < items.y; item += gl_NumWorkGroups.x) {
         uint leaf;
@@ -2726,8 +2767,8 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
             if (weld_) {
                 uint m = weld[weld_map(first + i)];
                 shared_id = (m & WELD_INTERIOR) == 0u;
-                if (split_) {
-                    // The split pattern's map words are ids (ctess_weld_split_keys), each written by its writer.
+                if (sorted_) {
+                    // The weld by one sort has ids in its map words (ctess_weld_keys), each written by its writer.
                     if (weld[weld_writer(m & ~WELD_INTERIOR)] != first + i + 1u) continue;
                     o = (m & ~WELD_INTERIOR) * VERTEX_WORDS;
                 } else {
@@ -2736,7 +2777,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
                 }
             }
             // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass),
-            // welded ctess_weld_split_keys' in binding 7.
+            // welded ctess_weld_keys' in binding 7.
             uint sw = weld_ && split_ ? weld_weights(first + i) : 0u;
             uvec2 d = !split_ ? (uniform_ ? uniform_vertex(words[side], local) : patch_vertex(side == 0u ? halves[0] : halves[1], local))
                       : weld_ ? uvec2(weld[sw], weld[sw + 1u]) : uvec2(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V]);

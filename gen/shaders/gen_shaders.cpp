@@ -67,14 +67,14 @@ constexpr Pass passes[] = {
     {"weld_scan", "ctess_weld_scan", ctess::gen::scan_workgroup},
     {"weld_triangles", "ctess_weld_triangles", ctess::gen::emit_workgroup},
     {"weld_lone_vertices", "ctess_weld_lone_vertices", ctess::gen::emit_workgroup},
-    {"weld_split_keys", "ctess_weld_split_keys", ctess::gen::emit_workgroup},
+    {"weld_keys", "ctess_weld_keys", ctess::gen::emit_workgroup},
     {"weld_sort_step", "ctess_weld_sort_step", ctess::gen::emit_workgroup},
     {"weld_rank_blocks", "ctess_weld_rank_blocks", ctess::gen::emit_workgroup},
     {"weld_rank_scan", "ctess_weld_rank_scan", ctess::gen::scan_workgroup},
     {"weld_rank_write", "ctess_weld_rank_write", ctess::gen::emit_workgroup},
-    {"weld_split_keep", "ctess_weld_split_keep", ctess::gen::emit_workgroup},
-    {"weld_split_counts", "ctess_weld_split_counts", ctess::gen::emit_workgroup},
-    {"weld_split_triangles", "ctess_weld_split_triangles", ctess::gen::emit_workgroup}};
+    {"weld_keep", "ctess_weld_keep", ctess::gen::emit_workgroup},
+    {"weld_owner_counts", "ctess_weld_owner_counts", ctess::gen::emit_workgroup},
+    {"weld_sorted_triangles", "ctess_weld_sorted_triangles", ctess::gen::emit_workgroup}};
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

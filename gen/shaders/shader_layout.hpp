@@ -238,6 +238,7 @@ inline constexpr std::array shader_constants = {
                    "uniform::interior_limit_squared(N, rt::uniform_split_interior_tolerance), high word"},
     // the welded output (rt::gpu::weld_word, rt::WeldedEdge, rt::WeldedPatch)
     ShaderConstant{"WELD_ON", rt::gpu::weld_flag::on, "rt::gpu::weld_flag::on"},
+    ShaderConstant{"WELD_SORTED", rt::gpu::weld_flag::sorted, "rt::gpu::weld_flag::sorted"},
     ShaderConstant{"WELD_KEEP_DEGENERATE", rt::gpu::weld_flag::keep_degenerate,
                    "rt::gpu::weld_flag::keep_degenerate"},
     ShaderConstant{"WELD_EDGES", rt::gpu::weld_word::edges, "rt::gpu::weld_word::edges"},

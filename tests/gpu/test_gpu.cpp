@@ -1246,16 +1246,16 @@ TEST_CASE("GPU welded output: PN-AEN on the split-normal icosphere (uv seams and
 }
 #endif
 
-// The split pattern's weld, by one sort over the mesh (docs/shaders.md, "Welded output", "The split pattern"):
-// splits of depth 0 to 3 with quads, a closed mixed torus (closed and 2-manifold by index), awkward faces with
-// kept degenerate triangles, and PN-AEN across uv seams and hard edges.
+// The split pattern's weld, by one sort over the mesh (docs/shaders.md, "Welded output", "The split
+// pattern"): splits of depth 0 to 3 with quads, a closed mixed torus (closed and 2-manifold by index),
+// awkward faces with kept degenerate triangles, and PN-AEN across uv seams and hard edges.
 TEST_CASE("GPU welded output: the split pattern, depths 0 to 3, quads, a closed torus, awkward faces") {
     Scene sweep = factor_sweep_grid(300, 4, rt::Surface::pn_triangles, 2);
     sweep.options.pattern = rt::Pattern::uniform_split;
     check_welded(64, sweep, "weld_split_sweep");
     check_welded(64, split_strip(rt::Surface::flat), "weld_split_strip", RunLimits{7});
-    Scene torus = torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed),
-                              rt::Surface::phong);
+    Scene torus =
+        torus_scene(pipeline_fixtures::torus(24, 10, pipeline_fixtures::Faces::mixed), rt::Surface::phong);
     torus.options.pattern = rt::Pattern::uniform_split;
     const PipelineOutput cpu = run_cpu_welded(tables_for(64), torus);
     CHECK(split_depths(torus, run_cpu(tables_for(64), torus))[1] > 0); // some patches split
@@ -1294,17 +1294,33 @@ TEST_CASE("GPU second implementation: the welded output against the CPU's", "[se
 
 // Software drivers end an invocation's loops after 65,535 iterations in all (llvmpipe, silently): the count
 // and triangle passes run a patch per workgroup in batches, so 16 patches of 2,145 slots through one
-// workgroup a dispatch weld as the CPU does; a patch past rt::gpu::weld_max_patch_slots (its sort in one
-// workgroup) is refused.
-TEST_CASE(
-    "GPU welded output: one workgroup a dispatch for 16 large patches; a patch past the slot limit is an "
-    "error") {
+// workgroup a dispatch weld as the CPU does; a mesh with a patch past rt::gpu::weld_max_patch_slots (past one
+// workgroup's sort) is welded by one sort over the mesh, as the split pattern is.
+TEST_CASE("GPU welded output: one workgroup a dispatch for 16 large patches; a patch past the slot limit "
+          "welded by the sort over the mesh") {
     Scene big = repeated_big_triangle(16);
     check_welded(64, big, "weld_batches", RunLimits{1});
     // Max 256: the (256, 256, 256) pattern has more slots than the weld takes in one workgroup.
-    Scene one = repeated_big_triangle(1);
-    REQUIRE(run_cpu(rt::cp_tables_256, one).total_vertices() > rt::gpu::weld_max_patch_slots);
-    CHECK_THROWS_WITH(run_gpu_welded(256, one, "weld_too_large"), Catch::Contains("past the 16384"));
+    Scene one = repeated_big_triangle(2);
+    REQUIRE(run_cpu(rt::cp_tables_256, one).total_vertices() > 2 * rt::gpu::weld_max_patch_slots);
+    check_welded(256, one, "weld_sorted_cp", RunLimits{3});
+    // With a quad, a triangle and a quad with repeated corners, a culled triangle and a vertex no face
+    // reaches; PN (positions from the last patch that reaches a point).
+    Scene mixed = repeated_big_triangle(2);
+    mixed.options.surface = {rt::Surface::pn_triangles, 0.0f};
+    detail::push_vertex(mixed, {100.0f, 100.0f, 1.5f}, {0.0f, 0.6f, 0.8f}, 1.0f, 1.0f);
+    detail::push_vertex(mixed, {0.0f, -50.0f, 1.0f}, {0, 0, 1}, 0.5f, 0.5f); // reached by no face
+    mixed.indices.insert(mixed.indices.end(), {0, 0, 1, 1, 2, 99, 2, 1, 3});
+    mixed.quads = {0, 1, 3, 2, 1, 1, 3, 2};
+    const PipelineOutput unwelded = run_cpu(rt::cp_tables_256, mixed);
+    std::uint32_t largest = 0;
+    for (std::size_t p = 0; p < mixed.patch_count(); ++p) {
+        rt::PatchRecord r;
+        std::memcpy(static_cast<void*>(&r), &unwelded.patches[p * (sizeof r / 4)], sizeof r);
+        largest = std::max(largest, r.vertex_count);
+    }
+    REQUIRE(largest > rt::gpu::weld_max_patch_slots);
+    check_welded(256, mixed, "weld_sorted_mixed");
     // Just under the limit at max 256: the eye moved away until the patch has at most 16,384 slots.
     Scene under = repeated_big_triangle(1);
     for (float z = 1.0f;; z *= 1.25f) {

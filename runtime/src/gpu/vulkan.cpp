@@ -64,14 +64,14 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
                                                            "_weld_scan.spv",
                                                            "_weld_triangles.spv",
                                                            "_weld_lone_vertices.spv",
-                                                           "_weld_split_keys.spv",
+                                                           "_weld_keys.spv",
                                                            "_weld_sort_step.spv",
                                                            "_weld_rank_blocks.spv",
                                                            "_weld_rank_scan.spv",
                                                            "_weld_rank_write.spv",
-                                                           "_weld_split_keep.spv",
-                                                           "_weld_split_counts.spv",
-                                                           "_weld_split_triangles.spv"};
+                                                           "_weld_keep.spv",
+                                                           "_weld_owner_counts.spv",
+                                                           "_weld_sorted_triangles.spv"};
 // The split passes' indices in pass_suffix.
 constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass = 12, split_expand_pass = 13,
                    split_records_pass = 14, split_points_pass = 15;
@@ -80,9 +80,9 @@ constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pa
                    weld_writers_pass = 19, weld_scan_pass = 20, weld_triangles_pass = 21,
                    weld_lone_vertices_pass = 22;
 // The split pattern's weld passes.
-constexpr unsigned weld_split_keys_pass = 23, weld_sort_step_pass = 24, weld_rank_blocks_pass = 25,
-                   weld_rank_scan_pass = 26, weld_rank_write_pass = 27, weld_split_keep_pass = 28,
-                   weld_split_counts_pass = 29, weld_split_triangles_pass = 30;
+constexpr unsigned weld_keys_pass = 23, weld_sort_step_pass = 24, weld_rank_blocks_pass = 25,
+                   weld_rank_scan_pass = 26, weld_rank_write_pass = 27, weld_keep_pass = 28,
+                   weld_owner_counts_pass = 29, weld_sorted_triangles_pass = 30;
 
 // Writes one u32 of buffer between compute passes (vkCmdFillBuffer), ordered after the passes before it and
 // before the ones after it.
@@ -414,13 +414,14 @@ void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, st
     vkCmdDispatch(cmd, grid_workgroups(mesh_vertices, rt::gpu::emit_workgroup, max_workgroups), 1, 1);
 }
 
-void MeshPipeline::record_split_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
-                                            std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
-                                            std::uint32_t triangles, std::uint32_t leaves, VkBuffer weld,
-                                            VkDeviceSize weld_offset, std::uint32_t max_workgroups) const {
+void MeshPipeline::record_sorted_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set,
+                                             std::uint32_t patch_count, std::uint32_t edges,
+                                             std::uint32_t mesh_vertices, std::uint32_t slots,
+                                             std::uint32_t triangles, std::uint32_t items, VkBuffer weld,
+                                             VkDeviceSize weld_offset, std::uint32_t max_workgroups) const {
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
-    compute_barrier(cmd); // after record_split_counts
+    compute_barrier(cmd); // after record_counts or record_split_counts
     const std::uint32_t group = rt::gpu::emit_workgroup;
     const auto dispatch = [&](unsigned pass, std::uint32_t workgroups) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(pass));
@@ -430,50 +431,51 @@ void MeshPipeline::record_split_weld_counts(VkCommandBuffer cmd, VkDescriptorSet
     const auto word = [&](std::uint32_t w, std::uint32_t value) {
         fill_word(cmd, weld, weld_offset + 4 * VkDeviceSize{w}, value);
     };
-    dispatch(weld_edges_pass,
-             grid_workgroups(std::max<std::uint64_t>({edges, patch_count, std::uint64_t{mesh_vertices} + slots}),
-                             group, max_workgroups));
+    dispatch(weld_edges_pass, grid_workgroups(std::max<std::uint64_t>(
+                                                  {edges, patch_count, std::uint64_t{mesh_vertices} + slots}),
+                                              group, max_workgroups));
     const std::uint64_t records = rt::gpu::weld_sort_records(slots, triangles);
-    dispatch(weld_split_keys_pass, std::max(std::min(leaves, max_workgroups),
-                                            grid_workgroups(records - slots, group, max_workgroups)));
+    dispatch(weld_keys_pass, std::max(std::min(items, max_workgroups),
+                                      grid_workgroups(records - slots, group, max_workgroups)));
     for (std::uint64_t stage = 2; stage <= records; stage *= 2)
         for (std::uint64_t step = stage / 2; step >= 1; step /= 2) {
             word(rt::gpu::weld_word::sort_stage, static_cast<std::uint32_t>(stage));
             word(rt::gpu::weld_word::sort_step, static_cast<std::uint32_t>(step));
             dispatch(weld_sort_step_pass, grid_workgroups(records / 2, group, max_workgroups));
         }
-    const auto rank = [&](std::uint32_t mode, std::uint64_t items) {
+    const auto rank = [&](std::uint32_t mode, std::uint64_t ranked) {
         word(rt::gpu::weld_word::rank_mode, mode);
-        const std::uint32_t blocks = grid_workgroups(items, rt::gpu::weld_rank_block, max_workgroups);
+        const std::uint32_t blocks = grid_workgroups(ranked, rt::gpu::weld_rank_block, max_workgroups);
         dispatch(weld_rank_blocks_pass, blocks);
         dispatch(weld_rank_scan_pass, 1);
         dispatch(weld_rank_write_pass, blocks);
     };
     rank(rt::gpu::weld_rank_mode::keys, records);
-    dispatch(weld_split_keep_pass, std::min(leaves, max_workgroups));
+    dispatch(weld_keep_pass, std::min(items, max_workgroups));
     rank(rt::gpu::weld_rank_mode::triangles, triangles);
-    dispatch(weld_split_counts_pass,
+    dispatch(weld_owner_counts_pass,
              grid_workgroups(std::max<std::uint64_t>(edges, patch_count), group, max_workgroups));
     dispatch(weld_edge_scan_pass, 1);
     dispatch(weld_scan_pass, 1);
     dispatch(weld_writers_pass, grid_workgroups(slots, group, max_workgroups));
 }
 
-void MeshPipeline::record_split_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t leaves,
-                                          bool triangles, bool quads, std::uint32_t mesh_vertices,
-                                          std::uint32_t max_workgroups, bool displaced, bool vector) const {
+void MeshPipeline::record_sorted_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set,
+                                           std::uint32_t triangle_items, std::uint32_t quad_items,
+                                           std::uint32_t mesh_vertices, std::uint32_t max_workgroups,
+                                           bool displaced, bool vector) const {
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
-    const std::uint32_t groups = std::max(std::min(leaves, max_workgroups), 1u);
+    const std::uint32_t count[2] = {triangle_items, quad_items};
     for (unsigned kind = 0; kind < 2; ++kind) {
-        if (!(kind == 0 ? triangles : quads)) continue;
+        if (count[kind] == 0) continue;
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
                           pipeline(vertex_pass(kind, displaced, vector)));
-        vkCmdDispatch(cmd, groups, 1, 1);
+        vkCmdDispatch(cmd, std::min(count[kind], max_workgroups), 1, 1);
     }
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_split_triangles_pass));
-    vkCmdDispatch(cmd, groups, 1, 1);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_sorted_triangles_pass));
+    vkCmdDispatch(cmd, std::max(std::min(triangle_items + quad_items, max_workgroups), 1u), 1, 1);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_lone_vertices_pass));
     vkCmdDispatch(cmd, grid_workgroups(mesh_vertices, rt::gpu::emit_workgroup, max_workgroups), 1, 1);
 }
@@ -945,22 +947,20 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
                         quad_patches = end > quad_first ? end - quad_first : 0;
     if (welded != nullptr) {
         // The weld (docs/shaders.md, "Welded output"): binding 7 with the mesh's edge list, then the weld's
-        // counting passes, then the outputs at the welded totals. A patch's sort runs in one workgroup: past
-        // weld_max_patch_slots a software driver's loop limit could cut it short, so such a mesh is refused.
-        for (std::uint32_t p = 0; p < n && !split; ++p)
-            if (out.patches[p].vertex_count > rt::gpu::weld_max_patch_slots)
-                throw Error(
-                    "patch " + std::to_string(p) + " has " + std::to_string(out.patches[p].vertex_count) +
-                    " unwelded vertices, past the " + std::to_string(rt::gpu::weld_max_patch_slots) +
-                    " the GPU weld takes in one workgroup (docs/shaders.md, \"Welded output\"): weld it "
-                    "on the CPU (rt::emit_welded_mesh), or use max factor 64");
+        // counting passes, then the outputs at the welded totals. A patch's weld runs in one workgroup up to
+        // weld_max_patch_slots slots (past it a software driver's loop limit could cut its sort short); the
+        // split pattern, and a mesh with a larger patch, are welded by one sort over the mesh.
+        bool sorted = split;
+        for (std::uint32_t p = 0; p < n && !sorted; ++p)
+            sorted = out.patches[p].vertex_count > rt::gpu::weld_max_patch_slots;
+        if (sorted) static_cast<std::uint32_t*>(b_params.mapped)[pw::weld] |= rt::gpu::weld_flag::sorted;
         std::vector<rt::WeldedEdge> edges(rt::weld_edge_capacity(mesh));
         const std::uint32_t edge_count = rt::weld_edge_list(mesh, edges);
         const std::uint32_t mesh_vertices = params[pw::mesh_vertex_count];
         const std::uint64_t weld_words =
-            split ? rt::gpu::weld_split_buffer_words(edge_count, n, mesh_vertices, out.totals.vertices,
-                                                     out.totals.triangles)
-                  : rt::gpu::weld_buffer_words(edge_count, n, mesh_vertices, out.totals.vertices);
+            sorted ? rt::gpu::weld_sorted_buffer_words(edge_count, n, mesh_vertices, out.totals.vertices,
+                                                       out.totals.triangles)
+                   : rt::gpu::weld_buffer_words(edge_count, n, mesh_vertices, out.totals.vertices);
         if (weld_words * 4 > d.limits.maxStorageBufferRange)
             throw Error("the weld's binding 7 would be " + std::to_string(weld_words * 4) +
                         " bytes, past this device's maxStorageBufferRange (" +
@@ -969,17 +969,17 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         auto* weld = static_cast<std::uint32_t*>(b_weld.mapped);
         weld[rt::gpu::weld_word::edges] = edge_count;
         weld[rt::gpu::weld_word::slots] = out.totals.vertices;
-        weld[rt::gpu::weld_word::sort_records] = static_cast<std::uint32_t>(
-            rt::gpu::weld_sort_records(out.totals.vertices, out.totals.triangles));
+        weld[rt::gpu::weld_word::sort_records] =
+            static_cast<std::uint32_t>(rt::gpu::weld_sort_records(out.totals.vertices, out.totals.triangles));
         if (edge_count != 0)
             std::memcpy(weld + rt::gpu::weld_word::header_words, edges.data(),
                         edge_count * sizeof(rt::WeldedEdge));
         const VkDescriptorSet weld_set = descriptor_set(b_none.buffer, b_none.buffer, b_weld.buffer);
         const double weld_ms = d.submit([&](VkCommandBuffer cmd) {
-            if (split)
-                d.pipeline->record_split_weld_counts(cmd, weld_set, n, edge_count, mesh_vertices,
-                                                     out.totals.vertices, out.totals.triangles, out.split_leaves,
-                                                     b_weld.buffer, 0, run.max_workgroups);
+            if (sorted)
+                d.pipeline->record_sorted_weld_counts(
+                    cmd, weld_set, n, edge_count, mesh_vertices, out.totals.vertices, out.totals.triangles,
+                    split ? out.split_leaves : n, b_weld.buffer, 0, run.max_workgroups);
             else
                 d.pipeline->record_weld_counts(cmd, weld_set, n, edge_count, mesh_vertices,
                                                out.totals.vertices, b_weld.buffer, 0, run.max_workgroups);
@@ -1012,10 +1012,11 @@ Output Runner::run_pipeline(const rt::MeshView& mesh,
         const VkDescriptorSet emit_set =
             descriptor_set(b_vertices.buffer, b_out_indices.buffer, b_weld.buffer);
         const double emit_ms = d.submit([&](VkCommandBuffer cmd) {
-            if (split)
-                d.pipeline->record_split_weld_emit(cmd, emit_set, out.split_leaves, triangle_patches != 0,
-                                                   quad_patches != 0, mesh_vertices, run.max_workgroups,
-                                                   displace, vector);
+            if (sorted)
+                d.pipeline->record_sorted_weld_emit(
+                    cmd, emit_set, split ? (triangle_patches != 0 ? out.split_leaves : 0) : triangle_patches,
+                    split ? (quad_patches != 0 ? out.split_leaves : 0) : quad_patches, mesh_vertices,
+                    run.max_workgroups, displace, vector);
             else
                 d.pipeline->record_weld_emit(cmd, emit_set, first, triangle_patches, quad_patches,
                                              mesh_vertices, b_weld.buffer, 0, run.max_workgroups, displace,

@@ -72,6 +72,10 @@ static_assert(param_word::eye + 3 == param_word::mesh_vertex_count &&
 namespace weld_flag {
 inline constexpr std::uint32_t on = 1;              // the vertex passes write the welded layout (binding 7)
 inline constexpr std::uint32_t keep_degenerate = 2; // WeldOptions::keep_degenerate
+// The weld by one sort over the mesh (weld_rank_mode and the passes after ctess_weld_keys), which
+// Pattern::uniform_split always takes and the other patterns take when a patch has more than
+// weld_max_patch_slots slots; without it, each patch's weld runs in one workgroup.
+inline constexpr std::uint32_t sorted = 4;
 } // namespace weld_flag
 
 // The bits of param_word::displacement_flags.
@@ -182,9 +186,10 @@ inline constexpr std::uint32_t status = 5;    // weld_status bits; 0 when the pa
 // The first patch of a batch of the count and triangle passes (one patch per workgroup; the host writes it
 // before each dispatch).
 inline constexpr std::uint32_t first_patch = 6;
-// Pattern::uniform_split (the weld by one sort, docs/shaders.md "Welded output"): the sort's records, a power
-// of two (host: weld_sort_records), the bitonic stage and step of ctess_weld_sort_step, and which list the rank
-// passes scan (weld_rank_mode; the host writes these three before each dispatch), and the rank scan's total.
+// The weld by one sort (weld_flag::sorted, docs/shaders.md "Welded output"): the sort's records, a power
+// of two (host: weld_sort_records), the bitonic stage and step of ctess_weld_sort_step, and which list the
+// rank passes scan (weld_rank_mode; the host writes these three before each dispatch), and the rank scan's
+// total.
 inline constexpr std::uint32_t sort_records = 7;
 inline constexpr std::uint32_t sort_stage = 8;
 inline constexpr std::uint32_t sort_step = 9;
@@ -214,9 +219,10 @@ inline constexpr std::uint32_t weld_sort_words = 3; // a slot's domain point (u,
 // Patches of at most this many slots rank their interior points by counting (O(n) per slot, two barriers)
 // instead of the bitonic sort (a barrier per stage); both give the same ranks.
 inline constexpr std::uint32_t weld_counted_ranks = 128;
-// The most slots (unwelded vertices) a patch may have to be welded on the GPU: its sort runs in one
-// workgroup, and past this an invocation's loops could pass llvmpipe's 65,535 iterations (hosts refuse such a
-// mesh). Max 64 never reaches it (4,290 at most); at max 256 the largest patches do.
+// The most slots (unwelded vertices) a patch may have for the weld of each patch in one workgroup: its sort
+// runs in one workgroup, and past this an invocation's loops could pass llvmpipe's 65,535 iterations, so a
+// mesh with a larger patch is welded by one sort over the mesh (weld_flag::sorted). Max 64 never reaches it
+// (4,290 at most); at max 256 the largest patches do.
 inline constexpr std::uint32_t weld_max_patch_slots = 16384;
 
 // Words of binding 7 for a weld of edges edges, patch_count patches, mesh_vertices mesh vertices and slots
@@ -227,9 +233,10 @@ constexpr std::uint64_t weld_buffer_words(std::uint64_t edges, std::uint64_t pat
            mesh_vertices + slots * (2 + weld_sort_words);
 }
 
-// Pattern::uniform_split is welded by one sort over the whole mesh (a split patch can have millions of slots):
+// The weld by one sort over the whole mesh (weld_flag::sorted; a split patch can have millions of slots):
 // every slot's record (owner, key, slot; weld_record_words) sorted by a bitonic network of global steps, the
-// distinct keys ranked by a scan in blocks of weld_rank_block items, and the kept triangles ranked the same way.
+// distinct keys ranked by a scan in blocks of weld_rank_block items, and the kept triangles ranked the same
+// way.
 inline constexpr std::uint32_t weld_record_words = 4;
 inline constexpr std::uint32_t weld_rank_block = 4096; // items per workgroup of the rank passes (64 x 64)
 // The sort's records: a power of two, at least the slots, and enough words (weld_record_words each) for one
@@ -243,12 +250,12 @@ constexpr std::uint64_t weld_rank_blocks(std::uint64_t slots, std::uint64_t tria
     const std::uint64_t records = weld_sort_records(slots, triangles);
     return ((records > triangles ? records : triangles) + weld_rank_block - 1) / weld_rank_block;
 }
-// Words of binding 7 for the split pattern's weld: the header, edges and patches as weld_buffer_words, a writer
+// Words of binding 7 for the weld by one sort: the header, edges and patches as weld_buffer_words, a writer
 // word per id, a map word and two words of base weights per slot, the sort's records and two words per rank
 // block.
-constexpr std::uint64_t weld_split_buffer_words(std::uint64_t edges, std::uint64_t patch_count,
-                                                std::uint64_t mesh_vertices, std::uint64_t slots,
-                                                std::uint64_t triangles) {
+constexpr std::uint64_t weld_sorted_buffer_words(std::uint64_t edges, std::uint64_t patch_count,
+                                                 std::uint64_t mesh_vertices, std::uint64_t slots,
+                                                 std::uint64_t triangles) {
     return weld_word::header_words + edges * weld_edge_words + patch_count * weld_patch_words +
            mesh_vertices + slots * 4 + weld_record_words * weld_sort_records(slots, triangles) +
            2 * weld_rank_blocks(slots, triangles);

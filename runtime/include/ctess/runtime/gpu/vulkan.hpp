@@ -134,7 +134,7 @@ class MeshPipeline {
     // The count pass runs a patch per workgroup, in batches of max_workgroups whose first patch it writes
     // into binding 7's header between dispatches (vkCmdFillBuffer): binding 7 is weld at weld_offset, created
     // with VK_BUFFER_USAGE_TRANSFER_DST_BIT. Every patch must have at most rt::gpu::weld_max_patch_slots
-    // unwelded vertices (a host refuses others).
+    // unwelded vertices (record_sorted_weld_counts welds the others).
     void record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
                             std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
                             VkBuffer weld, VkDeviceSize weld_offset,
@@ -149,26 +149,29 @@ class MeshPipeline {
                           std::uint32_t max_workgroups = rt::max_dispatch_workgroups, bool displaced = false,
                           bool vector = false) const;
 
-    // The welded output of Pattern::uniform_split (docs/shaders.md, "Welded output", "The split pattern"):
-    // after record_split_counts, the weld by one sort over the mesh's slots: each leaf vertex's record, a
-    // bitonic sort (rt::gpu::weld_sort_steps(records) dispatches, each after the host writes its stage and step
-    // into binding 7's header), the distinct keys ranked, the kept triangles flagged and ranked, each edge's
-    // and patch's counts, the prefix sums and each id's writer. Binding 7 is
-    // rt::gpu::weld_split_buffer_words(edges, patch_count, mesh_vertices, slots, triangles) words (slots and
-    // triangles the unwelded totals), its header's edges, slots and sort_records
-    // (rt::gpu::weld_sort_records(slots, triangles)) words and the edges' lo and hi written by the host.
-    // leaves: the split header's parents after record_split_counts.
-    void record_split_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
-                                  std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
-                                  std::uint32_t triangles, std::uint32_t leaves, VkBuffer weld,
-                                  VkDeviceSize weld_offset,
-                                  std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
-    // The welded vertices and kept triangles of the split pattern's leaves of the params' patch range, and the
-    // mesh vertices no face reaches.
-    void record_split_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t leaves,
-                                bool triangles, bool quads, std::uint32_t mesh_vertices,
-                                std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
-                                bool displaced = false, bool vector = false) const;
+    // The weld by one sort over the mesh (rt::gpu::weld_flag::sorted in the params; docs/shaders.md, "Welded
+    // output", "One sort"), which Pattern::uniform_split always takes and the other patterns when a patch has
+    // more than rt::gpu::weld_max_patch_slots slots: after record_counts (record_split_counts), each slot's
+    // record, a bitonic sort (rt::gpu::weld_sort_steps(records) dispatches, each after the host writes its
+    // stage and step into binding 7's header), the distinct keys ranked, the kept triangles flagged and
+    // ranked, each edge's and patch's counts, the prefix sums and each id's writer; binding 7 then holds what
+    // record_weld_counts leaves there. Binding 7 is rt::gpu::weld_sorted_buffer_words(edges, patch_count,
+    // mesh_vertices, slots, triangles) words (slots and triangles the unwelded totals), with the header's
+    // edges, slots and sort_records (rt::gpu::weld_sort_records(slots, triangles)) words and the edges' lo
+    // and hi written by the host. items: the split header's parents (the leaves) for the split pattern, else
+    // patch_count.
+    void record_sorted_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t patch_count,
+                                   std::uint32_t edges, std::uint32_t mesh_vertices, std::uint32_t slots,
+                                   std::uint32_t triangles, std::uint32_t items, VkBuffer weld,
+                                   VkDeviceSize weld_offset,
+                                   std::uint32_t max_workgroups = rt::max_dispatch_workgroups) const;
+    // The welded vertices and kept triangles of the params' patch range after record_sorted_weld_counts, and
+    // the mesh vertices no face reaches. triangle_items and quad_items: the range's base triangles and quads,
+    // or for the split pattern the leaves (0 where the range has no patch of that kind).
+    void record_sorted_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t triangle_items,
+                                 std::uint32_t quad_items, std::uint32_t mesh_vertices,
+                                 std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
+                                 bool displaced = false, bool vector = false) const;
 
     static constexpr unsigned passes = 31;
 
@@ -186,7 +189,7 @@ class MeshPipeline {
                                                 // vector-displaced vertices of both, then the six split
                                                 // passes (roots, count, scan, expand, records, points),
                                                 // then the seven weld passes and the
-                                                // split pattern's eight
+                                                // eight of the weld by one sort
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
