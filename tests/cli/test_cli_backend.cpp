@@ -189,6 +189,27 @@ TEST_CASE("ctess mesh --backend vulkan (welded): the CPU's welded faces exactly,
     }
 }
 
+// Uniform density split above N (--pattern uniform) welded by the shaders' sort over the mesh: box.obj's
+// quads, flat, as binary glTF, the CPU's bytes.
+TEST_CASE("ctess mesh --backend vulkan|webgpu --pattern uniform (welded): the CPU's file byte for byte",
+          "[cli][mesh][vulkan][webgpu]") {
+    const std::string args = "--in " + box + " --dice-rate 2 --camera 1,2,3 --pattern uniform";
+    const std::string cpu_file = scratch("welded_split_cpu.glb");
+    const nlohmann::json cpu = run_mesh("cpu", args, cpu_file, false);
+    const std::string cpu_bytes = read_bytes(cpu_file);
+    CHECK(cpu_bytes.size() > 1000000);
+    CHECK(cpu["output_open_edges"] == 0);
+    for (const std::string backend : {"vulkan", "webgpu"}) {
+        const std::string gpu_file = scratch("welded_split_" + backend + ".glb");
+        const nlohmann::json gpu = run_mesh(backend, args, gpu_file, false);
+        CHECK(gpu["output"] == "welded");
+        CHECK(gpu["welded"]["shader_pipeline"] == true);
+        CHECK(gpu["output_triangles"] == cpu["output_triangles"]);
+        CHECK(gpu["output_open_edges"] == 0);
+        CHECK((cpu_bytes == read_bytes(gpu_file)));
+    }
+}
+
 TEST_CASE("ctess mesh --backend webgpu (welded): the CPU's file byte for byte (box.obj's quads, flat)",
           "[cli][mesh][webgpu]") {
     const std::string args = "--in " + box + " --dice-rate 1 --camera 1,2,3";
@@ -211,11 +232,6 @@ TEST_CASE("ctess mesh --backend: refusals exit non-zero with the reason and writ
     const std::string in = "--in " + box + " --dice-rate 3 --camera 1,2,3 --out " + out;
     ctess::test::check_refused(
         {
-            {in + " --backend vulkan --pattern uniform", 2,
-             "--backend vulkan: the GPU welds --pattern cp; --pattern uniform (split at any factor) is "
-             "welded "
-             "on the CPU only"},
-            {in + " --backend webgpu --pattern uniform", 2, "add --unwelded"},
             {in + " --backend vulkan --threads 2", 2, "--threads goes with the CPU's welded output"},
             {in + " --unwelded --backend metal", 2, "--backend: 'metal' is not one of: cpu, vulkan, webgpu"},
             {in + " --unwelded --keep-degenerate", 2, "--keep-degenerate goes with the welded output"},

@@ -13,6 +13,57 @@
 #include <utility>
 #include <vector>
 
+// The GPU's welded output of mesh with options against the CPU's weld, and the closed octahedron closed by
+// index (every edge in two triangles); 0 when they agree.
+int check_welded(const ctess::rt::MeshView& mesh, const ctess::rt::PipelineOptions& options,
+                 std::uint32_t& welded_vertices) {
+    ctess::vulkan::WeldedOutput welded;
+    try {
+        ctess::vulkan::Runner gpu(CTESS_SHADER_DIR, 64);
+        welded = gpu.tessellate_welded(mesh, options);
+    } catch (const ctess::vulkan::Error& e) {
+        std::fprintf(stderr, "vulkan_mesh: welded: %s\n", e.what());
+        return 1;
+    }
+    std::vector<ctess::rt::WeldedEdge> edges(ctess::rt::weld_edge_capacity(mesh));
+    std::vector<ctess::rt::WeldedPatch> weld_patches(8);
+    ctess::rt::WeldedTotals weld_totals;
+    if (ctess::rt::setup_welded(ctess::rt::cp_tables_64, ctess::rt::uniform_tables, mesh, options, edges,
+                                weld_patches, weld_totals) != ctess::rt::PipelineStatus::ok)
+        return 2;
+    edges.resize(weld_totals.edges);
+    std::vector<ctess::rt::TessVertex> weld_vertices(weld_totals.vertices);
+    std::vector<std::uint32_t> weld_indices(3 * std::size_t{weld_totals.triangles});
+    if (ctess::rt::emit_welded_mesh(ctess::rt::cp_tables_64, ctess::rt::uniform_tables, mesh, options, edges,
+                                    weld_patches, weld_vertices,
+                                    weld_indices) != ctess::rt::PipelineStatus::ok)
+        return 2;
+    std::size_t open_or_shared = 0;
+    {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> keys;
+        for (std::size_t t = 0; t < welded.indices.size(); t += 3)
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t a = welded.indices[t + k], b = welded.indices[t + (k + 1) % 3];
+                keys.emplace_back(a < b ? a : b, a < b ? b : a);
+            }
+        std::sort(keys.begin(), keys.end());
+        for (std::size_t i = 0; i < keys.size();) {
+            std::size_t j = i;
+            while (j < keys.size() && keys[j] == keys[i]) ++j;
+            open_or_shared += j - i != 2;
+            i = j;
+        }
+    }
+    if (welded.totals.vertices != weld_totals.vertices || welded.totals.triangles != weld_totals.triangles ||
+        welded.indices != weld_indices || weld_totals.vertices < 100 || open_or_shared != 0) {
+        std::fprintf(stderr, "vulkan_mesh: the welded output differs from the CPU's or is not closed (%s)\n",
+                     options.pattern == ctess::rt::Pattern::cp ? "cp" : "uniform split");
+        return 5;
+    }
+    welded_vertices = welded.totals.vertices;
+    return 0;
+}
+
 int main() {
     // An octahedron: 6 vertices (position, normal, uv: rt::mesh_vertex_floats each), 8 triangles.
     std::vector<float> vertices;
@@ -64,50 +115,15 @@ int main() {
             return 4;
         }
     }
-    // The welded output on the GPU (docs/shaders.md, "Welded output"): the CPU's weld, and the closed
-    // octahedron stays closed by index (every edge in two triangles).
-    ctess::vulkan::WeldedOutput welded;
-    try {
-        ctess::vulkan::Runner gpu(CTESS_SHADER_DIR, 64);
-        welded = gpu.tessellate_welded(mesh, options);
-    } catch (const ctess::vulkan::Error& e) {
-        std::fprintf(stderr, "vulkan_mesh: welded: %s\n", e.what());
-        return 1;
-    }
-    std::vector<ctess::rt::WeldedEdge> edges(ctess::rt::weld_edge_capacity(mesh));
-    std::vector<ctess::rt::WeldedPatch> weld_patches(8);
-    ctess::rt::WeldedTotals weld_totals;
-    if (ctess::rt::setup_welded(ctess::rt::cp_tables_64, mesh, options, edges, weld_patches, weld_totals) !=
-        ctess::rt::PipelineStatus::ok)
-        return 2;
-    edges.resize(weld_totals.edges);
-    std::vector<ctess::rt::TessVertex> weld_vertices(weld_totals.vertices);
-    std::vector<std::uint32_t> weld_indices(3 * std::size_t{weld_totals.triangles});
-    if (ctess::rt::emit_welded_mesh(ctess::rt::cp_tables_64, mesh, options, edges, weld_patches,
-                                    weld_vertices, weld_indices) != ctess::rt::PipelineStatus::ok)
-        return 2;
-    std::size_t open_or_shared = 0;
-    {
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> keys;
-        for (std::size_t t = 0; t < welded.indices.size(); t += 3)
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t a = welded.indices[t + k], b = welded.indices[t + (k + 1) % 3];
-                keys.emplace_back(a < b ? a : b, a < b ? b : a);
-            }
-        std::sort(keys.begin(), keys.end());
-        for (std::size_t i = 0; i < keys.size();) {
-            std::size_t j = i;
-            while (j < keys.size() && keys[j] == keys[i]) ++j;
-            open_or_shared += j - i != 2;
-            i = j;
-        }
-    }
-    if (welded.totals.vertices != weld_totals.vertices || welded.totals.triangles != weld_totals.triangles ||
-        welded.indices != weld_indices || weld_totals.vertices >= totals.vertices || open_or_shared != 0) {
-        std::fprintf(stderr, "vulkan_mesh: the welded output differs from the CPU's or is not closed\n");
-        return 5;
-    }
-    std::printf("vulkan_mesh: the GPU output equals the CPU's, unwelded and welded (%u vertices)\n",
-                welded.totals.vertices);
+    // The welded output on the GPU (docs/shaders.md, "Welded output"): CP, and uniform density split above N
+    // (welded by one sort over the mesh), each the CPU's weld and closed by index.
+    ctess::rt::PipelineOptions split = options;
+    split.pattern = ctess::rt::Pattern::uniform_split; // factors of about 64, above N = 16: the patches split
+    std::uint32_t welded_vertices[2] = {};
+    for (int k = 0; k < 2; ++k)
+        if (const int failed = check_welded(mesh, k == 0 ? options : split, welded_vertices[k]))
+            return failed;
+    std::printf("vulkan_mesh: the GPU output equals the CPU's, unwelded and welded (%u vertices; split %u)\n",
+                welded_vertices[0], welded_vertices[1]);
     return 0;
 }

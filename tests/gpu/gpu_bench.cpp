@@ -114,10 +114,11 @@ int split_table(const Build& build, vulkan::Runner& runner, int repeats) {
     return 0;
 }
 
-// The welded output (docs/shaders.md, "Welded output") beside the unwelded one, CP and uniform, on lavapipe
-// and Dawn: median times of the whole run and of its counting submissions, the welded run relative to the
-// unwelded, and the CPU's single-threaded setup_welded + emit_welded_mesh on the same scene. Every welded
-// output must equal the CPU's.
+// The welded output (docs/shaders.md, "Welded output") beside the unwelded one, CP, uniform and uniform split
+// (the sort over the mesh; at DiceRate 12 its output is the clamped pattern's, at 6 it splits once), on
+// lavapipe and Dawn: median times of the whole run and of its counting submissions, the welded run relative
+// to the unwelded, and the CPU's single-threaded setup_welded + emit_welded_mesh on the same scene. Every
+// welded output must equal the CPU's.
 int weld_table(const Build& build, vulkan::Runner& runner, int repeats) {
     struct Case {
         const char* name;
@@ -125,17 +126,22 @@ int weld_table(const Build& build, vulkan::Runner& runner, int repeats) {
     };
     Scene big = factor_sweep_grid(64, 158, rt::Surface::pn_triangles);
     big.options.dice.dice_rate = 12.0f;
+    Scene deeper = big; // uniform split: leaves at depth 1
+    deeper.options.dice.dice_rate = 6.0f;
     std::vector<Case> cases = {
         {"1,152-patch sweep, PN", factor_sweep_grid(64, 24, rt::Surface::pn_triangles)},
-        {"50 k-patch grid, PN, DiceRate 12", big}};
+        {"50 k-patch grid, PN, DiceRate 12", big},
+        {"50 k-patch grid, PN, DiceRate 6", deeper}};
     std::printf(
         "\n| scene | pattern | output | vertices | triangles | backend | median ms (of %d) | counting, ms | "
         "welded / unwelded | CPU ms (one thread) |\n|---|---|---|---|---|---|---|---|---|---|\n",
         repeats);
     const std::string work = std::string(CTESS_WORK_DIR) + "/bench_weld_" + build.label;
     for (Case& c : cases)
-        for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform})
+        for (const rt::Pattern pattern : {rt::Pattern::cp, rt::Pattern::uniform, rt::Pattern::uniform_split})
             for (const char* backend : {"lavapipe", "Dawn"}) {
+                // The split pattern is welded by one sort over the mesh ("One sort over the mesh").
+                if (c.scene.options.dice.dice_rate == 6.0f && pattern != rt::Pattern::uniform_split) continue;
                 c.scene.options.pattern = pattern;
                 PipelineOutput cpu[2];
                 std::vector<double> ms[2], counts_ms[2], cpu_ms[2];
@@ -165,7 +171,7 @@ int weld_table(const Build& build, vulkan::Runner& runner, int repeats) {
                     if (median(counts_ms[k]) >= 0)
                         std::snprintf(counting, sizeof counting, "%.1f", median(counts_ms[k]));
                     std::printf("| %s | %s | %s | %u | %u | %s | %.1f | %s | %s | %.1f |\n", c.name,
-                                pattern == rt::Pattern::cp ? "CP" : "uniform", k == 0 ? "unwelded" : "welded",
+                                pattern_name(pattern), k == 0 ? "unwelded" : "welded",
                                 cpu[k].total_vertices(), cpu[k].total_triangles(), backend, median(ms[k]),
                                 counting, ratio, median(cpu_ms[k]));
                 }

@@ -17,6 +17,11 @@
 
 namespace ctess::gpu_test {
 
+// The pattern's name in the tests' and the benchmark's lines.
+inline const char* pattern_name(rt::Pattern p) {
+    return p == rt::Pattern::cp ? "CP" : p == rt::Pattern::uniform ? "uniform" : "uniform split";
+}
+
 // Splitting (docs/shaders.md, "Splitting"): how many leaves of each depth a CPU output of
 // Pattern::uniform_split has, from its records' factors (each quad half is a split of its own).
 inline std::array<std::uint32_t, 5> split_depths(const Scene& scene, const PipelineOutput& cpu) {

@@ -111,10 +111,6 @@ const char* surface_name(rt::Surface s) {
                                             : "Phong";
 }
 
-const char* pattern_name(rt::Pattern p) {
-    return p == rt::Pattern::cp ? "CP" : p == rt::Pattern::uniform ? "uniform" : "uniform split";
-}
-
 // The uniform pattern's factors sweep [1, N] of the configured uniform tables, which every blob carries.
 void check_parity(unsigned max_factor, rt::Surface surface, rt::Pattern pattern = rt::Pattern::cp,
                   unsigned quad_every = 0) {

@@ -432,14 +432,6 @@ int run_mesh(int argc, char** argv) {
     if (backend.name != "cpu")
         if (const UnweldedPlan early = unwelded_plan(rt::MeshView{}, options); !early.shaders)
             refuse_gpu_options(backend.name, pattern, options, early.gpu_status, backend.unwelded);
-    // The shaders weld CP and the clamped uniform pattern; `--pattern uniform` splits at any factor, whose
-    // leaves the GPU writes unwelded only (docs/shaders.md, "Welded output").
-    if (backend.name != "cpu" && !backend.unwelded && options.pattern == rt::Pattern::uniform_split)
-        throw UsageError(
-            "--backend " + backend.name +
-            ": the GPU welds --pattern cp; --pattern uniform (split at any factor) is welded on the "
-            "CPU only: add --unwelded for the shaders' unwelded output, or use --backend cpu");
-
     StageSeconds seconds;
     auto start = Clock::now();
     models::LoadResult loaded = models::load_model(in);
