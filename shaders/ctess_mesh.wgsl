@@ -2023,6 +2023,9 @@ fn ctess_prefix_sum(@builtin(local_invocation_id) lid: vec3<u32>) {
 // edge's first id plus the rank of its parameter from the lower index, an interior point the patch's first id plus
 // the rank of its exact domain point among the patch's distinct interior points.
 fn weld_on() -> bool { return (params[PARAM_WELD] & WELD_ON) != 0u; }
+// The weld by one sort over the mesh (ctess_weld_keys and after): the split pattern's, and any other's with a
+// patch past WELD_MAX_PATCH_SLOTS.
+fn weld_sorted() -> bool { return split_pattern() || (params[PARAM_WELD] & WELD_SORTED) != 0u; }
 fn weld_edge_count() -> u32 { return weld[WELD_EDGES]; }
 fn weld_edge(e: u32) -> u32 { return WELD_HEADER_WORDS + e * WELD_EDGE_WORDS; }
 fn weld_patch(t: u32) -> u32 { return weld_edge(weld_edge_count()) + t * WELD_PATCH_WORDS; }
@@ -2133,17 +2136,15 @@ fn weld_load(t: u32, wp: ptr<function, WeldPatch>) -> bool {
     return true;
 }
 
-// Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key
-// (a triangle's base weights (w1, w2), a quad's unit square); shared slots get key (~0, ~0), which sorts last.
-// The places are slot_place's (mesh_pipeline.cpp): a corner, else the first edge whose weight is zero (a quad
-// half's diagonal is inside), else inside; an edge point's parameter is measured from the lower mesh index.
-fn weld_slot(wp: ptr<function, WeldPatch>, i: u32, key: ptr<function, vec2<u32>>) -> u32 {
-    let counts_a = (*wp).counts_a;
-    let side = select(1u, 0u, i < counts_a.x);
-    let local = select(i - counts_a.x, i, side == 0u);
-    var d: vec2<u32>;
-    if (uniform_pattern()) { d = uniform_vertex((*wp).words[side], local); } else { d = patch_vertex(&(*wp).halves[side], local); }
+// Where the point d of half `side` lies, as slot_place (mesh_pipeline.cpp): 0 a corner (its mesh vertex in
+// place.x), else 1 on the first mesh edge whose weight is zero (a quad half's diagonal is inside): its mesh
+// vertices in place.xy and its parameter from the lower index in place.z, else 2 inside, with its domain point in
+// key (a triangle's base weights (w1, w2), a quad's unit square). key is (~0, ~0) but inside.
+fn weld_place(wp: ptr<function, WeldPatch>, side: u32, d_in: vec2<u32>, place: ptr<function, vec3<u32>>,
+              key: ptr<function, vec2<u32>>) -> u32 {
     *key = vec2<u32>(0xFFFFFFFFu);
+    *place = vec3<u32>(0u);
+    var d = d_in;
     let rot = (*wp).rot;
     var a: u32;
     var b: u32;
@@ -2156,23 +2157,30 @@ fn weld_slot(wp: ptr<function, WeldPatch>, i: u32, key: ptr<function, vec2<u32>>
         for (var e = 0u; e < 4u && k == 4u; e++) { if (on_edge[e]) { k = e; } }
         if (k == 4u) {
             *key = d;
-            return WELD_INTERIOR;
+            return 2u;
         }
         a = (*wp).w[(k + rot) % 4u];
         b = (*wp).w[(k + 1u + rot) % 4u];
-        if (r[k] == 0u) { return a; }
-        if (r[k] == FIXED_ONE) { return b; }
+        if (r[k] == 0u || r[k] == FIXED_ONE) {
+            (*place).x = select(b, a, r[k] == 0u);
+            return 0u;
+        }
         x = select(FIXED_ONE - r[k], r[k], a <= b);
     } else {
         var pw = array<u32, 3>(FIXED_ONE - d.x - d.y, d.x, d.y);
         var w3: array<u32, 3>;
         for (var k = 0u; k < 3u; k++) { w3[(k + rot) % 3u] = pw[k]; }
-        for (var c = 0u; c < 3u; c++) { if (w3[c] == FIXED_ONE) { return (*wp).w[c]; } }
+        for (var c = 0u; c < 3u; c++) {
+            if (w3[c] == FIXED_ONE) {
+                (*place).x = (*wp).w[c];
+                return 0u;
+            }
+        }
         var j = 3u;
         if (w3[0] == 0u) { j = 0u; } else if (w3[1] == 0u) { j = 1u; } else if (w3[2] == 0u) { j = 2u; }
         if (j == 3u) {
             *key = vec2<u32>(w3[1], w3[2]);
-            return WELD_INTERIOR;
+            return 2u;
         }
         let i1 = (j + 1u) % 3u;
         let i2 = (j + 2u) % 3u;
@@ -2180,7 +2188,24 @@ fn weld_slot(wp: ptr<function, WeldPatch>, i: u32, key: ptr<function, vec2<u32>>
         b = (*wp).w[i2];
         x = select(w3[i1], w3[i2], a <= b);
     }
-    return weld[weld_edge(weld_find_edge(a, b)) + WEDGE_FIRST_VERTEX] + line_rank(mesh_edge_factor(a, b), x);
+    *place = vec3<u32>(a, b, x);
+    return 1u;
+}
+
+// Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key;
+// shared slots get key (~0, ~0), which sorts last.
+fn weld_slot(wp: ptr<function, WeldPatch>, i: u32, key: ptr<function, vec2<u32>>) -> u32 {
+    let counts_a = (*wp).counts_a;
+    let side = select(1u, 0u, i < counts_a.x);
+    let local = select(i - counts_a.x, i, side == 0u);
+    var d: vec2<u32>;
+    if (uniform_pattern()) { d = uniform_vertex((*wp).words[side], local); } else { d = patch_vertex(&(*wp).halves[side], local); }
+    var place: vec3<u32>;
+    let kind = weld_place(wp, side, d, &place, key);
+    if (kind == 0u) { return place.x; }
+    if (kind == 2u) { return WELD_INTERIOR; }
+    return weld[weld_edge(weld_find_edge(place.x, place.y)) + WEDGE_FIRST_VERTEX] +
+           line_rank(mesh_edge_factor(place.x, place.y), place.z);
 }
 
 // Pattern triangle k's slots (half B's after half A's vertices).
@@ -2208,9 +2233,17 @@ fn ctess_weld_edges(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_
     let stride = groups.x * EMIT_GROUP;
     let ids = params[PARAM_MESH_VERTEX_COUNT] + weld[WELD_SLOTS];
     for (var id = gid.x; id < ids; id += stride) { weld[weld_writer(id)] = 0u; }
+    // The weld by one sort counts from the ranks (ctess_weld_owner_counts): its owners' words start at 0.
+    let sorted_ = weld_sorted();
     for (var e = gid.x; e < weld_edge_count(); e += stride) {
         let m = weld_edge(e);
-        weld[m + WEDGE_VERTEX_COUNT] = line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE);
+        var count = 0u;
+        if (!sorted_) { count = line_rank(mesh_edge_factor(weld[m + WEDGE_LO], weld[m + WEDGE_HI]), FIXED_ONE); }
+        weld[m + WEDGE_VERTEX_COUNT] = count;
+    }
+    if (!sorted_) { return; }
+    for (var t = gid.x; t < patch_count(); t += stride) {
+        for (var k = 0u; k < WELD_PATCH_WORDS; k++) { weld[weld_patch(t) + k] = 0u; }
     }
 }
 
@@ -2432,9 +2465,15 @@ fn ctess_weld_writers(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(nu
     let slots = atomicLoad(&weld_atomic[WELD_SLOTS]);
     let writers = weld_edge(atomicLoad(&weld_atomic[WELD_EDGES])) + patch_count() * WELD_PATCH_WORDS; // weld_writer(0)
     let map = writers + params[PARAM_MESH_VERTEX_COUNT] + slots; // weld_map(0)
+    // The weld by one sort has ids in its map words (interior ones marked): every id gets a writer.
+    let sorted_ = weld_sorted();
     for (var s = gid.x; s < slots; s += stride) {
         let m = atomicLoad(&weld_atomic[map + s]);
-        if ((m & WELD_INTERIOR) == 0u) { atomicMax(&weld_atomic[writers + m], s + 1u); }
+        if (sorted_) {
+            atomicMax(&weld_atomic[writers + (m & ~WELD_INTERIOR)], s + 1u);
+        } else if ((m & WELD_INTERIOR) == 0u) {
+            atomicMax(&weld_atomic[writers + m], s + 1u);
+        }
     }
 }
 
@@ -2522,6 +2561,318 @@ fn ctess_weld_lone_vertices(@builtin(global_invocation_id) gid: vec3<u32>, @buil
     }
 }
 
+// ---- the weld by one sort over the mesh (docs/shaders.md, "Welded output", "One sort"; WELD_SORTED) ----
+// A split patch can have millions of slots, and any patch past WELD_MAX_PATCH_SLOTS is past one workgroup's sort,
+// so every slot of the mesh gets a record (owner, key, slot): a mesh edge's points are owned by the edge (owner e)
+// and keyed by their parameter from the lower index, a patch's interior points by the patch (owner edges + t) and
+// their domain point; corners and the padding have owner ~0 and sort last. Sorted, the distinct (owner, key) pairs
+// in order are setup_welded's ids after the mesh vertices: edges in list order, each by rank of its parameter,
+// then the patches' interiors, each by rank of its domain point. Binding 7 after the map words: two words of base
+// weights per slot (the split pattern's leaves), the records (WELD_SORT_RECORDS, a power of two) and two words per
+// rank block. A slot's map word is its id, with WELD_INTERIOR on interior points.
+fn weld_weights(s: u32) -> u32 { return weld_map(weld[WELD_SLOTS]) + 2u * s; }
+fn weld_record(i: u32) -> u32 { return weld_weights(weld[WELD_SLOTS]) + WELD_RECORD_WORDS * i; }
+fn weld_block(b: u32) -> u32 { return weld_record(weld[WELD_SORT_RECORDS]) + 2u * b; }
+fn weld_load_record(i: u32) -> vec4<u32> {
+    let o = weld_record(i);
+    return vec4<u32>(weld[o], weld[o + 1u], weld[o + 2u], weld[o + 3u]);
+}
+fn weld_store_record(i: u32, r: vec4<u32>) {
+    let o = weld_record(i);
+    weld[o] = r.x;
+    weld[o + 1u] = r.y;
+    weld[o + 2u] = r.z;
+    weld[o + 3u] = r.w;
+}
+fn weld_record_less(a: vec4<u32>, b: vec4<u32>) -> bool {
+    if (a.x != b.x) { return a.x < b.x; }
+    if (a.y != b.y) { return a.y < b.y; }
+    if (a.z != b.z) { return a.z < b.z; }
+    return a.w < b.w;
+}
+// Patch t's corners and rotation as weld_load reads them; false for a culled patch.
+fn weld_corners(t: u32, wp: ptr<function, WeldPatch>) -> bool {
+    (*wp).quad = t >= triangle_count();
+    (*wp).rot = patches[t * PATCH_WORDS + REC_ROTATION];
+    (*wp).w = array<u32, 4>(0u, 0u, 0u, 0u);
+    if ((*wp).quad) {
+        let wq = base_quad(t - triangle_count());
+        (*wp).w = array<u32, 4>(wq.x, wq.y, wq.z, wq.w);
+        return base_quad_valid(wq);
+    }
+    let w = base_triangle(t);
+    if (!base_triangle_valid(w)) { return false; }
+    (*wp).w = array<u32, 4>(w.x, w.y, w.z, 0u);
+    return true;
+}
+// Slot s of patch t, at point d of half `side`: its map word (a corner's mesh vertex) or its record.
+fn weld_key(wp: ptr<function, WeldPatch>, t: u32, side: u32, d: vec2<u32>, s: u32) {
+    var place: vec3<u32>;
+    var key: vec2<u32>;
+    let kind = weld_place(wp, side, d, &place, &key);
+    var r = vec4<u32>(0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, s);
+    if (kind == 0u) {
+        weld[weld_map(s)] = place.x;
+    } else if (kind == 1u) {
+        r = vec4<u32>(weld_find_edge(place.x, place.y), place.z, 0u, s);
+    } else {
+        r = vec4<u32>(weld_edge_count() + t, key, s);
+    }
+    weld_store_record(s, r);
+}
+// The sorted weld's work items: the split pattern's leaves, or the patches.
+fn weld_items() -> u32 {
+    if (split_pattern()) { return split_leaves(); }
+    return patch_count();
+}
+
+// Sorted weld pass 1 (after the counts, instead of ctess_weld_count), a workgroup per leaf or patch: each slot's
+// map word (a corner's mesh vertex) or record, a split leaf's base weights; the padding records.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_keys(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                   @builtin(local_invocation_id) lid: vec3<u32>, @builtin(global_invocation_id) gid: vec3<u32>) {
+    let slots = weld[WELD_SLOTS];
+    let stride = groups.x * EMIT_GROUP;
+    for (var i = slots + gid.x; i < weld[WELD_SORT_RECORDS]; i += stride) { weld_store_record(i, vec4<u32>(0xFFFFFFFFu)); }
+    let split_ = split_pattern();
+    for (var item = wid.x; item < weld_items(); item += groups.x) {
+        var wp: WeldPatch;
+        if (!split_) {
+            if (!weld_load(item, &wp)) { continue; }
+            for (var i = lid.x; i < wp.vertices; i += EMIT_GROUP) {
+                let side = select(1u, 0u, i < wp.counts_a.x);
+                let local = select(i - wp.counts_a.x, i, side == 0u);
+                var d: vec2<u32>;
+                if (uniform_pattern()) { d = uniform_vertex(wp.words[side], local); } else { d = patch_vertex(&wp.halves[side], local); }
+                weld_key(&wp, item, side, d, wp.first + i);
+            }
+            continue;
+        }
+        let leaf = split_leaf(item);
+        let t = patches[leaf + NODE_PATCH];
+        let first = patches[leaf + NODE_FIRST_VERTEX];
+        let count = patches[leaf + NODE_VERTICES];
+        if (count == 0u || !weld_corners(t, &wp)) { continue; }
+        let s = load_node(leaf);
+        let words = vec3<u32>(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+        let side = select(0u, (patches[leaf + NODE_INFO] >> NODE_HALF_SHIFT) & 1u, wp.quad);
+        for (var i = lid.x; i < count; i += EMIT_GROUP) {
+            let d = split_vertex(s, words, i);
+            let o = weld_weights(first + i);
+            weld[o] = d.x;
+            weld[o + 1u] = d.y;
+            weld_key(&wp, t, side, d, first + i);
+        }
+    }
+}
+
+// Sorted weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
+// written by the host before each dispatch), grid-stride over the record pairs: no invocation loops long.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_sort_step(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let n = weld[WELD_SORT_RECORDS];
+    let stage = weld[WELD_SORT_STAGE];
+    let step_ = weld[WELD_SORT_STEP];
+    for (var i = gid.x; i < n / 2u; i += groups.x * EMIT_GROUP) {
+        let low = i & (step_ - 1u);
+        let p = ((i - low) << 1u) | low;
+        let q = p + step_;
+        let a = weld_load_record(p);
+        let b = weld_load_record(q);
+        if (weld_record_less(b, a) == ((p & stage) == 0u)) {
+            weld_store_record(p, b);
+            weld_store_record(q, a);
+        }
+    }
+}
+
+// The rank passes' items: the sorted records (WELD_RANK_KEYS: flagged where a distinct (owner, key) starts) or
+// the unwelded triangles (WELD_RANK_TRIANGLES: flagged where kept, one word each over the records' area).
+fn weld_rank_items() -> u32 {
+    if (weld[WELD_RANK_MODE] == WELD_RANK_KEYS) { return weld[WELD_SORT_RECORDS]; }
+    return patches[patch_count() * PATCH_WORDS + 1u];
+}
+fn weld_rank_flag(i: u32, items: u32) -> bool {
+    if (i >= items) { return false; }
+    if (weld[WELD_RANK_MODE] != WELD_RANK_KEYS) { return weld[weld_record(0u) + i] != 0u; }
+    let r = weld_load_record(i);
+    if (r.x == 0xFFFFFFFFu) { return false; }
+    return i == 0u || any(weld_load_record(i - 1u).xyz != r.xyz);
+}
+// The rank passes' items, the same for every lane: their barriers depend on it (workgroupUniformLoad, as
+// ctess_weld_count's weld_uniform).
+var<workgroup> weld_rank_count: u32;
+
+// Sorted weld rank pass 1, a workgroup per block of WELD_RANK_BLOCK items: the block's flags counted.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_rank_blocks(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                          @builtin(local_invocation_id) lid: vec3<u32>) {
+    let lane = lid.x;
+    if (lane == 0u) { weld_rank_count = weld_rank_items(); }
+    let items = workgroupUniformLoad(&weld_rank_count);
+    let blocks = (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK;
+    for (var b = wid.x; b < blocks; b += groups.x) {
+        var count = 0u;
+        for (var c = 0u; c < WELD_RANK_BLOCK; c += EMIT_GROUP) {
+            if (weld_rank_flag(b * WELD_RANK_BLOCK + c + lane, items)) { count++; }
+        }
+        weld_lane[lane] = count;
+        workgroupBarrier();
+        for (var d = 1u; d < EMIT_GROUP; d <<= 1u) {
+            var add = 0u;
+            if (lane >= d) { add = weld_lane[lane - d]; }
+            workgroupBarrier();
+            weld_lane[lane] += add;
+            workgroupBarrier();
+        }
+        if (lane == 0u) { weld[weld_block(b)] = weld_lane[EMIT_GROUP - 1u]; }
+        workgroupBarrier();
+    }
+}
+
+// Sorted weld rank pass 2, one workgroup: the blocks' first ranks; the total in WELD_RANKED.
+@compute @workgroup_size(SCAN_GROUP)
+fn ctess_weld_rank_scan(@builtin(local_invocation_id) lid: vec3<u32>) {
+    let items = weld_rank_items();
+    let end_ = weld_prefix(lid.x, weld_block(0u), 2u, (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK, vec2<u32>(0u),
+                           vec2<u32>(1u, 0u), false, vec2<u32>(0u));
+    if (lid.x == 0u) { weld[WELD_RANKED] = end_.x; }
+}
+
+// Sorted weld rank pass 3, a workgroup per block: each item's rank. Keys: every slot's map word (the mesh vertices,
+// then the rank of its (owner, key)), and each owner's first id and end (its first and last records) in its
+// WeldedEdge or WeldedPatch, for ctess_weld_owner_counts. Triangles: each triangle's exclusive rank among the kept
+// ones, with WELD_INTERIOR on a dropped one.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_rank_write(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                         @builtin(local_invocation_id) lid: vec3<u32>) {
+    let lane = lid.x;
+    if (lane == 0u) { weld_rank_count = weld_rank_items(); }
+    let items = workgroupUniformLoad(&weld_rank_count);
+    let mode = weld[WELD_RANK_MODE];
+    let blocks = (items + WELD_RANK_BLOCK - 1u) / WELD_RANK_BLOCK;
+    let base_id = params[PARAM_MESH_VERTEX_COUNT];
+    for (var b = wid.x; b < blocks; b += groups.x) {
+        var before = weld[weld_block(b) + 1u];
+        for (var c = 0u; c < WELD_RANK_BLOCK; c += EMIT_GROUP) {
+            let i = b * WELD_RANK_BLOCK + c + lane;
+            let flag = weld_rank_flag(i, items);
+            let rank = before + weld_lane_scan(lane, flag) - 1u; // the last flagged item up to i
+            if (i < items && mode != WELD_RANK_KEYS) {
+                weld[weld_record(0u) + i] = select((rank + 1u) | WELD_INTERIOR, rank, flag);
+            } else if (i < items) {
+                let r = weld_load_record(i);
+                if (r.x != 0xFFFFFFFFu) {
+                    let id = base_id + rank;
+                    let edges = weld_edge_count();
+                    weld[weld_map(r.w)] = id | select(0u, WELD_INTERIOR, r.x >= edges);
+                    var owner: u32;
+                    if (r.x < edges) { owner = weld_edge(r.x) + WEDGE_FIRST_VERTEX; } else { owner = weld_patch(r.x - edges) + WPATCH_FIRST_VERTEX; }
+                    // WEDGE_VERTEX_COUNT and WPATCH_VERTEX_COUNT follow the first-vertex words.
+                    if (i == 0u || weld_load_record(i - 1u).x != r.x) { weld[owner] = id; }
+                    if (i + 1u == items || weld_load_record(i + 1u).x != r.x) { weld[owner + 1u] = id + 1u; }
+                }
+            }
+            before += weld_lane[EMIT_GROUP - 1u];
+            workgroupBarrier();
+        }
+    }
+}
+
+// Triangle k of a sorted weld's item (a leaf, or a patch wp): its slots and its unwelded index.
+fn weld_item_triangle(split_: bool, item: u32, wp: ptr<function, WeldPatch>, k: u32) -> vec4<u32> {
+    if (!split_) { return vec4<u32>(weld_triangle_slots(wp, k) + vec3<u32>((*wp).first), patches[item * PATCH_WORDS + REC_FIRST_TRIANGLE] + k); }
+    let leaf = split_leaf(item);
+    let words = vec3<u32>(patches[leaf + NODE_PATTERN], patches[leaf + NODE_PATTERN + 1u], patches[leaf + NODE_PATTERN + 2u]);
+    return vec4<u32>(uniform_triangle(words, k) + vec3<u32>(patches[leaf + NODE_FIRST_VERTEX]), patches[leaf + NODE_FIRST_TRIANGLE] + k);
+}
+// A sorted weld's item's triangles; false for a culled patch.
+fn weld_item_load(split_: bool, item: u32, wp: ptr<function, WeldPatch>, triangles: ptr<function, u32>) -> bool {
+    *triangles = 0u;
+    if (split_) {
+        *triangles = patches[split_leaf(item) + NODE_TRIANGLES];
+        return true;
+    }
+    if (!weld_load(item, wp)) { return false; }
+    *triangles = (*wp).triangles;
+    return true;
+}
+
+// Sorted weld pass, a workgroup per leaf or patch: each triangle's kept flag (its welded corners distinct, or
+// keep_degenerate) over the records' area, for the triangles' ranks.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_keep(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                   @builtin(local_invocation_id) lid: vec3<u32>) {
+    let flags = weld_record(0u);
+    let split_ = split_pattern();
+    for (var item = wid.x; item < weld_items(); item += groups.x) {
+        var wp: WeldPatch;
+        var triangles: u32;
+        if (!weld_item_load(split_, item, &wp, &triangles)) { continue; }
+        for (var k = lid.x; k < triangles; k += EMIT_GROUP) {
+            let s = weld_item_triangle(split_, item, &wp, k);
+            let ids = vec3<u32>(weld[weld_map(s.x)], weld[weld_map(s.y)], weld[weld_map(s.z)]) & vec3<u32>(~WELD_INTERIOR);
+            weld[flags + s.w] = select(0u, 1u, weld_kept(ids));
+        }
+    }
+}
+
+// Sorted weld pass, grid-stride over the edges and patches: each one's counts from the ranks. An owner's
+// vertex_count word holds its end id when it has points (ctess_weld_rank_write), else 0; a patch's kept
+// triangles are the ranks at its first unwelded triangle and after its last.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_owner_counts(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
+    let stride = groups.x * EMIT_GROUP;
+    let edges = weld_edge_count();
+    let flags = weld_record(0u);
+    let triangles = patches[patch_count() * PATCH_WORDS + 1u];
+    for (var e = gid.x; e < edges; e += stride) {
+        let m = weld_edge(e);
+        let end_ = weld[m + WEDGE_VERTEX_COUNT];
+        weld[m + WEDGE_VERTEX_COUNT] = select(end_ - weld[m + WEDGE_FIRST_VERTEX], 0u, end_ == 0u);
+    }
+    for (var t = gid.x; t < patch_count(); t += stride) {
+        let m = weld_patch(t);
+        let end_ = weld[m + WPATCH_VERTEX_COUNT];
+        weld[m + WPATCH_VERTEX_COUNT] = select(end_ - weld[m + WPATCH_FIRST_VERTEX], 0u, end_ == 0u);
+        let rec = t * PATCH_WORDS;
+        let first = patches[rec + REC_FIRST_TRIANGLE];
+        let count = patches[rec + REC_TRIANGLE_COUNT];
+        var at = weld[WELD_RANKED];
+        if (first < triangles) { at = weld[flags + first] & ~WELD_INTERIOR; }
+        var after = weld[WELD_RANKED];
+        if (first + count < triangles) { after = weld[flags + first + count] & ~WELD_INTERIOR; }
+        weld[m + WPATCH_TRIANGLE_COUNT] = select(after - at, 0u, count == 0u);
+    }
+}
+
+// Sorted weld emit, a workgroup per leaf or patch of the emit range: its kept triangles at their ranks.
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_sorted_triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                               @builtin(local_invocation_id) lid: vec3<u32>) {
+    let flags = weld_record(0u);
+    let first_patch = params[PARAM_FIRST_PATCH];
+    let end = min(params[PARAM_END_PATCH], patch_count());
+    let split_ = split_pattern();
+    let items = emit_items(split_, first_patch, end);
+    for (var item = items.x + wid.x; item < items.y; item += groups.x) {
+        var leaf: u32;
+        let t = item_patch(split_, item, &leaf);
+        var wp: WeldPatch;
+        var triangles: u32;
+        if (t < first_patch || t >= end || !weld_item_load(split_, item, &wp, &triangles)) { continue; }
+        for (var k = lid.x; k < triangles; k += EMIT_GROUP) {
+            let s = weld_item_triangle(split_, item, &wp, k);
+            let rank = weld[flags + s.w];
+            if ((rank & WELD_INTERIOR) != 0u) { continue; }
+            let o = 3u * rank;
+            out_indices[o] = weld[weld_map(s.x)] & ~WELD_INTERIOR;
+            out_indices[o + 1u] = weld[weld_map(s.y)] & ~WELD_INTERIOR;
+            out_indices[o + 2u] = weld[weld_map(s.z)] & ~WELD_INTERIOR;
+        }
+    }
+}
+
 // Passes 3 and 4 (vertices), a workgroup per patch (looping when there are more patches than workgroups): every
 // output vertex of the emit range's triangles (quad_pass false: ctess_emit_vertices) or quads (true:
 // ctess_emit_quad_vertices). Separate entry points, so that a triangle pipeline carries no quad code: a software
@@ -2546,7 +2897,8 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
     let split_ = split_pattern();
     // Welded (docs/shaders.md, "Welded output"): each slot writes its weld id's vertex when it is the id's writer
     // (the first slot of an interior point, the writer word's slot of a shared one), with u = v = 0 for shared ids.
-    let weld_ = weld_on() && !split_;
+    let weld_ = weld_on();
+    let sorted_ = weld_ && weld_sorted();
     let items = emit_items(split_, first_patch, end);
     for (var item = items.x + wid.x; item < items.y; item += groups.x) {
         var leaf: u32;
@@ -2622,24 +2974,35 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
         for (var i = lid.x; i < count; i += EMIT_GROUP) {
             let side = select(1u, 0u, i < vertices_a);
             let local = select(i - vertices_a, i, side == 0u);
-            var d: vec2<u32>;
-            // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass).
             var o = (first + i) * VERTEX_WORDS;
             var shared_id = false;
             if (weld_) {
                 let m = weld[weld_map(first + i)];
                 shared_id = (m & WELD_INTERIOR) == 0u;
-                if (shared_id) {
-                    if (weld[weld_writer(m)] != first + i + 1u) { continue; }
-                } else if ((m & WELD_REPRESENTATIVE) == 0u) {
-                    continue;
+                if (sorted_) {
+                    // The weld by one sort has ids in its map words (ctess_weld_keys), each written by its writer.
+                    if (weld[weld_writer(m & ~WELD_INTERIOR)] != first + i + 1u) { continue; }
+                    o = (m & ~WELD_INTERIOR) * VERTEX_WORDS;
+                } else {
+                    if (shared_id) {
+                        if (weld[weld_writer(m)] != first + i + 1u) { continue; }
+                    } else if ((m & WELD_REPRESENTATIVE) == 0u) {
+                        continue;
+                    }
+                    o = weld_output_id(m, first_interior) * VERTEX_WORDS;
                 }
-                o = weld_output_id(m, first_interior) * VERTEX_WORDS;
             }
-            if (split_) {
+            // A split leaf's base weights are ctess_split_points' (its map into the root stays out of this pass),
+            // welded ctess_weld_keys' in binding 7.
+            var d: vec2<u32>;
+            if (!split_) {
+                if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
+            } else if (weld_) {
+                let sw = weld_weights(first + i);
+                d = vec2<u32>(weld[sw], weld[sw + 1u]);
+            } else {
                 d = vec2<u32>(out_vertices[o + VERTEX_U], out_vertices[o + VERTEX_V]);
             }
-            else if (uniform_) { d = uniform_vertex(words[side], local); } else { d = patch_vertex(&halves[side], local); }
             // The surface's triangle and weights: a triangle's own (to_base_point: pattern weights (1 - u - v, u,
             // v) move to base vertices (k + rot) % 3), or for a point on quad edge k the triangle (q_k, q_k+1,
             // q_k+2) with weights (1 - r, r, 0), the operations the neighbour across the edge runs (quad_vertex on

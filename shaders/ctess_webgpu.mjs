@@ -64,6 +64,22 @@ export function weldEdgeList(meshIndices, triangleCount, quadCount, vertexCount)
     return out.slice(0, 4 * n);
 }
 
+// The weld by one sort over the mesh (docs/shaders.md, "Welded output"; the params' WELD_SORTED): its sort's records,
+// rank blocks and binding 7's words, as rt::gpu::weld_sort_records, weld_rank_blocks and weld_sorted_buffer_words
+// (shader_interface.hpp) compute them, from the layout's constants C. slots and triangles: the unwelded totals.
+export function weldSortedSizes(C, { edges, patches, meshVertices, slots, triangles }) {
+    // A power of two, at least the slots, and enough words (WELD_RECORD_WORDS each) for a flag per unwelded triangle.
+    const need = Math.max(slots, Math.ceil(triangles / C.WELD_RECORD_WORDS));
+    let records = 2;
+    while (records < need) records *= 2;
+    const blocks = Math.ceil(Math.max(records, triangles) / C.WELD_RANK_BLOCK);
+    // The header, edges and patches, a writer word per id, a map word and two words of base weights per slot, the
+    // records and two words per rank block.
+    const words = C.WELD_HEADER_WORDS + edges * C.WELD_EDGE_WORDS + patches * C.WELD_PATCH_WORDS + meshVertices + 4 * slots +
+                  C.WELD_RECORD_WORDS * records + 2 * blocks;
+    return { records, blocks, words };
+}
+
 export class MeshPipeline {
     // load(name) gives a file of the shader folder: a Promise of a string (.wgsl, .json) or an ArrayBuffer (.bin).
     // extraCode is WGSL appended to the module (entry points of the caller's own, sharing its bindings), and
@@ -257,13 +273,14 @@ export class MeshPipeline {
     // levels again on regions grown to what it needed (at least twice the nodes), up to options.maxSplitCapacity
     // (default: the device's binding size), past which run() throws, naming the nodes needed. The result then
     // also has splitLeaves and splitCapacity.
-    // Welding (params' weld; docs/shaders.md, "Welded output"; 'cp' and 'uniform' only, in one batch: the
-    // 'uniform-split' pattern and options.batchVertices throw): after the counts (the unwelded totals are the weld's
-    // slots) binding 7 gets the mesh's edge list (weldEdgeList) and the weld's counting passes run (each edge's
-    // points and their prefix sums, each patch's weld, each shared id's writer, the patches' prefix sums); a patch
-    // edge missing from the list or a prefix sum past its bound throws, and the welded totals are recounted and
-    // checked against the limits before the outputs are made at those totals. The emit is the vertex passes (each
-    // slot writing the welded vertex it owns), ctess_weld_triangles (the kept triangles) and
+    // Welding (params' weld; docs/shaders.md, "Welded output"; every pattern, in one batch: options.batchVertices
+    // throws): after the counts (the unwelded totals are the weld's slots) binding 7 gets the mesh's edge list
+    // (weldEdgeList) and the weld's counting passes run (each edge's points and their prefix sums, each patch's weld,
+    // each shared id's writer, the patches' prefix sums; the 'uniform-split' pattern, and a mesh with a patch past
+    // WELD_MAX_PATCH_SLOTS slots, by one sort over the mesh instead of each patch's weld); a patch edge missing from
+    // the list or a prefix sum past its bound throws, and the welded totals are recounted and checked against the
+    // limits before the outputs are made at those totals. The emit is the vertex passes (each slot writing the
+    // welded vertex it owns), ctess_weld_triangles or ctess_weld_sorted_triangles (the kept triangles) and
     // ctess_weld_lone_vertices (the mesh vertices no face reaches). vertexCount and triangleCount are the welded
     // totals, and the result also has weld: {edges (rt::WeldedEdge, 4 words each), patches (rt::WeldedPatch, 4
     // words each; Uint32Arrays), edgeCount, vertexCount, triangleCount}. With countsOnly the weld's counts run too.
@@ -291,7 +308,6 @@ export class MeshPipeline {
         // Splitting: binding 4 holds the split area after the totals (rt::gpu::split_buffer_words).
         const split = params[C.PARAM_PATTERN] === C.PATTERN_UNIFORM_SPLIT;
         const welded = (params[C.PARAM_WELD] & C.WELD_ON) !== 0;
-        if (welded && split) throw new Error("weld: the 'uniform-split' pattern is not welded on the GPU (docs/shaders.md, \"Welded output\")");
         if (welded && (options.batchVertices ?? Infinity) !== Infinity)
             throw new Error('weld: the welded output is emitted in one batch (no batchVertices)');
         const roots = n + quads; // one per base triangle, two per quad
@@ -320,8 +336,10 @@ export class MeshPipeline {
                         end0 > Math.max(first0, triangles) && !welded ? 'emit_quad_triangles' : null];
         const [emitVertices, emitTriangles, emitQuadVertices, emitQuadTriangles] =
             options.countsOnly ? [] : await Promise.all(wanted.map((name) => name && this.pipelineOf(name)));
-        const weldPasses = welded ? await Promise.all(['weld_edges', 'weld_edge_scan', 'weld_count', 'weld_writers', 'weld_scan',
-                                                       'weld_triangles', 'weld_lone_vertices'].map((name) => this.pipelineOf(name))) : [];
+        // The split pattern is always welded by one sort over the mesh (weldRun compiles its passes): no patch's own weld.
+        const weldPasses = welded ? await Promise.all(['weld_edges', 'weld_edge_scan', split ? null : 'weld_count', 'weld_writers', 'weld_scan',
+                                                       split ? null : 'weld_triangles', 'weld_lone_vertices']
+                                                          .map((name) => name && this.pipelineOf(name))) : [];
         // Validation and out-of-memory errors of this run throw, instead of reading back zeros.
         this.device.pushErrorScope('out-of-memory');
         this.device.pushErrorScope('validation');
@@ -392,9 +410,10 @@ export class MeshPipeline {
             if (sumV > maxVertices || sumT > maxTriangles) throw pastLimits(`${sumV} vertices, ${sumT} triangles`);
             if (sumV !== totalV || sumT !== totalT) throw new Error("the prefix sum's totals differ from the records' counts");
             if (welded) {
-                return await scoped(await this.weldRun({ params, patches, slots: totalV, meshIndices, tables, bParams, bMesh,
-                                                         bIndices, bPatches, none, keep, milliseconds, maxGroups, maxBinding,
-                                                         emitVertices, emitQuadVertices, weldPasses, pastLimits, options }));
+                return await scoped(await this.weldRun({ params, patches, slots: totalV, unweldedTriangles: totalT, meshIndices,
+                                                         tables, bParams, bMesh, bIndices, bPatches, none, keep, milliseconds,
+                                                         maxGroups, maxBinding, emitVertices, emitQuadVertices, weldPasses,
+                                                         pastLimits, options, split, splitLeaves, capacity, splitInfo }));
             }
             const vertexCount = totalV, triangleCount = totalT;
             if (vertexCount * C.VERTEX_WORDS * 4 > maxBinding || triangleCount * 12 > maxBinding)
@@ -437,36 +456,43 @@ export class MeshPipeline {
     }
 
     // run()'s welded branch (docs/shaders.md, "Welded output"), after the counts: binding 7 (rt::gpu::weld_word,
-    // rt::gpu::weld_buffer_words words) with the header and the edge list, the weld's counting passes as the Vulkan
-    // host's MeshPipeline::record_weld_counts, the welded totals recounted and checked, then the emit as
-    // record_weld_emit. Resolves to run()'s result.
-    async weldRun({ params, patches, slots, meshIndices, tables, bParams, bMesh, bIndices, bPatches, none, keep, milliseconds,
-                    maxGroups, maxBinding, emitVertices, emitQuadVertices, weldPasses, pastLimits, options }) {
+    // rt::gpu::weld_buffer_words words, or weldSortedSizes' for the weld by one sort) with the header and the edge
+    // list, the weld's counting passes as the Vulkan host's MeshPipeline::record_weld_counts (or
+    // record_sorted_weld_counts), the welded totals recounted and checked, then the emit as record_weld_emit (or
+    // record_sorted_weld_emit). Resolves to run()'s result.
+    async weldRun({ params, patches, slots, unweldedTriangles, meshIndices, tables, bParams, bMesh, bIndices, bPatches, none, keep,
+                    milliseconds, maxGroups, maxBinding, emitVertices, emitQuadVertices, weldPasses, pastLimits, options, split,
+                    splitLeaves, capacity, splitInfo }) {
         const C = this.constants;
         const { max_vertices: maxVertices, max_triangles: maxTriangles } = this.layoutJson.limits;
         const n = params[C.PARAM_PATCH_COUNT], quads = params[C.PARAM_QUAD_COUNT], triangles = n - quads;
         const meshVertexCount = params[C.PARAM_MESH_VERTEX_COUNT];
-        // A patch's sort runs in one workgroup: past WELD_MAX_PATCH_SLOTS a software driver's loop limit could cut
-        // it short, so such a mesh is refused (as the C++ host).
-        for (let t = 0; t < n; t++) {
-            const v = patches[t * this.patchWords + C.REC_VERTEX_COUNT];
-            if (v > C.WELD_MAX_PATCH_SLOTS)
-                throw new Error(`weld: patch ${t} has ${v} unwelded vertices, past the ${C.WELD_MAX_PATCH_SLOTS} the GPU weld ` +
-                                'takes in one workgroup (docs/shaders.md, "Welded output"): weld it on the CPU, or use max factor 64');
+        // A patch's weld runs in one workgroup up to WELD_MAX_PATCH_SLOTS slots (past it a software driver's loop limit
+        // could cut its sort short); the split pattern, and a mesh with a larger patch, are welded by one sort over the
+        // mesh (as the C++ host).
+        let sorted = split;
+        for (let t = 0; t < n && !sorted; t++) sorted = patches[t * this.patchWords + C.REC_VERTEX_COUNT] > C.WELD_MAX_PATCH_SLOTS;
+        if (sorted) {
+            const sortedParams = params.slice();
+            if (split) sortedParams[C.PARAM_SPLIT_CAPACITY] = capacity; // the split regions the counts were made in
+            sortedParams[C.PARAM_WELD] |= C.WELD_SORTED;
+            this.device.queue.writeBuffer(bParams, 0, sortedParams);
         }
         const edgeList = weldEdgeList(meshIndices, triangles, quads, meshVertexCount);
         const edgeCount = edgeList.length / C.WELD_EDGE_WORDS;
-        const weldWords = C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS + n * C.WELD_PATCH_WORDS + meshVertexCount +
-                          slots * (2 + C.WELD_SORT_WORDS);
+        const sizes = weldSortedSizes(C, { edges: edgeCount, patches: n, meshVertices: meshVertexCount, slots, triangles: unweldedTriangles });
+        const weldWords = sorted ? sizes.words : C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS + n * C.WELD_PATCH_WORDS +
+                                                 meshVertexCount + slots * (2 + C.WELD_SORT_WORDS);
         if (weldWords * 4 > maxBinding)
             throw new Error(`weld: binding 7 would be ${weldWords * 4} bytes, past the device's ${maxBinding}`);
         const head = new Uint32Array(C.WELD_HEADER_WORDS + edgeList.length);
         head[C.WELD_EDGES] = edgeCount;
         head[C.WELD_SLOTS] = slots;
+        head[C.WELD_SORT_RECORDS] = sizes.records;
         head.set(edgeList, C.WELD_HEADER_WORDS);
         const bWeld = keep(this.storage(head, weldWords));
         const group = C.EMIT_GROUP;
-        const grid = (items) => Math.max(1, Math.min(Math.ceil(items / group), maxGroups)); // grid-stride passes
+        const grid = (items, size = group) => Math.max(1, Math.min(Math.ceil(items / size), maxGroups)); // grid-stride passes
         const [edgePoints, edgeScan, count, writers, scan, weldTriangles, lone] = weldPasses;
         // The count and triangle passes run a patch per workgroup, in batches of maxGroups whose first patch is
         // copied into the header's WELD_FIRST_PATCH word before each dispatch (as the C++ host's vkCmdFillBuffer).
@@ -481,9 +507,35 @@ export class MeshPipeline {
             }
             return steps;
         };
-        milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, none[0], none[1], bWeld],
-                                            [[edgePoints, grid(Math.max(edgeCount, meshVertexCount + slots))], [edgeScan, 1],
-                                             ...batches(count, 0, n), [writers, grid(slots)], [scan, 1]]);
+        const sortedPasses = sorted ? await Promise.all(['weld_keys', 'weld_sort_step', 'weld_rank_blocks', 'weld_rank_scan', 'weld_rank_write',
+                                                         'weld_keep', 'weld_owner_counts', 'weld_sorted_triangles'].map((name) => this.pipelineOf(name)))
+                                    : [];
+        const [keys, sortStep, rankBlocks, rankScan, rankWrite, keepPass, ownerCounts, sortedTriangles] = sortedPasses;
+        const items = split ? splitLeaves : n; // the weld by one sort's work items: the leaves, or the patches
+        let counting;
+        if (sorted) {
+            // As record_sorted_weld_counts. The header words the host sets between passes (the sort's stage and step,
+            // the rank mode) are copies from a buffer of their values, as WELD_FIRST_PATCH's: queue.writeBuffer is not
+            // ordered between the dispatches of one submit.
+            const records = sizes.records, sortSteps = [];
+            for (let stage = 2; stage <= records; stage *= 2)
+                for (let step = stage / 2; step >= 1; step /= 2) sortSteps.push(stage, step);
+            const bWords = keep(this.storage(Uint32Array.from([...sortSteps, C.WELD_RANK_KEYS, C.WELD_RANK_TRIANGLES])));
+            const word = (w, at) => ({ copy: [bWords, 4 * at, bWeld, 4 * w, 4] });
+            const rank = (at, ranked) => [word(C.WELD_RANK_MODE, at), [rankBlocks, grid(ranked, C.WELD_RANK_BLOCK)], [rankScan, 1],
+                                          [rankWrite, grid(ranked, C.WELD_RANK_BLOCK)]];
+            counting = [[edgePoints, grid(Math.max(edgeCount, n, meshVertexCount + slots))],
+                        [keys, Math.max(Math.min(items, maxGroups), grid(records - slots))]];
+            for (let k = 0; k < sortSteps.length; k += 2)
+                counting.push(word(C.WELD_SORT_STAGE, k), word(C.WELD_SORT_STEP, k + 1), [sortStep, grid(records / 2)]);
+            counting.push(...rank(sortSteps.length, records), [keepPass, Math.max(1, Math.min(items, maxGroups))],
+                          ...rank(sortSteps.length + 1, unweldedTriangles), [ownerCounts, grid(Math.max(edgeCount, n))],
+                          [edgeScan, 1], [scan, 1], [writers, grid(slots)]);
+        } else {
+            counting = [[edgePoints, grid(Math.max(edgeCount, meshVertexCount + slots))], [edgeScan, 1], ...batches(count, 0, n),
+                        [writers, grid(slots)], [scan, 1]];
+        }
+        milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, none[0], none[1], bWeld], counting);
         const records = C.WELD_HEADER_WORDS + edgeCount * C.WELD_EDGE_WORDS;
         const words = await this.read(bWeld, records + n * C.WELD_PATCH_WORDS);
         if (words[C.WELD_STATUS] & C.WELD_MISSING_EDGE) throw new Error('weld: a patch edge is missing from the edge list');
@@ -499,7 +551,7 @@ export class MeshPipeline {
         if ((words[C.WELD_STATUS] & C.WELD_OVERFLOW) || words[C.WELD_VERTICES] !== vertexCount || words[C.WELD_TRIANGLES] !== triangleCount)
             throw new Error("weld: the prefix sums differ from the records' counts");
         const weld = { edges, patches: weldPatches, edgeCount, vertexCount, triangleCount };
-        if (options.countsOnly) return { patches, vertexCount, triangleCount, vertices: null, indices: null, milliseconds, weld };
+        if (options.countsOnly) return { patches, vertexCount, triangleCount, vertices: null, indices: null, milliseconds, weld, ...splitInfo };
         if (vertexCount * C.VERTEX_WORDS * 4 > maxBinding || triangleCount * 12 > maxBinding)
             throw new Error(`${vertexCount} welded vertices / ${triangleCount} triangles need more than ${maxBinding} ` +
                             'bytes in one storage binding');
@@ -508,12 +560,21 @@ export class MeshPipeline {
         // The emit range's triangles and quads (the params' [first, end)), then every mesh vertex no face reaches.
         const first = params[C.PARAM_FIRST_PATCH], end = params[C.PARAM_END_PATCH];
         const groups = [Math.max(0, Math.min(end, triangles) - first), Math.max(0, end - Math.max(first, triangles))];
-        // The triangles' batches start at multiples of maxGroups (bFirsts' entries) from the one holding `first`.
-        const passes = [[emitVertices, Math.min(groups[0], maxGroups)], [emitQuadVertices, Math.min(groups[1], maxGroups)],
-                        [lone, grid(meshVertexCount)]].filter(([, g]) => g > 0);
-        if (end > first) passes.push(...batches(weldTriangles, first - (first % maxGroups), end));
+        let passes;
+        if (sorted) {
+            // As record_sorted_weld_emit: a split run's passes take a workgroup per leaf (of the patches in the range).
+            const kinds = groups.map((count) => (count && split ? splitLeaves : count));
+            passes = [[emitVertices, Math.min(kinds[0], maxGroups)], [emitQuadVertices, Math.min(kinds[1], maxGroups)]]
+                .filter(([, g]) => g > 0);
+            passes.push([sortedTriangles, Math.max(1, Math.min(kinds[0] + kinds[1], maxGroups))], [lone, grid(meshVertexCount)]);
+        } else {
+            // The triangles' batches start at multiples of maxGroups (bFirsts' entries) from the one holding `first`.
+            passes = [[emitVertices, Math.min(groups[0], maxGroups)], [emitQuadVertices, Math.min(groups[1], maxGroups)],
+                      [lone, grid(meshVertexCount)]].filter(([, g]) => g > 0);
+            if (end > first) passes.push(...batches(weldTriangles, first - (first % maxGroups), end));
+        }
         milliseconds += await this.dispatch([bParams, tables, bMesh, bIndices, bPatches, vertices, indices, bWeld], passes);
-        return { patches, vertexCount, triangleCount, vertices, indices, milliseconds, weld };
+        return { patches, vertexCount, triangleCount, vertices, indices, milliseconds, weld, ...splitInfo };
     }
 
     // The pipeline of a pass of layout.json, compiled once, on first use (a failure is not kept: the next run
