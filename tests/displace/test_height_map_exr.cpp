@@ -157,7 +157,7 @@ TEST_CASE("load_height_map: the OpenEXR channel is R, else Y, else the file's fi
 }
 
 TEST_CASE(
-    "load_vector_map: an OpenEXR vector map is its R, G and B, interleaved; without all three, an error") {
+    "load_vector_map: an OpenEXR vector map is its R, G and B, interleaved, without all three, an error") {
     const int w = 5, h = 3;
     const std::vector<float> r = eighths(w * h, 1), g = eighths(w * h, 9), b = eighths(w * h, 17);
     for (const bool tiled : {false, true}) {

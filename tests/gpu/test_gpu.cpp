@@ -1292,7 +1292,7 @@ TEST_CASE("GPU second implementation: the welded output against the CPU's", "[se
 // and triangle passes run a patch per workgroup in batches, so 16 patches of 2,145 slots through one
 // workgroup a dispatch weld as the CPU does; a mesh with a patch past rt::gpu::weld_max_patch_slots (past one
 // workgroup's sort) is welded by one sort over the mesh, as the split pattern is.
-TEST_CASE("GPU welded output: one workgroup a dispatch for 16 large patches; a patch past the slot limit "
+TEST_CASE("GPU welded output: one workgroup a dispatch for 16 large patches, a patch past the slot limit "
           "welded by the sort over the mesh") {
     Scene big = repeated_big_triangle(16);
     check_welded(64, big, "weld_batches", RunLimits{1});
