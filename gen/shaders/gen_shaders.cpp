@@ -69,6 +69,7 @@ constexpr Pass passes[] = {
     {"weld_lone_vertices", "ctess_weld_lone_vertices", ctess::gen::emit_workgroup},
     {"weld_keys", "ctess_weld_keys", ctess::gen::emit_workgroup},
     {"weld_sort_step", "ctess_weld_sort_step", ctess::gen::emit_workgroup},
+    {"weld_sort_local", "ctess_weld_sort_local", ctess::gen::emit_workgroup},
     {"weld_rank_blocks", "ctess_weld_rank_blocks", ctess::gen::emit_workgroup},
     {"weld_rank_scan", "ctess_weld_rank_scan", ctess::gen::scan_workgroup},
     {"weld_rank_write", "ctess_weld_rank_write", ctess::gen::emit_workgroup},

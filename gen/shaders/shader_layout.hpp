@@ -285,6 +285,7 @@ inline constexpr std::array shader_constants = {
                    "rt::gpu::weld_rank_mode::triangles"},
     ShaderConstant{"WELD_RECORD_WORDS", rt::gpu::weld_record_words, "rt::gpu::weld_record_words"},
     ShaderConstant{"WELD_RANK_BLOCK", rt::gpu::weld_rank_block, "rt::gpu::weld_rank_block"},
+    ShaderConstant{"WELD_SORT_CHUNK", rt::gpu::weld_sort_chunk, "rt::gpu::weld_sort_chunk"},
     // the uniform-factor rule (the shaders' uniform_factor)
     ShaderConstant{"UNIFORM_ROUND_FROM_BITS", uniform_round_from_bits, "uniform::round_factor: 1.5f"},
     ShaderConstant{"F32_INFINITY_BITS", f32_infinity_bits, "uniform::round_factor: +inf"},

@@ -71,7 +71,8 @@ constexpr const char* pass_suffix[MeshPipeline::passes] = {"_patch_setup.spv",
                                                            "_weld_rank_write.spv",
                                                            "_weld_keep.spv",
                                                            "_weld_owner_counts.spv",
-                                                           "_weld_sorted_triangles.spv"};
+                                                           "_weld_sorted_triangles.spv",
+                                                           "_weld_sort_local.spv"};
 // The split passes' indices in pass_suffix.
 constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass = 12, split_expand_pass = 13,
                    split_records_pass = 14, split_points_pass = 15;
@@ -82,7 +83,7 @@ constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pa
 // The split pattern's weld passes.
 constexpr unsigned weld_keys_pass = 23, weld_sort_step_pass = 24, weld_rank_blocks_pass = 25,
                    weld_rank_scan_pass = 26, weld_rank_write_pass = 27, weld_keep_pass = 28,
-                   weld_owner_counts_pass = 29, weld_sorted_triangles_pass = 30;
+                   weld_owner_counts_pass = 29, weld_sorted_triangles_pass = 30, weld_sort_local_pass = 31;
 
 // Writes one u32 of buffer between compute passes (vkCmdFillBuffer), ordered after the passes before it and
 // before the ones after it.
@@ -437,12 +438,20 @@ void MeshPipeline::record_sorted_weld_counts(VkCommandBuffer cmd, VkDescriptorSe
     const std::uint64_t records = rt::gpu::weld_sort_records(slots, triangles);
     dispatch(weld_keys_pass, std::max(std::min(items, max_workgroups),
                                       grid_workgroups(records - slots, group, max_workgroups)));
-    for (std::uint64_t stage = 2; stage <= records; stage *= 2)
-        for (std::uint64_t step = stage / 2; step >= 1; step /= 2) {
-            word(rt::gpu::weld_word::sort_stage, static_cast<std::uint32_t>(stage));
+    // The bitonic network: the stages up to a chunk in workgroup memory, then each larger stage's steps of a
+    // chunk or more over binding 7 and the rest in workgroup memory again (rt::gpu::weld_sort_dispatches).
+    const std::uint32_t chunks = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(records / rt::gpu::weld_sort_chunk, max_workgroups));
+    word(rt::gpu::weld_word::sort_stage, 0);
+    dispatch(weld_sort_local_pass, chunks);
+    for (std::uint64_t stage = 2 * std::uint64_t{rt::gpu::weld_sort_chunk}; stage <= records; stage *= 2) {
+        word(rt::gpu::weld_word::sort_stage, static_cast<std::uint32_t>(stage));
+        for (std::uint64_t step = stage / 2; step >= rt::gpu::weld_sort_chunk; step /= 2) {
             word(rt::gpu::weld_word::sort_step, static_cast<std::uint32_t>(step));
             dispatch(weld_sort_step_pass, grid_workgroups(records / 2, group, max_workgroups));
         }
+        dispatch(weld_sort_local_pass, chunks);
+    }
     const auto rank = [&](std::uint32_t mode, std::uint64_t ranked) {
         word(rt::gpu::weld_word::rank_mode, mode);
         const std::uint32_t blocks = grid_workgroups(ranked, rt::gpu::weld_rank_block, max_workgroups);

@@ -238,11 +238,14 @@ constexpr std::uint64_t weld_buffer_words(std::uint64_t edges, std::uint64_t pat
 // distinct keys ranked by a scan in blocks of weld_rank_block items, and the kept triangles ranked the same
 // way.
 inline constexpr std::uint32_t weld_record_words = 4;
+// Records sorted together in workgroup memory by ctess_weld_sort_local (8 KB): every stage up to it at once,
+// and each later stage's steps below it (docs/shaders.md, "One sort over the mesh").
+inline constexpr std::uint32_t weld_sort_chunk = 512;
 inline constexpr std::uint32_t weld_rank_block = 4096; // items per workgroup of the rank passes (64 x 64)
-// The sort's records: a power of two, at least the slots, and enough words (weld_record_words each) for one
-// flag per unwelded triangle afterwards.
+// The sort's records: a power of two, at least the slots and weld_sort_chunk, and enough words
+// (weld_record_words each) for one flag per unwelded triangle afterwards.
 constexpr std::uint64_t weld_sort_records(std::uint64_t slots, std::uint64_t triangles) {
-    std::uint64_t need = slots > (triangles + 3) / 4 ? slots : (triangles + 3) / 4, n = 2;
+    std::uint64_t need = slots > (triangles + 3) / 4 ? slots : (triangles + 3) / 4, n = weld_sort_chunk;
     while (n < need) n *= 2;
     return n;
 }
@@ -260,12 +263,14 @@ constexpr std::uint64_t weld_sorted_buffer_words(std::uint64_t edges, std::uint6
            mesh_vertices + slots * 4 + weld_record_words * weld_sort_records(slots, triangles) +
            2 * weld_rank_blocks(slots, triangles);
 }
-// The compare-exchange steps of the bitonic sort of n records (n a power of two): (stage, step) for stage
-// 2, 4, ..., n and step stage / 2, ..., 1.
-constexpr std::uint32_t weld_sort_steps(std::uint64_t n) {
-    std::uint32_t log = 0;
-    while ((std::uint64_t{1} << log) < n) ++log;
-    return log * (log + 1) / 2;
+// The dispatches of the bitonic sort of n records (a power of two, at least weld_sort_chunk): one
+// ctess_weld_sort_local for the stages up to the chunk, then for each larger stage its steps of at least half
+// a chunk (ctess_weld_sort_step) and one ctess_weld_sort_local for the rest.
+constexpr std::uint32_t weld_sort_dispatches(std::uint64_t n) {
+    std::uint32_t dispatches = 1, steps = 0;
+    for (std::uint64_t stage = 2 * std::uint64_t{weld_sort_chunk}; stage <= n; stage *= 2)
+        dispatches += ++steps + 1;
+    return dispatches;
 }
 
 // Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride

@@ -152,8 +152,8 @@ class MeshPipeline {
     // The weld by one sort over the mesh (rt::gpu::weld_flag::sorted in the params; docs/shaders.md, "Welded
     // output", "One sort"), which Pattern::uniform_split always takes and the other patterns when a patch has
     // more than rt::gpu::weld_max_patch_slots slots: after record_counts (record_split_counts), each slot's
-    // record, a bitonic sort (rt::gpu::weld_sort_steps(records) dispatches, each after the host writes its
-    // stage and step into binding 7's header), the distinct keys ranked, the kept triangles flagged and
+    // record, a bitonic sort (rt::gpu::weld_sort_dispatches(records) dispatches, each after the host writes
+    // its stage and step into binding 7's header), the distinct keys ranked, the kept triangles flagged and
     // ranked, each edge's and patch's counts, the prefix sums and each id's writer; binding 7 then holds what
     // record_weld_counts leaves there. Binding 7 is rt::gpu::weld_sorted_buffer_words(edges, patch_count,
     // mesh_vertices, slots, triangles) words (slots and triangles the unwelded totals), with the header's
@@ -173,7 +173,7 @@ class MeshPipeline {
                                  std::uint32_t max_workgroups = rt::max_dispatch_workgroups,
                                  bool displaced = false, bool vector = false) const;
 
-    static constexpr unsigned passes = 31;
+    static constexpr unsigned passes = 32;
 
   private:
     void destroy() noexcept;
@@ -189,7 +189,7 @@ class MeshPipeline {
                                                 // vector-displaced vertices of both, then the six split
                                                 // passes (roots, count, scan, expand, records, points),
                                                 // then the seven weld passes and the
-                                                // eight of the weld by one sort
+                                                // nine of the weld by one sort
 };
 
 // What Runner::tessellate reads back: the unwelded output as rt::emit_mesh writes it (docs/shaders.md).
