@@ -2205,10 +2205,10 @@ void ctess_weld_edge_scan() {
 shared uint weld_lane[EMIT_GROUP];
 shared uint weld_kept_count;
 shared uint weld_distinct;
-// The inclusive prefix sum of each lane's flag in weld_lane; every lane must call it.
-uint weld_lane_scan(bool flag) {
+// The inclusive prefix sum of each lane's value in weld_lane; every lane must call it.
+uint weld_lane_sum(uint value) {
     uint lane = gl_LocalInvocationID.x;
-    weld_lane[lane] = flag ? 1u : 0u;
+    weld_lane[lane] = value;
     barrier();
     for (uint d = 1u; d < EMIT_GROUP; d <<= 1) {
         uint add = lane >= d ? weld_lane[lane - d] : 0u;
@@ -2218,6 +2218,7 @@ uint weld_lane_scan(bool flag) {
     }
     return weld_lane[lane];
 }
+uint weld_lane_scan(bool flag) { return weld_lane_sum(flag ? 1u : 0u); }
 bool weld_sort_less(uint a, uint b) {
     uvec3 x = uvec3(weld[a], weld[a + 1u], weld[a + 2u]), y = uvec3(weld[b], weld[b + 1u], weld[b + 2u]);
     return x.x != y.x ? x.x < y.x : x.y != y.y ? x.y < y.y : x.z < y.z;
@@ -2566,14 +2567,7 @@ void ctess_weld_rank_blocks() {
         uint count = 0u;
         for (uint c = 0u; c < WELD_RANK_BLOCK; c += EMIT_GROUP)
             if (weld_rank_flag(b * WELD_RANK_BLOCK + c + lane, items)) ++count;
-        weld_lane[lane] = count;
-        barrier();
-        for (uint d = 1u; d < EMIT_GROUP; d <<= 1) {
-            uint add = lane >= d ? weld_lane[lane - d] : 0u;
-            barrier();
-            weld_lane[lane] += add;
-            barrier();
-        }
+        weld_lane_sum(count);
         if (lane == 0u) weld[weld_block(b)] = weld_lane[EMIT_GROUP - 1u];
         barrier();
     }

@@ -390,6 +390,18 @@ void MeshPipeline::record_weld_counts(VkCommandBuffer cmd, VkDescriptorSet set, 
     compute_barrier(cmd);
 }
 
+// The welded output's vertex passes: items[0] workgroups' worth of base triangles (or split leaves), items[1]
+// of quads, each slot writing the id it owns.
+void MeshPipeline::record_weld_vertices(VkCommandBuffer cmd, const std::array<std::uint32_t, 2>& items,
+                                        std::uint32_t max_workgroups, bool displaced, bool vector) const {
+    for (unsigned kind = 0; kind < 2; ++kind) {
+        if (items[kind] == 0) continue;
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                          pipeline(vertex_pass(kind, displaced, vector)));
+        vkCmdDispatch(cmd, rt::gpu::emit_workgroups(items[kind], max_workgroups), 1, 1);
+    }
+}
+
 void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, std::uint32_t first_patch,
                                     std::uint32_t triangle_patches, std::uint32_t quad_patches,
                                     std::uint32_t mesh_vertices, VkBuffer weld, VkDeviceSize weld_offset,
@@ -397,13 +409,7 @@ void MeshPipeline::record_weld_emit(VkCommandBuffer cmd, VkDescriptorSet set, st
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
-    const std::uint32_t count[2] = {triangle_patches, quad_patches};
-    for (unsigned kind = 0; kind < 2; ++kind) {
-        if (count[kind] == 0) continue;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                          pipeline(vertex_pass(kind, displaced, vector)));
-        vkCmdDispatch(cmd, rt::gpu::emit_workgroups(count[kind], max_workgroups), 1, 1);
-    }
+    record_weld_vertices(cmd, {triangle_patches, quad_patches}, max_workgroups, displaced, vector);
     // The triangles a patch per workgroup, in batches from the header's first-patch word (as the count pass).
     const std::uint32_t end = first_patch + triangle_patches + quad_patches;
     for (std::uint32_t first = first_patch; first < end; first += max_workgroups) {
@@ -476,13 +482,7 @@ void MeshPipeline::record_sorted_weld_emit(VkCommandBuffer cmd, VkDescriptorSet 
     if (max_workgroups == 0) max_workgroups = 1;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set, 0, nullptr);
     compute_barrier(cmd);
-    const std::uint32_t count[2] = {triangle_items, quad_items};
-    for (unsigned kind = 0; kind < 2; ++kind) {
-        if (count[kind] == 0) continue;
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                          pipeline(vertex_pass(kind, displaced, vector)));
-        vkCmdDispatch(cmd, std::min(count[kind], max_workgroups), 1, 1);
-    }
+    record_weld_vertices(cmd, {triangle_items, quad_items}, max_workgroups, displaced, vector);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_sorted_triangles_pass));
     vkCmdDispatch(cmd, std::max(std::min(triangle_items + quad_items, max_workgroups), 1u), 1, 1);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(weld_lone_vertices_pass));

@@ -25,6 +25,7 @@
 // or with options the shaders do not run: rt::gpu::gpu_options_status) throw ctess::vulkan::Error, whose
 // message names the call or the file. Nothing is written to the outputs then.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -178,6 +179,8 @@ class MeshPipeline {
   private:
     void destroy() noexcept;
     VkPipeline pipeline(unsigned pass) const; // created on its first call
+    void record_weld_vertices(VkCommandBuffer cmd, const std::array<std::uint32_t, 2>& items,
+                              std::uint32_t max_workgroups, bool displaced, bool vector) const;
     VkDevice device_ = VK_NULL_HANDLE;
     unsigned max_factor_ = 0;
     std::string shader_dir_;
