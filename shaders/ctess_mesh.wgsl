@@ -2667,7 +2667,8 @@ fn ctess_weld_keys(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroup
 }
 
 // Sorted weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
-// written by the host before each dispatch), grid-stride over the record pairs: no invocation loops long.
+// written by the host before each dispatch; steps of at least WELD_SORT_CHUNK, the smaller ones in
+// ctess_weld_sort_local), grid-stride over the record pairs: no invocation loops long.
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_weld_sort_step(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
     let n = weld[WELD_SORT_RECORDS];
@@ -2683,6 +2684,50 @@ fn ctess_weld_sort_step(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(
             weld_store_record(p, b);
             weld_store_record(q, a);
         }
+    }
+}
+
+// Sorted weld pass 2b, a workgroup per chunk of WELD_SORT_CHUNK records in workgroup memory: with WELD_SORT_STAGE 0
+// every stage up to the chunk (each chunk sorted, alternately ascending and descending as the network has it),
+// else the steps below the chunk of that stage (the host runs the larger steps with ctess_weld_sort_step): the
+// same network, a dispatch for what would be up to log2(WELD_SORT_CHUNK) + 1 of them.
+var<workgroup> weld_chunk: array<vec4<u32>, WELD_SORT_CHUNK>;
+// The records and the stage, the same for every lane: the loops' barriers depend on them (workgroupUniformLoad, as
+// ctess_weld_count's weld_uniform), a variable each.
+var<workgroup> weld_sort_count: u32;
+var<workgroup> weld_sort_stage: u32;
+@compute @workgroup_size(EMIT_GROUP)
+fn ctess_weld_sort_local(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>,
+                         @builtin(local_invocation_id) lid: vec3<u32>) {
+    let lane = lid.x;
+    if (lane == 0u) {
+        weld_sort_count = weld[WELD_SORT_RECORDS];
+        weld_sort_stage = weld[WELD_SORT_STAGE];
+    }
+    let n = workgroupUniformLoad(&weld_sort_count);
+    let stage = workgroupUniformLoad(&weld_sort_stage);
+    for (var chunk = wid.x; chunk < n / WELD_SORT_CHUNK; chunk += groups.x) {
+        let base_ = chunk * WELD_SORT_CHUNK;
+        for (var i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) { weld_chunk[i] = weld_load_record(base_ + i); }
+        for (var s = select(stage, 2u, stage == 0u); s <= select(stage, WELD_SORT_CHUNK, stage == 0u); s <<= 1u) {
+            for (var step_ = min(s, WELD_SORT_CHUNK) / 2u; step_ > 0u; step_ >>= 1u) {
+                workgroupBarrier();
+                for (var i = lane; i < WELD_SORT_CHUNK / 2u; i += EMIT_GROUP) {
+                    let low = i & (step_ - 1u);
+                    let p = ((i - low) << 1u) | low;
+                    let q = p + step_;
+                    let a = weld_chunk[p];
+                    let b = weld_chunk[q];
+                    if (weld_record_less(b, a) == (((base_ + p) & s) == 0u)) {
+                        weld_chunk[p] = b;
+                        weld_chunk[q] = a;
+                    }
+                }
+            }
+        }
+        workgroupBarrier();
+        for (var i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) { weld_store_record(base_ + i, weld_chunk[i]); }
+        workgroupBarrier();
     }
 }
 

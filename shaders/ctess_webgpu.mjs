@@ -68,9 +68,10 @@ export function weldEdgeList(meshIndices, triangleCount, quadCount, vertexCount)
 // rank blocks and binding 7's words, as rt::gpu::weld_sort_records, weld_rank_blocks and weld_sorted_buffer_words
 // (shader_interface.hpp) compute them, from the layout's constants C. slots and triangles: the unwelded totals.
 export function weldSortedSizes(C, { edges, patches, meshVertices, slots, triangles }) {
-    // A power of two, at least the slots, and enough words (WELD_RECORD_WORDS each) for a flag per unwelded triangle.
+    // A power of two, at least the slots and WELD_SORT_CHUNK, and enough words (WELD_RECORD_WORDS each) for a flag per
+    // unwelded triangle.
     const need = Math.max(slots, Math.ceil(triangles / C.WELD_RECORD_WORDS));
-    let records = 2;
+    let records = C.WELD_SORT_CHUNK;
     while (records < need) records *= 2;
     const blocks = Math.ceil(Math.max(records, triangles) / C.WELD_RANK_BLOCK);
     // The header, edges and patches, a writer word per id, a map word and two words of base weights per slot, the
@@ -507,29 +508,41 @@ export class MeshPipeline {
             }
             return steps;
         };
-        const sortedPasses = sorted ? await Promise.all(['weld_keys', 'weld_sort_step', 'weld_rank_blocks', 'weld_rank_scan', 'weld_rank_write',
-                                                         'weld_keep', 'weld_owner_counts', 'weld_sorted_triangles'].map((name) => this.pipelineOf(name)))
+        const sortedPasses = sorted ? await Promise.all(['weld_keys', 'weld_sort_step', 'weld_sort_local', 'weld_rank_blocks', 'weld_rank_scan',
+                                                         'weld_rank_write', 'weld_keep', 'weld_owner_counts', 'weld_sorted_triangles']
+                                                            .map((name) => this.pipelineOf(name)))
                                     : [];
-        const [keys, sortStep, rankBlocks, rankScan, rankWrite, keepPass, ownerCounts, sortedTriangles] = sortedPasses;
+        const [keys, sortStep, sortLocal, rankBlocks, rankScan, rankWrite, keepPass, ownerCounts, sortedTriangles] = sortedPasses;
         const items = split ? splitLeaves : n; // the weld by one sort's work items: the leaves, or the patches
         let counting;
         if (sorted) {
             // As record_sorted_weld_counts. The header words the host sets between passes (the sort's stage and step,
             // the rank mode) are copies from a buffer of their values, as WELD_FIRST_PATCH's: queue.writeBuffer is not
             // ordered between the dispatches of one submit.
-            const records = sizes.records, sortSteps = [];
-            for (let stage = 2; stage <= records; stage *= 2)
-                for (let step = stage / 2; step >= 1; step /= 2) sortSteps.push(stage, step);
-            const bWords = keep(this.storage(Uint32Array.from([...sortSteps, C.WELD_RANK_KEYS, C.WELD_RANK_TRIANGLES])));
+            // The bitonic network (rt::gpu::weld_sort_dispatches): the stages up to a chunk in workgroup memory
+            // (stage word 0), then each larger stage's steps of a chunk or more over binding 7 and the rest in
+            // workgroup memory again.
+            const records = sizes.records, chunks = Math.min(records / C.WELD_SORT_CHUNK, maxGroups), sortWords = [], sort = [];
+            const sortWord = (w, value) => { sort.push({ w, at: sortWords.length }); sortWords.push(value); };
+            sortWord(C.WELD_SORT_STAGE, 0);
+            sort.push([sortLocal, chunks]);
+            for (let stage = 2 * C.WELD_SORT_CHUNK; stage <= records; stage *= 2) {
+                sortWord(C.WELD_SORT_STAGE, stage);
+                for (let step = stage / 2; step >= C.WELD_SORT_CHUNK; step /= 2) {
+                    sortWord(C.WELD_SORT_STEP, step);
+                    sort.push([sortStep, grid(records / 2)]);
+                }
+                sort.push([sortLocal, chunks]);
+            }
+            const bWords = keep(this.storage(Uint32Array.from([...sortWords, C.WELD_RANK_KEYS, C.WELD_RANK_TRIANGLES])));
             const word = (w, at) => ({ copy: [bWords, 4 * at, bWeld, 4 * w, 4] });
             const rank = (at, ranked) => [word(C.WELD_RANK_MODE, at), [rankBlocks, grid(ranked, C.WELD_RANK_BLOCK)], [rankScan, 1],
                                           [rankWrite, grid(ranked, C.WELD_RANK_BLOCK)]];
             counting = [[edgePoints, grid(Math.max(edgeCount, n, meshVertexCount + slots))],
-                        [keys, Math.max(Math.min(items, maxGroups), grid(records - slots))]];
-            for (let k = 0; k < sortSteps.length; k += 2)
-                counting.push(word(C.WELD_SORT_STAGE, k), word(C.WELD_SORT_STEP, k + 1), [sortStep, grid(records / 2)]);
-            counting.push(...rank(sortSteps.length, records), [keepPass, Math.max(1, Math.min(items, maxGroups))],
-                          ...rank(sortSteps.length + 1, unweldedTriangles), [ownerCounts, grid(Math.max(edgeCount, n))],
+                        [keys, Math.max(Math.min(items, maxGroups), grid(records - slots))],
+                        ...sort.map((x) => (Array.isArray(x) ? x : word(x.w, x.at)))];
+            counting.push(...rank(sortWords.length, records), [keepPass, Math.max(1, Math.min(items, maxGroups))],
+                          ...rank(sortWords.length + 1, unweldedTriangles), [ownerCounts, grid(Math.max(edgeCount, n))],
                           [edgeScan, 1], [scan, 1], [writers, grid(slots)]);
         } else {
             counting = [[edgePoints, grid(Math.max(edgeCount, meshVertexCount + slots))], [edgeScan, 1], ...batches(count, 0, n),
