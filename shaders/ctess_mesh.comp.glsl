@@ -2503,7 +2503,7 @@ void ctess_weld_keys() {
 }
 
 // Sorted weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
-// written by the host before each dispatch; steps of at least WELD_SORT_CHUNK / 2, the smaller ones in
+// written by the host before each dispatch; steps of at least WELD_SORT_CHUNK, the smaller ones in
 // ctess_weld_sort_local), grid-stride over the record pairs: no invocation loops long.
 void ctess_weld_sort_step() {
     uint n = weld[WELD_SORT_RECORDS], stage = weld[WELD_SORT_STAGE], step_ = weld[WELD_SORT_STEP];

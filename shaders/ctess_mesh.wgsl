@@ -2313,9 +2313,9 @@ var<workgroup> weld_distinct: atomic<u32>;
 // read_write binding are not uniform to WGSL's analysis, and a barrier must be in uniform control flow.
 var<workgroup> weld_uniform: u32;
 var<workgroup> weld_batch: u32; // the batch's first patch (apart from weld_uniform, which the loop rewrites)
-// The inclusive prefix sum of each lane's flag in weld_lane; every lane must call it.
-fn weld_lane_scan(lane: u32, flag: bool) -> u32 {
-    weld_lane[lane] = select(0u, 1u, flag);
+// The inclusive prefix sum of each lane's value in weld_lane; every lane must call it.
+fn weld_lane_sum(lane: u32, value: u32) -> u32 {
+    weld_lane[lane] = value;
     workgroupBarrier();
     for (var d = 1u; d < EMIT_GROUP; d <<= 1u) {
         var add = 0u;
@@ -2326,6 +2326,7 @@ fn weld_lane_scan(lane: u32, flag: bool) -> u32 {
     }
     return weld_lane[lane];
 }
+fn weld_lane_scan(lane: u32, flag: bool) -> u32 { return weld_lane_sum(lane, select(0u, 1u, flag)); }
 fn weld_sort_less(a: u32, b: u32) -> bool {
     let x = vec3<u32>(weld[a], weld[a + 1u], weld[a + 2u]);
     let y = vec3<u32>(weld[b], weld[b + 1u], weld[b + 2u]);
@@ -2761,15 +2762,7 @@ fn ctess_weld_rank_blocks(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_wo
         for (var c = 0u; c < WELD_RANK_BLOCK; c += EMIT_GROUP) {
             if (weld_rank_flag(b * WELD_RANK_BLOCK + c + lane, items)) { count++; }
         }
-        weld_lane[lane] = count;
-        workgroupBarrier();
-        for (var d = 1u; d < EMIT_GROUP; d <<= 1u) {
-            var add = 0u;
-            if (lane >= d) { add = weld_lane[lane - d]; }
-            workgroupBarrier();
-            weld_lane[lane] += add;
-            workgroupBarrier();
-        }
+        weld_lane_sum(lane, count);
         if (lane == 0u) { weld[weld_block(b)] = weld_lane[EMIT_GROUP - 1u]; }
         workgroupBarrier();
     }

@@ -264,8 +264,8 @@ constexpr std::uint64_t weld_sorted_buffer_words(std::uint64_t edges, std::uint6
            2 * weld_rank_blocks(slots, triangles);
 }
 // The dispatches of the bitonic sort of n records (a power of two, at least weld_sort_chunk): one
-// ctess_weld_sort_local for the stages up to the chunk, then for each larger stage its steps of at least half
-// a chunk (ctess_weld_sort_step) and one ctess_weld_sort_local for the rest.
+// ctess_weld_sort_local for the stages up to the chunk, then for each larger stage its steps of a chunk or
+// more (ctess_weld_sort_step) and one ctess_weld_sort_local for the rest.
 constexpr std::uint32_t weld_sort_dispatches(std::uint64_t n) {
     std::uint32_t dispatches = 1, steps = 0;
     for (std::uint64_t stage = 2 * std::uint64_t{weld_sort_chunk}; stage <= n; stage *= 2)
