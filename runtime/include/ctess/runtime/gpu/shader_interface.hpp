@@ -9,6 +9,7 @@
 //   // records: totals_words(...) below reads them back.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -215,6 +216,9 @@ inline constexpr std::uint32_t rank_mask = representative - 1;
 } // namespace weld_map
 inline constexpr std::uint32_t weld_edge_words = sizeof(WeldedEdge) / 4;
 inline constexpr std::uint32_t weld_patch_words = sizeof(WeldedPatch) / 4;
+// ctess_weld_rank_write writes an owner's first id and its end into two neighbouring words.
+static_assert(offsetof(WeldedEdge, vertex_count) == offsetof(WeldedEdge, first_vertex) + 4 &&
+              offsetof(WeldedPatch, vertex_count) == offsetof(WeldedPatch, first_vertex) + 4);
 inline constexpr std::uint32_t weld_sort_words = 3; // a slot's domain point (u, v) and its index in the patch
 // Patches of at most this many slots rank their interior points by counting (O(n) per slot, two barriers)
 // instead of the bitonic sort (a barrier per stage); both give the same ranks.
