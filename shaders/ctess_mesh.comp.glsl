@@ -2502,38 +2502,45 @@ void ctess_weld_keys() {
     }
 }
 
-// Sorted weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
-// written by the host before each dispatch; steps of at least WELD_SORT_CHUNK, the smaller ones in
-// ctess_weld_sort_local), grid-stride over the record pairs: no invocation loops long.
+// The bitonic network with every comparator ascending (docs/shaders.md, "One sort over the mesh"): the first step
+// of a stage compares each block's halves mirrored (p with p ^ (stage - 1)), the others p with p + step. A record
+// past the count then acts as +inf and never moves, so the records need no padding to a power of two.
+uint weld_sort_partner(uint p, uint stage, uint step_) { return step_ * 2u == stage ? p ^ (stage - 1u) : p + step_; }
+
+// Sorted weld pass 2, one compare-exchange step (stage WELD_SORT_STAGE, step WELD_SORT_STEP, written by the host
+// before each dispatch; steps of at least WELD_SORT_CHUNK, the smaller ones in ctess_weld_sort_local), grid-stride
+// over the records: no invocation loops long.
 void ctess_weld_sort_step() {
     uint n = weld[WELD_SORT_RECORDS], stage = weld[WELD_SORT_STAGE], step_ = weld[WELD_SORT_STEP];
-    for (uint i = gl_GlobalInvocationID.x; i < n / 2u; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {
-        uint low = i & (step_ - 1u), p = ((i - low) << 1u) | low, q = p + step_;
+    for (uint p = gl_GlobalInvocationID.x; p < n; p += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {
+        uint q = weld_sort_partner(p, stage, step_);
+        if ((p & step_) != 0u || q >= n) continue;
         uvec4 a = weld_load_record(p), b = weld_load_record(q);
-        if (weld_record_less(b, a) == ((p & stage) == 0u)) {
+        if (weld_record_less(b, a)) {
             weld_store_record(p, b);
             weld_store_record(q, a);
         }
     }
 }
 
-// Sorted weld pass 2b, a workgroup per chunk of WELD_SORT_CHUNK records in workgroup memory: with WELD_SORT_STAGE 0
-// every stage up to the chunk (each chunk sorted, alternately ascending and descending as the network has it),
-// else the steps below the chunk of that stage (the host runs the larger steps with ctess_weld_sort_step): the
-// same network, a dispatch for what would be up to log2(WELD_SORT_CHUNK) + 1 of them.
+// Sorted weld pass 2b, a workgroup per chunk of WELD_SORT_CHUNK records in workgroup memory (the last one padded
+// with +inf): with WELD_SORT_STAGE 0 every stage up to the chunk (each chunk sorted), else the steps below the
+// chunk of that stage (the host runs the larger steps with ctess_weld_sort_step): the same network, a dispatch for
+// what would be up to log2(WELD_SORT_CHUNK) + 1 of them.
 shared uvec4 weld_chunk[WELD_SORT_CHUNK];
 void ctess_weld_sort_local() {
     uint lane = gl_LocalInvocationID.x, n = weld[WELD_SORT_RECORDS], stage = weld[WELD_SORT_STAGE];
-    for (uint chunk = gl_WorkGroupID.x; chunk < n / WELD_SORT_CHUNK; chunk += gl_NumWorkGroups.x) {
+    for (uint chunk = gl_WorkGroupID.x; chunk * WELD_SORT_CHUNK < n; chunk += gl_NumWorkGroups.x) {
         uint base_ = chunk * WELD_SORT_CHUNK;
-        for (uint i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) weld_chunk[i] = weld_load_record(base_ + i);
+        for (uint i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP)
+            weld_chunk[i] = base_ + i < n ? weld_load_record(base_ + i) : uvec4(0xFFFFFFFFu);
         for (uint s = stage == 0u ? 2u : stage; s <= (stage == 0u ? WELD_SORT_CHUNK : stage); s <<= 1) {
             for (uint step_ = min(s, WELD_SORT_CHUNK) / 2u; step_ > 0u; step_ >>= 1) {
                 barrier();
                 for (uint i = lane; i < WELD_SORT_CHUNK / 2u; i += EMIT_GROUP) {
-                    uint low = i & (step_ - 1u), p = ((i - low) << 1u) | low, q = p + step_;
+                    uint low = i & (step_ - 1u), p = ((i - low) << 1u) | low, q = weld_sort_partner(p, s, step_);
                     uvec4 a = weld_chunk[p], b = weld_chunk[q];
-                    if (weld_record_less(b, a) == (((base_ + p) & s) == 0u)) {
+                    if (weld_record_less(b, a)) {
                         weld_chunk[p] = b;
                         weld_chunk[q] = a;
                     }
@@ -2541,7 +2548,7 @@ void ctess_weld_sort_local() {
             }
         }
         barrier();
-        for (uint i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) weld_store_record(base_ + i, weld_chunk[i]);
+        for (uint i = lane; i < WELD_SORT_CHUNK && base_ + i < n; i += EMIT_GROUP) weld_store_record(base_ + i, weld_chunk[i]);
         barrier();
     }
 }

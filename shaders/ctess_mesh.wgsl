@@ -2667,31 +2667,38 @@ fn ctess_weld_keys(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroup
     }
 }
 
-// Sorted weld pass 2, one compare-exchange step of the bitonic sort (stage WELD_SORT_STAGE, step WELD_SORT_STEP,
-// written by the host before each dispatch; steps of at least WELD_SORT_CHUNK, the smaller ones in
-// ctess_weld_sort_local), grid-stride over the record pairs: no invocation loops long.
+// The bitonic network with every comparator ascending (docs/shaders.md, "One sort over the mesh"): the first step
+// of a stage compares each block's halves mirrored (p with p ^ (stage - 1)), the others p with p + step. A record
+// past the count then acts as +inf and never moves, so the records need no padding to a power of two.
+fn weld_sort_partner(p: u32, stage: u32, step_: u32) -> u32 {
+    if (step_ * 2u == stage) { return p ^ (stage - 1u); }
+    return p + step_;
+}
+
+// Sorted weld pass 2, one compare-exchange step (stage WELD_SORT_STAGE, step WELD_SORT_STEP, written by the host
+// before each dispatch; steps of at least WELD_SORT_CHUNK, the smaller ones in ctess_weld_sort_local), grid-stride
+// over the records: no invocation loops long.
 @compute @workgroup_size(EMIT_GROUP)
 fn ctess_weld_sort_step(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
     let n = weld[WELD_SORT_RECORDS];
     let stage = weld[WELD_SORT_STAGE];
     let step_ = weld[WELD_SORT_STEP];
-    for (var i = gid.x; i < n / 2u; i += groups.x * EMIT_GROUP) {
-        let low = i & (step_ - 1u);
-        let p = ((i - low) << 1u) | low;
-        let q = p + step_;
+    for (var p = gid.x; p < n; p += groups.x * EMIT_GROUP) {
+        let q = weld_sort_partner(p, stage, step_);
+        if ((p & step_) != 0u || q >= n) { continue; }
         let a = weld_load_record(p);
         let b = weld_load_record(q);
-        if (weld_record_less(b, a) == ((p & stage) == 0u)) {
+        if (weld_record_less(b, a)) {
             weld_store_record(p, b);
             weld_store_record(q, a);
         }
     }
 }
 
-// Sorted weld pass 2b, a workgroup per chunk of WELD_SORT_CHUNK records in workgroup memory: with WELD_SORT_STAGE 0
-// every stage up to the chunk (each chunk sorted, alternately ascending and descending as the network has it),
-// else the steps below the chunk of that stage (the host runs the larger steps with ctess_weld_sort_step): the
-// same network, a dispatch for what would be up to log2(WELD_SORT_CHUNK) + 1 of them.
+// Sorted weld pass 2b, a workgroup per chunk of WELD_SORT_CHUNK records in workgroup memory (the last one padded
+// with +inf): with WELD_SORT_STAGE 0 every stage up to the chunk (each chunk sorted), else the steps below the
+// chunk of that stage (the host runs the larger steps with ctess_weld_sort_step): the same network, a dispatch for
+// what would be up to log2(WELD_SORT_CHUNK) + 1 of them.
 var<workgroup> weld_chunk: array<vec4<u32>, WELD_SORT_CHUNK>;
 // The records and the stage, the same for every lane: the loops' barriers depend on them (workgroupUniformLoad, as
 // ctess_weld_count's weld_uniform), a variable each.
@@ -2707,19 +2714,23 @@ fn ctess_weld_sort_local(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_wor
     }
     let n = workgroupUniformLoad(&weld_sort_count);
     let stage = workgroupUniformLoad(&weld_sort_stage);
-    for (var chunk = wid.x; chunk < n / WELD_SORT_CHUNK; chunk += groups.x) {
+    for (var chunk = wid.x; chunk * WELD_SORT_CHUNK < n; chunk += groups.x) {
         let base_ = chunk * WELD_SORT_CHUNK;
-        for (var i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) { weld_chunk[i] = weld_load_record(base_ + i); }
+        for (var i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) {
+            var r = vec4<u32>(0xFFFFFFFFu);
+            if (base_ + i < n) { r = weld_load_record(base_ + i); }
+            weld_chunk[i] = r;
+        }
         for (var s = select(stage, 2u, stage == 0u); s <= select(stage, WELD_SORT_CHUNK, stage == 0u); s <<= 1u) {
             for (var step_ = min(s, WELD_SORT_CHUNK) / 2u; step_ > 0u; step_ >>= 1u) {
                 workgroupBarrier();
                 for (var i = lane; i < WELD_SORT_CHUNK / 2u; i += EMIT_GROUP) {
                     let low = i & (step_ - 1u);
                     let p = ((i - low) << 1u) | low;
-                    let q = p + step_;
+                    let q = weld_sort_partner(p, s, step_);
                     let a = weld_chunk[p];
                     let b = weld_chunk[q];
-                    if (weld_record_less(b, a) == (((base_ + p) & s) == 0u)) {
+                    if (weld_record_less(b, a)) {
                         weld_chunk[p] = b;
                         weld_chunk[q] = a;
                     }
@@ -2727,7 +2738,7 @@ fn ctess_weld_sort_local(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_wor
             }
         }
         workgroupBarrier();
-        for (var i = lane; i < WELD_SORT_CHUNK; i += EMIT_GROUP) { weld_store_record(base_ + i, weld_chunk[i]); }
+        for (var i = lane; i < WELD_SORT_CHUNK && base_ + i < n; i += EMIT_GROUP) { weld_store_record(base_ + i, weld_chunk[i]); }
         workgroupBarrier();
     }
 }

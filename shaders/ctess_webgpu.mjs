@@ -68,17 +68,18 @@ export function weldEdgeList(meshIndices, triangleCount, quadCount, vertexCount)
 // rank blocks and binding 7's words, as rt::gpu::weld_sort_records, weld_rank_blocks and weld_sorted_buffer_words
 // (shader_interface.hpp) compute them, from the layout's constants C. slots and triangles: the unwelded totals.
 export function weldSortedSizes(C, { edges, patches, meshVertices, slots, triangles }) {
-    // A power of two, at least the slots and WELD_SORT_CHUNK, and enough words (WELD_RECORD_WORDS each) for a flag per
-    // unwelded triangle.
-    const need = Math.max(slots, Math.ceil(triangles / C.WELD_RECORD_WORDS));
-    let records = C.WELD_SORT_CHUNK;
-    while (records < need) records *= 2;
+    // The slots, or more where the triangles' flags (a word each, WELD_RECORD_WORDS to a record) need the room; the
+    // network treats the records past them as +inf. width: the network's, a power of two, at least the records and
+    // WELD_SORT_CHUNK.
+    const records = Math.max(slots, Math.ceil(triangles / C.WELD_RECORD_WORDS), 1);
+    let width = C.WELD_SORT_CHUNK;
+    while (width < records) width *= 2;
     const blocks = Math.ceil(Math.max(records, triangles) / C.WELD_RANK_BLOCK);
     // The header, edges and patches, a writer word per id, a map word and two words of base weights per slot, the
     // records and two words per rank block.
     const words = C.WELD_HEADER_WORDS + edges * C.WELD_EDGE_WORDS + patches * C.WELD_PATCH_WORDS + meshVertices + 4 * slots +
                   C.WELD_RECORD_WORDS * records + 2 * blocks;
-    return { records, blocks, words };
+    return { records, width, blocks, words };
 }
 
 export class MeshPipeline {
@@ -522,15 +523,15 @@ export class MeshPipeline {
             // The bitonic network (rt::gpu::weld_sort_dispatches): the stages up to a chunk in workgroup memory
             // (stage word 0), then each larger stage's steps of a chunk or more over binding 7 and the rest in
             // workgroup memory again.
-            const records = sizes.records, chunks = Math.min(records / C.WELD_SORT_CHUNK, maxGroups), sortWords = [], sort = [];
+            const records = sizes.records, chunks = grid(records, C.WELD_SORT_CHUNK), sortWords = [], sort = [];
             const sortWord = (w, value) => { sort.push({ w, at: sortWords.length }); sortWords.push(value); };
             sortWord(C.WELD_SORT_STAGE, 0);
             sort.push([sortLocal, chunks]);
-            for (let stage = 2 * C.WELD_SORT_CHUNK; stage <= records; stage *= 2) {
+            for (let stage = 2 * C.WELD_SORT_CHUNK; stage <= sizes.width; stage *= 2) {
                 sortWord(C.WELD_SORT_STAGE, stage);
                 for (let step = stage / 2; step >= C.WELD_SORT_CHUNK; step /= 2) {
                     sortWord(C.WELD_SORT_STEP, step);
-                    sort.push([sortStep, grid(records / 2)]);
+                    sort.push([sortStep, grid(records)]);
                 }
                 sort.push([sortLocal, chunks]);
             }

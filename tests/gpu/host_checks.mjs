@@ -78,19 +78,20 @@ const expected = [[0, 1], [0, 2], [0, 3], [0, 4], [1, 1], [1, 2], [1, 4], [2, 3]
 check(`weldEdgeList: ${list.length / 4} edges, sorted and distinct`,
       list.length === 4 * expected.length && expected.every(([lo, hi], e) => list[4 * e] === lo && list[4 * e + 1] === hi &&
                                                                           list[4 * e + 2] === 0 && list[4 * e + 3] === 0));
-// rt::gpu::weld_sort_records (a power of two, at least weld_sort_chunk = 512, the slots and a flag word per unwelded
-// triangle), weld_rank_blocks and weld_sorted_buffer_words, worked out by hand from shader_interface.hpp.
+// rt::gpu::weld_sort_records (the slots, or a flag word per unwelded triangle, 4 to a record, where that is more),
+// weld_sort_width (the network's: a power of two, at least the records and weld_sort_chunk = 512), weld_rank_blocks
+// and weld_sorted_buffer_words, worked out by hand from shader_interface.hpp.
 const sizes = (edges, patches, meshVertices, slots, triangles) => weldSortedSizes(C, { edges, patches, meshVertices, slots, triangles });
 const header = C.WELD_HEADER_WORDS + 3 * C.WELD_EDGE_WORDS + C.WELD_PATCH_WORDS + 3;
-for (const [args, records, blocks, words] of [[[3, 1, 3, 1, 1], 512, 1, header + 4 + 2048 + 2],
-                                              [[3, 1, 3, 10, 13], 512, 1, header + 40 + 2048 + 2],
-                                              [[3, 1, 3, 512, 2048], 512, 1, header + 2048 + 2048 + 2],
-                                              [[3, 1, 3, 100, 2049], 1024, 1, header + 400 + 4096 + 2],
-                                              [[3, 1, 3, 5000, 40000], 16384, 10, header + 20000 + 65536 + 20],
-                                              [[3, 1, 3, 70000, 4096], 131072, 32, header + 280000 + 524288 + 64]]) {
+for (const [args, records, width, blocks, words] of [[[3, 1, 3, 1, 1], 1, 512, 1, header + 4 + 4 + 2],
+                                                     [[3, 1, 3, 10, 13], 10, 512, 1, header + 40 + 40 + 2],
+                                                     [[3, 1, 3, 512, 2048], 512, 512, 1, header + 2048 + 2048 + 2],
+                                                     [[3, 1, 3, 100, 2049], 513, 1024, 1, header + 400 + 2052 + 2],
+                                                     [[3, 1, 3, 5000, 40000], 10000, 16384, 10, header + 20000 + 40000 + 20],
+                                                     [[3, 1, 3, 70000, 4096], 70000, 131072, 18, header + 280000 + 280000 + 36]]) {
     const got = sizes(...args);
-    check(`weldSortedSizes(${args.join(', ')}): ${got.records} records, ${got.blocks} blocks, ${got.words} words`,
-          got.records === records && got.blocks === blocks && got.words === words);
+    check(`weldSortedSizes(${args.join(', ')}): ${got.records} records, width ${got.width}, ${got.blocks} blocks, ${got.words} words`,
+          got.records === records && got.width === width && got.blocks === blocks && got.words === words);
 }
 device.destroy();
 console.log(`${failed ? 'FAILED' : 'passed'}: ${failed} failed`);

@@ -446,15 +446,16 @@ void MeshPipeline::record_sorted_weld_counts(VkCommandBuffer cmd, VkDescriptorSe
                                       grid_workgroups(records - slots, group, max_workgroups)));
     // The bitonic network: the stages up to a chunk in workgroup memory, then each larger stage's steps of a
     // chunk or more over binding 7 and the rest in workgroup memory again (rt::gpu::weld_sort_dispatches).
-    const std::uint32_t chunks = static_cast<std::uint32_t>(
-        std::min<std::uint64_t>(records / rt::gpu::weld_sort_chunk, max_workgroups));
+    const std::uint32_t chunks =
+        grid_workgroups(records, rt::gpu::weld_sort_chunk, max_workgroups); // the last one padded
     word(rt::gpu::weld_word::sort_stage, 0);
     dispatch(weld_sort_local_pass, chunks);
-    for (std::uint64_t stage = 2 * std::uint64_t{rt::gpu::weld_sort_chunk}; stage <= records; stage *= 2) {
+    const std::uint64_t width = rt::gpu::weld_sort_width(records);
+    for (std::uint64_t stage = 2 * std::uint64_t{rt::gpu::weld_sort_chunk}; stage <= width; stage *= 2) {
         word(rt::gpu::weld_word::sort_stage, static_cast<std::uint32_t>(stage));
         for (std::uint64_t step = stage / 2; step >= rt::gpu::weld_sort_chunk; step /= 2) {
             word(rt::gpu::weld_word::sort_step, static_cast<std::uint32_t>(step));
-            dispatch(weld_sort_step_pass, grid_workgroups(records / 2, group, max_workgroups));
+            dispatch(weld_sort_step_pass, grid_workgroups(records, group, max_workgroups));
         }
         dispatch(weld_sort_local_pass, chunks);
     }

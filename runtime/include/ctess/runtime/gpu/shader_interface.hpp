@@ -187,8 +187,8 @@ inline constexpr std::uint32_t status = 5;    // weld_status bits; 0 when the pa
 // The first patch of a batch of the count and triangle passes (one patch per workgroup; the host writes it
 // before each dispatch).
 inline constexpr std::uint32_t first_patch = 6;
-// The weld by one sort (weld_flag::sorted, docs/shaders.md "Welded output"): the sort's records, a power
-// of two (host: weld_sort_records), the bitonic stage and step of ctess_weld_sort_step, and which list the
+// The weld by one sort (weld_flag::sorted, docs/shaders.md "Welded output"): the sort's records (host:
+// weld_sort_records), the bitonic stage and step of ctess_weld_sort_step, and which list the
 // rank passes scan (weld_rank_mode; the host writes these three before each dispatch), and the rank scan's
 // total.
 inline constexpr std::uint32_t sort_records = 7;
@@ -246,12 +246,17 @@ inline constexpr std::uint32_t weld_record_words = 4;
 // and each later stage's steps below it (docs/shaders.md, "One sort over the mesh").
 inline constexpr std::uint32_t weld_sort_chunk = 512;
 inline constexpr std::uint32_t weld_rank_block = 4096; // items per workgroup of the rank passes (64 x 64)
-// The sort's records: a power of two, at least the slots and weld_sort_chunk, and enough words
-// (weld_record_words each) for one flag per unwelded triangle afterwards.
+// The sort's records: the slots, or more where the triangles' flags (one word each, weld_record_words to a
+// record) need the room afterwards. The network treats the records past them as +inf (ctess_weld_sort_step).
 constexpr std::uint64_t weld_sort_records(std::uint64_t slots, std::uint64_t triangles) {
-    std::uint64_t need = slots > (triangles + 3) / 4 ? slots : (triangles + 3) / 4, n = weld_sort_chunk;
-    while (n < need) n *= 2;
-    return n;
+    const std::uint64_t flags = (triangles + weld_record_words - 1) / weld_record_words;
+    return slots > flags ? slots : flags > 0 ? flags : 1;
+}
+// The bitonic network's width for n records: a power of two, at least n and weld_sort_chunk.
+constexpr std::uint64_t weld_sort_width(std::uint64_t n) {
+    std::uint64_t width = weld_sort_chunk;
+    while (width < n) width *= 2;
+    return width;
 }
 constexpr std::uint64_t weld_rank_blocks(std::uint64_t slots, std::uint64_t triangles) {
     const std::uint64_t records = weld_sort_records(slots, triangles);
@@ -267,12 +272,12 @@ constexpr std::uint64_t weld_sorted_buffer_words(std::uint64_t edges, std::uint6
            mesh_vertices + slots * 4 + weld_record_words * weld_sort_records(slots, triangles) +
            2 * weld_rank_blocks(slots, triangles);
 }
-// The dispatches of the bitonic sort of n records (a power of two, at least weld_sort_chunk): one
-// ctess_weld_sort_local for the stages up to the chunk, then for each larger stage its steps of a chunk or
-// more (ctess_weld_sort_step) and one ctess_weld_sort_local for the rest.
+// The dispatches of the bitonic sort of n records: one ctess_weld_sort_local for the stages up to the chunk,
+// then for each larger stage up to weld_sort_width(n) its steps of a chunk or more (ctess_weld_sort_step) and
+// one ctess_weld_sort_local for the rest.
 constexpr std::uint32_t weld_sort_dispatches(std::uint64_t n) {
     std::uint32_t dispatches = 1, steps = 0;
-    for (std::uint64_t stage = 2 * std::uint64_t{weld_sort_chunk}; stage <= n; stage *= 2)
+    for (std::uint64_t stage = 2 * std::uint64_t{weld_sort_chunk}; stage <= weld_sort_width(n); stage *= 2)
         dispatches += ++steps + 1;
     return dispatches;
 }
