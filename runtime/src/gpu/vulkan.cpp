@@ -80,7 +80,7 @@ constexpr unsigned split_roots_pass = 10, split_count_pass = 11, split_scan_pass
 constexpr unsigned weld_edges_pass = 16, weld_edge_scan_pass = 17, weld_count_pass = 18,
                    weld_writers_pass = 19, weld_scan_pass = 20, weld_triangles_pass = 21,
                    weld_lone_vertices_pass = 22;
-// The split pattern's weld passes.
+// The weld by one sort over the mesh: its passes.
 constexpr unsigned weld_keys_pass = 23, weld_sort_step_pass = 24, weld_rank_blocks_pass = 25,
                    weld_rank_scan_pass = 26, weld_rank_write_pass = 27, weld_keep_pass = 28,
                    weld_owner_counts_pass = 29, weld_sorted_triangles_pass = 30, weld_sort_local_pass = 31;
