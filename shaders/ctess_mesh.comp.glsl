@@ -2101,12 +2101,18 @@ uint weld_place(WeldPatch wp, uint side, uvec2 d, out uvec3 place, out uvec2 key
     return 1u;
 }
 
+// Slot i's pattern point and its half (half B's slots after half A's).
+uvec2 weld_slot_point(WeldPatch wp, uint i, out uint side) {
+    side = i < wp.counts_a.x ? 0u : 1u;
+    uint local = side == 0u ? i : i - wp.counts_a.x;
+    return uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+}
+
 // Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key;
 // shared slots get key (~0, ~0), which sorts last.
 uint weld_slot(WeldPatch wp, uint i, out uvec2 key) {
-    uint side = i < wp.counts_a.x ? 0u : 1u;
-    uint local = side == 0u ? i : i - wp.counts_a.x;
-    uvec2 d = uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+    uint side;
+    uvec2 d = weld_slot_point(wp, i, side);
     uvec3 place;
     uint kind = weld_place(wp, side, d, place, key);
     if (kind == 0u) return place.x;
@@ -2480,8 +2486,8 @@ void ctess_weld_keys() {
         if (!split_) {
             if (!weld_load(item, wp)) continue;
             for (uint i = gl_LocalInvocationID.x; i < wp.vertices; i += gl_WorkGroupSize.x) {
-                uint side = i < wp.counts_a.x ? 0u : 1u, local = side == 0u ? i : i - wp.counts_a.x;
-                uvec2 d = uniform_pattern() ? uniform_vertex(wp.words[side], local) : patch_vertex(side == 0u ? wp.halves[0] : wp.halves[1], local);
+                uint side;
+                uvec2 d = weld_slot_point(wp, i, side);
                 weld_key(wp, item, side, d, wp.first + i);
             }
             continue;
@@ -2731,7 +2737,7 @@ void emit_vertices(bool quad_pass, bool displaced, bool vector_) {
         uint rec = t * PATCH_WORDS;
         uint count = split_ ? patches[leaf + NODE_VERTICES] : patches[rec + REC_VERTEX_COUNT];
         if (count == 0u) continue;
-        uint first_interior = weld_ ? weld[weld_patch(t) + WPATCH_FIRST_VERTEX] : 0u;
+        uint first_interior = weld_ && !sorted_ ? weld[weld_patch(t) + WPATCH_FIRST_VERTEX] : 0u;
         bool quad = quad_pass;
         uint rot = patches[rec + REC_ROTATION];
         // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a

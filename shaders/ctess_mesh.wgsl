@@ -2192,14 +2192,20 @@ fn weld_place(wp: ptr<function, WeldPatch>, side: u32, d_in: vec2<u32>, place: p
     return 1u;
 }
 
+// Slot i's pattern point and its half (half B's slots after half A's).
+fn weld_slot_point(wp: ptr<function, WeldPatch>, i: u32, side: ptr<function, u32>) -> vec2<u32> {
+    let counts_a = (*wp).counts_a;
+    *side = select(1u, 0u, i < counts_a.x);
+    let local = select(i - counts_a.x, i, *side == 0u);
+    if (uniform_pattern()) { return uniform_vertex((*wp).words[*side], local); }
+    return patch_vertex(&(*wp).halves[*side], local);
+}
+
 // Slot i's shared id (a corner's mesh vertex, an edge point's id), or WELD_INTERIOR with its domain point in key;
 // shared slots get key (~0, ~0), which sorts last.
 fn weld_slot(wp: ptr<function, WeldPatch>, i: u32, key: ptr<function, vec2<u32>>) -> u32 {
-    let counts_a = (*wp).counts_a;
-    let side = select(1u, 0u, i < counts_a.x);
-    let local = select(i - counts_a.x, i, side == 0u);
-    var d: vec2<u32>;
-    if (uniform_pattern()) { d = uniform_vertex((*wp).words[side], local); } else { d = patch_vertex(&(*wp).halves[side], local); }
+    var side: u32;
+    let d = weld_slot_point(wp, i, &side);
     var place: vec3<u32>;
     let kind = weld_place(wp, side, d, &place, key);
     if (kind == 0u) { return place.x; }
@@ -2641,10 +2647,8 @@ fn ctess_weld_keys(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroup
         if (!split_) {
             if (!weld_load(item, &wp)) { continue; }
             for (var i = lid.x; i < wp.vertices; i += EMIT_GROUP) {
-                let side = select(1u, 0u, i < wp.counts_a.x);
-                let local = select(i - wp.counts_a.x, i, side == 0u);
-                var d: vec2<u32>;
-                if (uniform_pattern()) { d = uniform_vertex(wp.words[side], local); } else { d = patch_vertex(&wp.halves[side], local); }
+                var side: u32;
+                let d = weld_slot_point(&wp, i, &side);
                 weld_key(&wp, item, side, d, wp.first + i);
             }
             continue;
@@ -2958,7 +2962,7 @@ fn emit_vertices(quad_pass: bool, displaced: bool, vector_: bool, wid: vec3<u32>
         if (split_) { count = patches[leaf + NODE_VERTICES]; }
         if (count == 0u) { continue; }
         var first_interior = 0u;
-        if (weld_) { first_interior = weld[weld_patch(t) + WPATCH_FIRST_VERTEX]; }
+        if (weld_ && !sorted_) { first_interior = weld[weld_patch(t) + WPATCH_FIRST_VERTEX]; }
         let quad = quad_pass;
         let rot = patches[rec + REC_ROTATION];
         // The corners in pattern order for a quad (q_k = mesh corner (k + rotation) % 4), in base order for a

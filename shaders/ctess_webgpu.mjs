@@ -520,9 +520,8 @@ export class MeshPipeline {
             // As record_sorted_weld_counts. The header words the host sets between passes (the sort's stage and step,
             // the rank mode) are copies from a buffer of their values, as WELD_FIRST_PATCH's: queue.writeBuffer is not
             // ordered between the dispatches of one submit.
-            // The bitonic network (rt::gpu::weld_sort_dispatches): the stages up to a chunk in workgroup memory
-            // (stage word 0), then each larger stage's steps of a chunk or more over binding 7 and the rest in
-            // workgroup memory again.
+            // The bitonic network: the stages up to a chunk in workgroup memory (stage word 0), then each larger
+            // stage's steps of a chunk or more over binding 7 and the rest in workgroup memory again.
             const records = sizes.records, chunks = grid(records, C.WELD_SORT_CHUNK), sortWords = [], sort = [];
             const sortWord = (w, value) => { sort.push({ w, at: sortWords.length }); sortWords.push(value); };
             sortWord(C.WELD_SORT_STAGE, 0);

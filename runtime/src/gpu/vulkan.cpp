@@ -445,7 +445,7 @@ void MeshPipeline::record_sorted_weld_counts(VkCommandBuffer cmd, VkDescriptorSe
     dispatch(weld_keys_pass, std::max(std::min(items, max_workgroups),
                                       grid_workgroups(records - slots, group, max_workgroups)));
     // The bitonic network: the stages up to a chunk in workgroup memory, then each larger stage's steps of a
-    // chunk or more over binding 7 and the rest in workgroup memory again (rt::gpu::weld_sort_dispatches).
+    // chunk or more over binding 7 and the rest in workgroup memory again.
     const std::uint32_t chunks =
         grid_workgroups(records, rt::gpu::weld_sort_chunk, max_workgroups); // the last one padded
     word(rt::gpu::weld_word::sort_stage, 0);

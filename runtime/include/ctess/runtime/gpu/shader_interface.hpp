@@ -272,15 +272,6 @@ constexpr std::uint64_t weld_sorted_buffer_words(std::uint64_t edges, std::uint6
            mesh_vertices + slots * 4 + weld_record_words * weld_sort_records(slots, triangles) +
            2 * weld_rank_blocks(slots, triangles);
 }
-// The dispatches of the bitonic sort of n records: one ctess_weld_sort_local for the stages up to the chunk,
-// then for each larger stage up to weld_sort_width(n) its steps of a chunk or more (ctess_weld_sort_step) and
-// one ctess_weld_sort_local for the rest.
-constexpr std::uint32_t weld_sort_dispatches(std::uint64_t n) {
-    std::uint32_t dispatches = 1, steps = 0;
-    for (std::uint64_t stage = 2 * std::uint64_t{weld_sort_chunk}; stage <= weld_sort_width(n); stage *= 2)
-        dispatches += ++steps + 1;
-    return dispatches;
-}
 
 // Workgroups of each pass for patch_count patches, at most max_workgroups per dispatch (the passes stride
 // over the rest; rt::max_dispatch_workgroups is the one-dispatch limit every Vulkan and WebGPU device

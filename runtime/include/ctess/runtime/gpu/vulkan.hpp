@@ -153,7 +153,8 @@ class MeshPipeline {
     // The weld by one sort over the mesh (rt::gpu::weld_flag::sorted in the params; docs/shaders.md, "Welded
     // output", "One sort"), which Pattern::uniform_split always takes and the other patterns when a patch has
     // more than rt::gpu::weld_max_patch_slots slots: after record_counts (record_split_counts), each slot's
-    // record, a bitonic sort (rt::gpu::weld_sort_dispatches(records) dispatches, each after the host writes
+    // record, a bitonic sort (one dispatch in workgroup memory, then per stage of the network past
+    // rt::gpu::weld_sort_chunk its larger steps and one more in workgroup memory, each after the host writes
     // its stage and step into binding 7's header), the distinct keys ranked, the kept triangles flagged and
     // ranked, each edge's and patch's counts, the prefix sums and each id's writer; binding 7 then holds what
     // record_weld_counts leaves there. Binding 7 is rt::gpu::weld_sorted_buffer_words(edges, patch_count,
