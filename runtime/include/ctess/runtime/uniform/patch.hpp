@@ -135,17 +135,23 @@ class UniformPatch {
     // The bulk path (docs/algorithm.md §3.4): canonical_vertex's arithmetic without a branch or a division
     // per vertex, the copies read back from the output, the triangles in one pass with a running copy rank.
     void emit_vertices(uniform::Point* out) const noexcept {
+        // The members as locals: out is uint32_t pairs too, so the compiler would reload them after every
+        // store (and the interior loop would not vectorise).
+        const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
+        const std::uint32_t boundary = f0 + f1 + f2, interior = distinct_ - boundary, copies = copies_;
+        const std::uint32_t* const interior_words = interior_;
+        const std::uint8_t* const copy_sources = copy_sources_;
         // Output coordinate k is weight source_[k + 1] of (one - u - v, u, v), picked by masks (no branch).
         std::uint32_t mask[2][3];
         for (int k = 0; k < 2; ++k)
             for (std::uint8_t c = 0; c < 3; ++c) mask[k][c] = source_[k + 1] == c ? ~0u : 0u;
-        const auto put = [&](uniform::Point* d, std::uint32_t u, std::uint32_t v) {
+        const std::uint32_t m00 = mask[0][0], m01 = mask[0][1], m02 = mask[0][2], m10 = mask[1][0],
+                            m11 = mask[1][1], m12 = mask[1][2];
+        const auto put = [=](uniform::Point* d, std::uint32_t u, std::uint32_t v) {
             const std::uint32_t w = uniform::fixed_one - u - v;
-            *d = {(w & mask[0][0]) | (u & mask[0][1]) | (v & mask[0][2]),
-                  (w & mask[1][0]) | (u & mask[1][1]) | (v & mask[1][2])};
+            *d = {(w & m00) | (u & m01) | (v & m02), (w & m10) | (u & m11) | (v & m12)};
         };
         // The boundary as uniform::boundary_vertex numbers it: e0 (p, 0), e1 (one - p, p), e2 (0, p) from v2.
-        const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
         const std::uint32_t r0 = uniform::edge_reciprocal(f0), r1 = uniform::edge_reciprocal(f1),
                             r2 = uniform::edge_reciprocal(f2);
         uniform::Point* d = out;
@@ -155,12 +161,12 @@ class UniformPatch {
             put(d++, uniform::fixed_one - p, p);
         }
         for (std::uint32_t k = 0; k < f2; ++k) put(d++, 0, uniform::edge_parameter(f2 - k, f2, r2));
-        const std::uint32_t boundary = f0 + f1 + f2;
-        for (std::uint32_t j = 0; j < distinct_ - boundary; ++j) {
-            const std::uint32_t word = interior_[j];
-            put(d++, word & 0xFFFFu, word >> 16);
+        for (std::uint32_t j = 0; j < interior; ++j) {
+            const std::uint32_t word = interior_words[j];
+            put(d + j, word & 0xFFFFu, word >> 16);
         }
-        for (std::uint32_t k = 0; k < copies_; ++k) out[distinct_ + k] = out[copy_sources_[k]];
+        uniform::Point* const copy = out + boundary + interior;
+        for (std::uint32_t k = 0; k < copies; ++k) copy[k] = out[copy_sources[k]];
     }
 
     // The stored index bytes widened, then the copied triangles' first indices overwritten in triangle order
