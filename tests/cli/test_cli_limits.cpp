@@ -125,38 +125,57 @@ TEST_CASE("a failed write leaves the previous file intact and no temporary behin
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE(
-    "ctess mesh --out .glb (streamed to the file): a failed write keeps the previous file, no temporary",
-    "[cli][limits]") {
-    const std::string dir = temp_path("atomic_glb");
-    std::filesystem::create_directories(dir);
-    const std::string model = dir + "/tetra.obj";
-    { std::ofstream(model) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"; }
-    const std::string out = dir + "/t.glb";
-    { std::ofstream(out) << "previous content\n"; }
-    // About 50 KB of .glb at factor 16 against a 4 KiB file-size limit: write() fails with EFBIG part-way.
-    const std::string mesh = std::string(CTESS_CLI) + " mesh --in " + model + " --factor 16 --out ";
-    const Run r = run_shell("trap '' XFSZ; ulimit -f 4; " + mesh + out + " 2>&1");
-    CHECK(r.exit_code == 1);
-    CHECK(contains(r.out, "cannot write '" + out + "': File too large"));
-    CHECK(read_file(out) == "previous content\n");
-    CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) ==
-          2);
-    // A device is written in place: a full one is the OS reason.
-    const std::string full = dir + "/full.glb";
-    std::filesystem::create_symlink("/dev/full", full);
-    const Run f = run_shell(mesh + full + " 2>&1");
-    CHECK(f.exit_code == 1);
-    CHECK(contains(f.out, "No space left on device"));
-    // Without the limit the file is replaced whole: a binary glTF header and its stated length.
-    REQUIRE(run_shell(mesh + out).exit_code == 0);
-    const std::string glb = read_file(out);
-    REQUIRE(glb.size() > 12);
-    CHECK(glb.substr(0, 4) == "glTF");
-    std::uint32_t length = 0;
-    std::memcpy(&length, glb.data() + 8, 4);
-    CHECK(length == glb.size());
-    std::filesystem::remove_all(dir);
+TEST_CASE("ctess mesh --out .glb and .ply (streamed to the file): a failed write keeps the previous file, no "
+          "temporary",
+          "[cli][limits]") {
+    for (const std::string format : {"glb", "ply"}) {
+        INFO(format);
+        const std::string dir = temp_path("atomic_" + format);
+        std::filesystem::create_directories(dir);
+        const std::string model = dir + "/tetra.obj";
+        {
+            std::ofstream(model)
+                << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+        }
+        const std::string out = dir + "/t." + format;
+        { std::ofstream(out) << "previous content\n"; }
+        // About 50 KB of output at factor 16 against a 4 KiB file-size limit: write() fails with EFBIG
+        // part-way.
+        const std::string mesh = std::string(CTESS_CLI) + " mesh --in " + model + " --factor 16 --out ";
+        const Run r = run_shell("trap '' XFSZ; ulimit -f 4; " + mesh + out + " 2>&1");
+        CHECK(r.exit_code == 1);
+        CHECK(contains(r.out, "cannot write '" + out + "': File too large"));
+        CHECK(read_file(out) == "previous content\n");
+        CHECK(std::distance(std::filesystem::directory_iterator(dir),
+                            std::filesystem::directory_iterator()) == 2);
+        // A device is written in place: a full one is the OS reason.
+        const std::string full = dir + "/full." + format;
+        std::filesystem::create_symlink("/dev/full", full);
+        const Run f = run_shell(mesh + full + " 2>&1");
+        CHECK(f.exit_code == 1);
+        CHECK(contains(f.out, "No space left on device"));
+        // Without the limit the file is replaced whole: its header and its stated length.
+        REQUIRE(run_shell(mesh + out).exit_code == 0);
+        const std::string file = read_file(out);
+        if (format == "glb") {
+            REQUIRE(file.size() > 12);
+            CHECK(file.substr(0, 4) == "glTF");
+            std::uint32_t length = 0;
+            std::memcpy(&length, file.data() + 8, 4);
+            CHECK(length == file.size());
+        } else {
+            // 32 bytes a vertex, 13 a face, after the header's element counts.
+            const std::size_t end = file.find("end_header\n");
+            REQUIRE(end != std::string::npos);
+            const std::size_t v = file.find("element vertex "), t = file.find("element face ");
+            REQUIRE((v != std::string::npos && t != std::string::npos));
+            const std::size_t vertices = std::stoul(file.substr(v + 15)),
+                              faces = std::stoul(file.substr(t + 13));
+            CHECK(vertices > 0);
+            CHECK(file.size() == end + 11 + 32 * vertices + 13 * faces);
+        }
+        std::filesystem::remove_all(dir);
+    }
 }
 
 TEST_CASE("ctess <command> --help prints that command's usage", "[cli]") {

@@ -607,8 +607,10 @@ int run_mesh(int argc, char** argv) {
         const std::string comment = fmt::format("ctess mesh --in {} --pattern {}", in, pattern);
         if (format == "glb")
             write_stream(out, [&](std::ostream& stream) { write_glb(mesh, comment, stream); });
+        else if (format == "ply")
+            write_stream(out, [&](std::ostream& stream) { write_ply(mesh, comment, stream); });
         else
-            write_text(out, format == "obj" ? mesh_to_obj(mesh, comment) : mesh_to_ply(mesh, comment));
+            write_text(out, mesh_to_obj(mesh, comment));
         seconds.write = seconds_since(start);
     }
     if (stats) {

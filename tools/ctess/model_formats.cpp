@@ -52,18 +52,20 @@ std::string mesh_to_obj(const OutputMesh& mesh, std::string_view comment) {
     return out;
 }
 
-std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment) {
-    std::string out = fmt::format("ply\nformat binary_little_endian 1.0\ncomment {}\nelement vertex {}\n"
-                                  "property float x\nproperty float y\nproperty float z\n"
-                                  "property float nx\nproperty float ny\nproperty float nz\n"
-                                  "property float s\nproperty float t\nelement face {}\n"
-                                  "property list uchar uint vertex_indices\nend_header\n",
-                                  one_line(comment), mesh.vertex_count(), mesh.triangle_count());
-    // The vertices as they are (x y z nx ny nz s t, float32), then per face a count byte and three uint32,
-    // appended in blocks (no zeroing of the whole string first).
-    out.reserve(out.size() + mesh.vertices.size() * 4 + mesh.triangle_count() * 13);
-    out.append(reinterpret_cast<const char*>(mesh.vertices.data()), mesh.vertices.size() * 4);
-    constexpr std::size_t block = 1024;
+void write_ply(const OutputMesh& mesh, std::string_view comment, std::ostream& out) {
+    const std::string header =
+        fmt::format("ply\nformat binary_little_endian 1.0\ncomment {}\nelement vertex {}\n"
+                    "property float x\nproperty float y\nproperty float z\n"
+                    "property float nx\nproperty float ny\nproperty float nz\n"
+                    "property float s\nproperty float t\nelement face {}\n"
+                    "property list uchar uint vertex_indices\nend_header\n",
+                    one_line(comment), mesh.vertex_count(), mesh.triangle_count());
+    out.write(header.data(), static_cast<std::streamsize>(header.size()));
+    // The vertices as they are (x y z nx ny nz s t, float32), one write; then per face a count byte and three
+    // uint32, in blocks.
+    out.write(reinterpret_cast<const char*>(mesh.vertices.data()),
+              static_cast<std::streamsize>(mesh.vertices.size() * 4));
+    constexpr std::size_t block = 4096;
     char faces[13 * block];
     for (std::size_t t = 0; t < mesh.triangle_count(); t += block) {
         const std::size_t count = std::min(block, mesh.triangle_count() - t);
@@ -71,9 +73,8 @@ std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment) {
             faces[13 * k] = 3;
             std::memcpy(&faces[13 * k + 1], &mesh.triangles[3 * (t + k)], 12);
         }
-        out.append(faces, 13 * count);
+        out.write(faces, static_cast<std::streamsize>(13 * count));
     }
-    return out;
 }
 
 void write_glb(const OutputMesh& mesh, std::string_view comment, std::ostream& out) {

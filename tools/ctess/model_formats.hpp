@@ -41,7 +41,9 @@ struct OutputMesh {
 
 // `comment` becomes the file's comment (OBJ, PLY) or asset.generator (glTF); one line, no newlines.
 std::string mesh_to_obj(const OutputMesh& mesh, std::string_view comment);
-std::string mesh_to_ply(const OutputMesh& mesh, std::string_view comment);
+// PLY is written to a stream (write_stream) too: its binary blocks go to the file as they are, without a copy
+// of the whole file in memory first.
+void write_ply(const OutputMesh& mesh, std::string_view comment, std::ostream& out);
 // The .glb is written to a stream (write_stream: into the file, without a copy of it in memory).
 void write_glb(const OutputMesh& mesh, std::string_view comment, std::ostream& out);
 
