@@ -137,6 +137,9 @@ struct UniformSplit::Impl {
     struct Counter {
         std::uint64_t vertices = 0, triangles = 0;
         std::uint32_t subpatches = 0, depth = 0;
+        // The first leaves' corners and rounded factors (UniformSplit::leaf_list_): emit() reads them back
+        // when the walk has no more than the list holds.
+        std::span<UniformSplit::ListedLeaf> list;
         // A leaf's counts depend on its rounded factors only: the last leaf's are reused when they repeat
         // (the leaves of a regular split all round alike).
         std::uint32_t last_factors = 0; // leaf_key() of the last leaf; 0: none
@@ -149,6 +152,12 @@ struct UniformSplit::Impl {
             }
             vertices += last_counts.vertices;
             triangles += last_counts.triangles;
+            if (subpatches < list.size()) {
+                UniformSplit::ListedLeaf& l = list[subpatches];
+                for (int c = 0; c < 3; ++c)
+                    for (int k = 0; k < 2; ++k) l.corner[c][k] = static_cast<std::uint32_t>(s.corner[c][k]);
+                l.factors = r;
+            }
             ++subpatches;
             depth = s.depth > depth ? s.depth : depth;
         }
@@ -170,9 +179,10 @@ struct UniformSplit::Impl {
         Uninitialised<uniform::Point, bounds.provoking> local;
 
         // Every leaf is checked against what is left of the spans, not against counts() (§3.5).
-        void leaf(const Sub& s, const Impl& self) {
+        void leaf(const Sub& s, const Impl& self) { listed_leaf(s, self.leaf_factors(s), self); }
+        // A leaf of rounded factors r: map_points reads s's corners only.
+        void listed_leaf(const Sub& s, const std::array<std::uint32_t, 3>& r, const Impl& self) {
             if (!ok) return;
-            const std::array<std::uint32_t, 3> r = self.leaf_factors(s);
             const std::uint32_t key = leaf_key(r);
             if (key == last_factors) {
                 const Counts n = last_counts;
@@ -314,6 +324,14 @@ struct UniformSplit::Impl {
     template <class Visitor>
     void walk(Visitor& visitor) const noexcept {
         visit(visitor, root());
+    }
+    // The Writer over a split's leaf list (UniformSplit::leaf_list_) instead of the walk that listed them.
+    void write_listed(Writer& w, std::span<const UniformSplit::ListedLeaf> leaves) const noexcept {
+        Sub s{};
+        for (const UniformSplit::ListedLeaf& l : leaves) {
+            for (int c = 0; c < 3; ++c) s.corner[c] = Point{l.corner[c][0], l.corner[c][1]};
+            w.listed_leaf(s, l.factors, *this);
+        }
     }
     Sub root() const noexcept {
         const std::int64_t one = uniform_split_fixed_one;
@@ -775,7 +793,9 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
         uniform_split_depth_limit(n, static_cast<std::uint32_t>(std::max({root_[0], root_[1], root_[2]})));
     const Impl impl = make_impl();
     Impl::Counter c;
+    c.list = leaf_list_;
     impl.walk(c);
+    listed_leaves_ = c.subpatches <= listed_leaf_capacity ? c.subpatches : 0u;
     std::uint64_t vertices = c.vertices;
     if (impl.welded() && c.depth > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
         std::uint64_t boundary = 0;
@@ -862,7 +882,10 @@ bool UniformSplit::emit_leaves(std::span<point_type> vertices,
         return false;
     const Impl impl = make_impl();
     Impl::Writer w{vertices, indices};
-    impl.walk(w);
+    if (listed_leaves_ != 0)
+        impl.write_listed(w, std::span<const ListedLeaf>(leaf_list_.data(), listed_leaves_));
+    else
+        impl.walk(w);
     return w.ok && w.v == leaf_counts_.vertices && w.t == leaf_counts_.index_count();
 }
 
@@ -881,7 +904,11 @@ bool emit_checked(const UniformSplit& split, std::span<UniformSplit::point_type>
         return w.ok && w.next == counts.vertices && w.t == counts.index_count();
     }
     UniformSplit::Impl::Writer w{vertices, indices};
-    impl.walk(w);
+    if (split.listed_leaves_ != 0)
+        impl.write_listed(
+            w, std::span<const UniformSplit::ListedLeaf>(split.leaf_list_.data(), split.listed_leaves_));
+    else
+        impl.walk(w);
     return w.ok && w.v == counts.vertices && w.t == counts.index_count();
 }
 

@@ -231,6 +231,17 @@ class UniformSplit {
     Counts counts_, leaf_counts_;
     std::uint32_t subpatches_ = 0, depth_ = 0, depth_limit_ = 2;
     bool overflow_ = false; // counts beyond 32 bits: counts() {0, 0}, emit() false
+    // The leaves of a split of up to listed_leaf_capacity leaves, in walk order, as the counting walk met
+    // them: their corners on the root (units of 65534^2, which fit 32 bits) and rounded factors. emit()
+    // writes them without walking the tree again (docs/algorithm.md §3.5, "Leaf list"); listed_leaves_ = 0:
+    // walk.
+    struct ListedLeaf {
+        std::array<std::array<std::uint32_t, 2>, 3> corner;
+        std::array<std::uint32_t, 3> factors;
+    };
+    static constexpr std::uint32_t listed_leaf_capacity = 16;
+    std::array<ListedLeaf, listed_leaf_capacity> leaf_list_{};
+    std::uint32_t listed_leaves_ = 0;
 };
 
 static_assert(TessPatch<UniformSplit>);
