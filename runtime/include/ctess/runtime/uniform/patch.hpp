@@ -136,7 +136,7 @@ class UniformPatch {
     // per vertex, the copies read back from the output, the triangles in one pass with a running copy rank.
     void emit_vertices(uniform::Point* out) const noexcept {
         // The members as locals: out is uint32_t pairs too, so the compiler would reload them after every
-        // store (and the interior loop would not vectorise).
+        // store.
         const std::uint32_t f0 = sorted_[0], f1 = sorted_[1], f2 = sorted_[2];
         const std::uint32_t boundary = f0 + f1 + f2, interior = distinct_ - boundary, copies = copies_;
         const std::uint32_t* const interior_words = interior_;
