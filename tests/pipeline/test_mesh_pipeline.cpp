@@ -3,10 +3,14 @@
 // GPU tests compare the shaders with this pipeline; here it is checked on its own.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <span>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include <ctess/cp/pattern.hpp>
@@ -199,6 +203,70 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
         CHECK(nan_out.patches[std::size_t{p} * patch_words + 7] ==
               3); // T0 on every edge: the base triangle itself
         CHECK(nan_out.patches[std::size_t{p} * patch_words + 8] == 1);
+    }
+}
+
+TEST_CASE("mesh pipeline: ranges of patches emit into the whole mesh's buffers, on two threads as one call") {
+    std::vector<Scene> scenes = {factor_sweep_grid(64, 3, rt::Surface::flat),
+                                 icosphere(2, rt::Surface::pn_triangles, 6.0f)};
+#ifdef CTESS_GPU_HAVE_MODELS
+    // PN-AEN reads each face's adjacency entries, which only differ from the face's own corners at seams.
+    scenes.push_back(split_normal_icosphere(2, rt::Surface::pn_aen, 6.0f));
+#endif
+    for (const Scene& scene : scenes) {
+        const rt::MeshView mesh = scene.view();
+        REQUIRE(mesh.quad_count == 0);
+        const std::uint32_t n = mesh.triangle_count;
+        std::vector<rt::PatchRecord> rec(n);
+        rt::PipelineTotals totals;
+        REQUIRE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, rec, totals) ==
+                rt::PipelineStatus::ok);
+        std::vector<rt::TessVertex> whole_v(totals.vertices), v(totals.vertices);
+        std::vector<std::uint32_t> whole_i(3 * std::size_t{totals.triangles}), idx(whole_i.size(), 7u);
+        REQUIRE(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, whole_v, whole_i) ==
+                rt::PipelineStatus::ok);
+        // Patches [a, b): their faces (and adjacency) from face a on, their records.
+        const auto range = [&](std::uint32_t a, std::uint32_t b) {
+            rt::MeshView r = mesh;
+            r.indices = mesh.indices + 3 * std::size_t{a};
+            r.triangle_count = b - a;
+            if (mesh.adjacency != nullptr) r.adjacency = mesh.adjacency + 12 * std::size_t{a};
+            return std::pair{r, std::span<const rt::PatchRecord>(rec).subspan(a, b - a)};
+        };
+        const std::uint32_t cut[] = {0, n / 3, n / 3, 2 * n / 3, n}; // an empty range among them
+        rt::PipelineStatus other = rt::PipelineStatus::ok;
+        std::thread second([&] {
+            for (unsigned k = 2; k < 4; ++k) {
+                const auto [view, records] = range(cut[k], cut[k + 1]);
+                if (const auto s = rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, idx);
+                    s != rt::PipelineStatus::ok)
+                    other = s;
+            }
+        });
+        for (unsigned k = 0; k < 2; ++k) {
+            const auto [view, records] = range(cut[k], cut[k + 1]);
+            CHECK(rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, idx) ==
+                  rt::PipelineStatus::ok);
+        }
+        second.join();
+        CHECK(other == rt::PipelineStatus::ok);
+        CHECK(idx == whole_i);
+        CHECK(std::memcmp(v.data(), whole_v.data(), v.size() * sizeof(rt::TessVertex)) == 0);
+        // A range is checked as a whole mesh is: offsets that do not run on from its first record's are
+        // refused, and so is a range whose end passes the spans; nothing is written.
+        std::vector<std::uint32_t> untouched(idx.size(), 9u);
+        std::vector<rt::PatchRecord> moved = rec;
+        ++moved[n / 3 + 1].first_vertex;
+        auto [view, records] = range(n / 3, n);
+        records = std::span<const rt::PatchRecord>(moved).subspan(n / 3);
+        CHECK(rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, untouched) ==
+              rt::PipelineStatus::bad_patch_record);
+        moved = rec;
+        for (std::uint32_t p = n / 3; p < n; ++p) moved[p].first_triangle += 1; // one past the index span
+        records = std::span<const rt::PatchRecord>(moved).subspan(n / 3);
+        CHECK(rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, untouched) ==
+              rt::PipelineStatus::span_too_small);
+        CHECK(std::all_of(untouched.begin(), untouched.end(), [](std::uint32_t i) { return i == 9u; }));
     }
 }
 

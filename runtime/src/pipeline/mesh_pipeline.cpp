@@ -803,7 +803,11 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
     if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), 0, 0); s != PipelineStatus::ok)
         return s;
     const auto count = static_cast<std::uint32_t>(mesh.patch_count());
-    std::uint64_t vertex_sum = 0, triangle_sum = 0;
+    // The offsets run on from the first record's: 0 for a whole mesh; a range of patches (a MeshView of its
+    // faces and their records) starts where its own first record does, so threads emit ranges into one pair
+    // of buffers. The spans are checked against the range's end.
+    std::uint64_t vertex_sum = count != 0 ? patches[0].first_vertex : 0,
+                  triangle_sum = count != 0 ? patches[0].first_triangle : 0;
     for (std::uint32_t p = 0; p < count; ++p) {
         const PatchRecord& rec = patches[p];
         Counts counts;

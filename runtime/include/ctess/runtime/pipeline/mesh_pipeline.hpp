@@ -270,7 +270,10 @@ TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const Surf
 
 // Every vertex and triangle of the mesh, at the records' offsets. Checks every record first (its counts are
 // its pattern's counts, its offsets the exclusive prefix sums, a culled patch is empty) and the spans; on
-// any failure writes nothing.
+// any failure writes nothing. A range of patches is emitted the same way: a MeshView of its faces (indices,
+// quad_indices and adjacency from its first face on) with its records, whose offsets then run on from the
+// first record's, into the whole mesh's spans; threads can emit disjoint ranges at once
+// (bench/bench_mesh.cpp, mesh_pipeline/grid10k).
 PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
                          std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
                          std::span<std::uint32_t> indices);
