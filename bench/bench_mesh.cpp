@@ -116,8 +116,8 @@ void mesh_pipeline(benchmark::State& state) {
         };
         in_parallel(threads, by_triangles, [&](std::uint32_t begin, std::uint32_t end) {
             const std::span<const rt::PatchRecord> range(patches.data() + begin, end - begin);
-            if (rt::emit_mesh(tables(), grid.view(begin, end - begin), options, range, vertices, indices) !=
-                rt::PipelineStatus::ok)
+            if (rt::emit_mesh_range(tables(), grid.view(begin, end - begin), options, range, vertices,
+                                    indices) != rt::PipelineStatus::ok)
                 ok = false;
         });
         benchmark::ClobberMemory();

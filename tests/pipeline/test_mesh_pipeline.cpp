@@ -206,17 +206,19 @@ TEST_CASE("mesh pipeline bad input: out-of-range indices cull the patch, small s
     }
 }
 
-TEST_CASE("mesh pipeline: ranges of patches emit into the whole mesh's buffers, on two threads as one call") {
-    std::vector<Scene> scenes = {factor_sweep_grid(64, 3, rt::Surface::flat),
-                                 icosphere(2, rt::Surface::pn_triangles, 6.0f)};
+TEST_CASE("mesh pipeline: emit_mesh_range writes ranges into the whole mesh's buffers, on two threads as one "
+          "call") {
+    std::vector<Scene> scenes = {
+        factor_sweep_grid(64, 3, rt::Surface::flat),
+        factor_sweep_grid(64, 5, rt::Surface::pn_triangles, 3), // triangles and quads
+        icosphere(2, rt::Surface::pn_triangles, 6.0f)};
 #ifdef CTESS_GPU_HAVE_MODELS
     // PN-AEN reads each face's adjacency entries, which only differ from the face's own corners at seams.
     scenes.push_back(split_normal_icosphere(2, rt::Surface::pn_aen, 6.0f));
 #endif
     for (const Scene& scene : scenes) {
         const rt::MeshView mesh = scene.view();
-        REQUIRE(mesh.quad_count == 0);
-        const std::uint32_t n = mesh.triangle_count;
+        const std::uint32_t n = scene.patch_count(), t = mesh.triangle_count;
         std::vector<rt::PatchRecord> rec(n);
         rt::PipelineTotals totals;
         REQUIRE(rt::setup_patches(rt::cp_tables_64, mesh, scene.options, rec, totals) ==
@@ -225,27 +227,36 @@ TEST_CASE("mesh pipeline: ranges of patches emit into the whole mesh's buffers, 
         std::vector<std::uint32_t> whole_i(3 * std::size_t{totals.triangles}), idx(whole_i.size(), 7u);
         REQUIRE(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, rec, whole_v, whole_i) ==
                 rt::PipelineStatus::ok);
-        // Patches [a, b): their faces (and adjacency) from face a on, their records.
+        // Patches [a, b): the triangles among them, the quads among them (after every triangle), their
+        // adjacency entries (12 per triangle, then 24 per quad), their records.
         const auto range = [&](std::uint32_t a, std::uint32_t b) {
+            const std::uint32_t ta = std::min(a, t), tb = std::min(b, t), first_quad = a - ta;
             rt::MeshView r = mesh;
-            r.indices = mesh.indices + 3 * std::size_t{a};
-            r.triangle_count = b - a;
-            if (mesh.adjacency != nullptr) r.adjacency = mesh.adjacency + 12 * std::size_t{a};
+            r.indices = mesh.indices + 3 * std::size_t{ta};
+            r.triangle_count = tb - ta;
+            if (mesh.quad_indices != nullptr)
+                r.quad_indices = mesh.quad_indices + 4 * std::size_t{first_quad};
+            r.quad_count = (b - tb) - first_quad;
+            if (mesh.adjacency != nullptr)
+                r.adjacency = mesh.adjacency + 12 * std::size_t{ta} + 24 * first_quad;
             return std::pair{r, std::span<const rt::PatchRecord>(rec).subspan(a, b - a)};
         };
-        const std::uint32_t cut[] = {0, n / 3, n / 3, 2 * n / 3, n}; // an empty range among them
+        // An empty range, a range across the triangles' end, one of quads only (when there are quads).
+        std::vector<std::uint32_t> cut = {0, n / 3, n / 3, 2 * n / 3, std::max(2 * n / 3, t + (n - t) / 2),
+                                          n};
         rt::PipelineStatus other = rt::PipelineStatus::ok;
         std::thread second([&] {
-            for (unsigned k = 2; k < 4; ++k) {
+            for (std::size_t k = 2; k + 1 < cut.size(); ++k) {
                 const auto [view, records] = range(cut[k], cut[k + 1]);
-                if (const auto s = rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, idx);
+                if (const auto s =
+                        rt::emit_mesh_range(rt::cp_tables_64, view, scene.options, records, v, idx);
                     s != rt::PipelineStatus::ok)
                     other = s;
             }
         });
-        for (unsigned k = 0; k < 2; ++k) {
+        for (std::size_t k = 0; k < 2; ++k) {
             const auto [view, records] = range(cut[k], cut[k + 1]);
-            CHECK(rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, idx) ==
+            CHECK(rt::emit_mesh_range(rt::cp_tables_64, view, scene.options, records, v, idx) ==
                   rt::PipelineStatus::ok);
         }
         second.join();
@@ -254,19 +265,33 @@ TEST_CASE("mesh pipeline: ranges of patches emit into the whole mesh's buffers, 
         CHECK(std::memcmp(v.data(), whole_v.data(), v.size() * sizeof(rt::TessVertex)) == 0);
         // A range is checked as a whole mesh is: offsets that do not run on from its first record's are
         // refused, and so is a range whose end passes the spans; nothing is written.
+        rt::TessVertex mark;
+        mark.u = 0x5A5A5A5Au, mark.position[0] = -7.0f;
+        std::vector<rt::TessVertex> untouched_v(v.size(), mark);
+        const std::vector<rt::TessVertex> sentinel = untouched_v;
         std::vector<std::uint32_t> untouched(idx.size(), 9u);
         std::vector<rt::PatchRecord> moved = rec;
         ++moved[n / 3 + 1].first_vertex;
         auto [view, records] = range(n / 3, n);
         records = std::span<const rt::PatchRecord>(moved).subspan(n / 3);
-        CHECK(rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, untouched) ==
+        CHECK(rt::emit_mesh_range(rt::cp_tables_64, view, scene.options, records, untouched_v, untouched) ==
               rt::PipelineStatus::bad_patch_record);
         moved = rec;
         for (std::uint32_t p = n / 3; p < n; ++p) moved[p].first_triangle += 1; // one past the index span
         records = std::span<const rt::PatchRecord>(moved).subspan(n / 3);
-        CHECK(rt::emit_mesh(rt::cp_tables_64, view, scene.options, records, v, untouched) ==
+        CHECK(rt::emit_mesh_range(rt::cp_tables_64, view, scene.options, records, untouched_v, untouched) ==
               rt::PipelineStatus::span_too_small);
+        // emit_mesh takes a whole mesh: its offsets start at 0, even with room in the spans for a shift.
+        moved = rec;
+        for (rt::PatchRecord& r : moved) ++r.first_vertex, ++r.first_triangle;
+        std::vector<rt::TessVertex> roomy_v(v.size() + 1);
+        std::vector<std::uint32_t> roomy_i(idx.size() + 3, 9u);
+        CHECK(rt::emit_mesh(rt::cp_tables_64, mesh, scene.options, moved, roomy_v, roomy_i) ==
+              rt::PipelineStatus::bad_patch_record);
         CHECK(std::all_of(untouched.begin(), untouched.end(), [](std::uint32_t i) { return i == 9u; }));
+        CHECK(std::all_of(roomy_i.begin(), roomy_i.end(), [](std::uint32_t i) { return i == 9u; }));
+        CHECK(std::memcmp(untouched_v.data(), sentinel.data(), sentinel.size() * sizeof(rt::TessVertex)) ==
+              0);
     }
 }
 

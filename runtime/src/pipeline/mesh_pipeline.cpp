@@ -799,15 +799,14 @@ void quad_corners(const MeshView& mesh, const std::uint32_t (&w)[4], std::uint32
 template <PipelineFamily F>
 PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOptions& options,
                         std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
-                        std::span<std::uint32_t> indices) {
+                        std::span<std::uint32_t> indices, bool range) {
     if (const PipelineStatus s = check_pipeline_size(mesh.patch_count(), 0, 0); s != PipelineStatus::ok)
         return s;
     const auto count = static_cast<std::uint32_t>(mesh.patch_count());
-    // The offsets run on from the first record's: 0 for a whole mesh; a range of patches (a MeshView of its
-    // faces and their records) starts where its own first record does, so threads emit ranges into one pair
-    // of buffers. The spans are checked against the range's end.
-    std::uint64_t vertex_sum = count != 0 ? patches[0].first_vertex : 0,
-                  triangle_sum = count != 0 ? patches[0].first_triangle : 0;
+    // The offsets run on from 0 for a whole mesh; a range (emit_mesh_range) starts where its first record
+    // does, so threads emit ranges into one pair of buffers. The spans are checked against the end.
+    std::uint64_t vertex_sum = range && count != 0 ? patches[0].first_vertex : 0,
+                  triangle_sum = range && count != 0 ? patches[0].first_triangle : 0;
     for (std::uint32_t p = 0; p < count; ++p) {
         const PatchRecord& rec = patches[p];
         Counts counts;
@@ -882,11 +881,11 @@ PipelineStatus emit_all(const F& family, const MeshView& mesh, const PipelineOpt
 
 PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet* uniform, const MeshView& mesh,
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
-                         std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+                         std::span<TessVertex> vertices, std::span<std::uint32_t> indices, bool range) {
     if (patches.size() < mesh.patch_count()) return PipelineStatus::span_too_small;
     if (const PipelineStatus s = check_options(uniform, options); s != PipelineStatus::ok) return s;
     return with_family(tables, uniform, options, [&](const auto& family) {
-        return emit_all(family, mesh, options, patches, vertices, indices);
+        return emit_all(family, mesh, options, patches, vertices, indices, range);
     });
 }
 
@@ -1625,13 +1624,26 @@ TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const Surf
 PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
                          std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
                          std::span<std::uint32_t> indices) {
-    return emit_mesh(tables, nullptr, mesh, options, patches, vertices, indices);
+    return emit_mesh(tables, nullptr, mesh, options, patches, vertices, indices, false);
 }
 
 PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
-    return emit_mesh(tables, &uniform, mesh, options, patches, vertices, indices);
+    return emit_mesh(tables, &uniform, mesh, options, patches, vertices, indices, false);
+}
+
+PipelineStatus emit_mesh_range(const CpTableSet& tables, const MeshView& range,
+                               const PipelineOptions& options, std::span<const PatchRecord> patches,
+                               std::span<TessVertex> vertices, std::span<std::uint32_t> indices) {
+    return emit_mesh(tables, nullptr, range, options, patches, vertices, indices, true);
+}
+
+PipelineStatus emit_mesh_range(const CpTableSet& tables, const UniformTableSet& uniform,
+                               const MeshView& range, const PipelineOptions& options,
+                               std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
+                               std::span<std::uint32_t> indices) {
+    return emit_mesh(tables, &uniform, range, options, patches, vertices, indices, true);
 }
 
 PipelineStatus setup_welded(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,

@@ -793,9 +793,9 @@ UniformSplit::UniformSplit(const UniformTableSet& tables, float f0, float f1, fl
         uniform_split_depth_limit(n, static_cast<std::uint32_t>(std::max({root_[0], root_[1], root_[2]})));
     const Impl impl = make_impl();
     Impl::Counter c;
-    if (!impl.welded()) c.list = leaf_list_; // the welded walk numbers through the tree: no list
+    c.list = leaf_list_;
     impl.walk(c);
-    listed_leaves_ = !impl.welded() && c.subpatches <= listed_leaf_capacity ? c.subpatches : 0u;
+    listed_leaves_ = c.subpatches <= listed_leaf_capacity ? c.subpatches : 0u;
     std::uint64_t vertices = c.vertices;
     if (impl.welded() && c.depth > 0) { // Euler on a disk: V = 1 + (T + B) / 2 (§3.5)
         std::uint64_t boundary = 0;

@@ -270,10 +270,7 @@ TessVertex patch_vertex(const CpPatch& patch, const PatchRecord& rec, const Surf
 
 // Every vertex and triangle of the mesh, at the records' offsets. Checks every record first (its counts are
 // its pattern's counts, its offsets the exclusive prefix sums, a culled patch is empty) and the spans; on
-// any failure writes nothing. A range of patches is emitted the same way: a MeshView of its faces (indices,
-// quad_indices and adjacency from its first face on) with its records, whose offsets then run on from the
-// first record's, into the whole mesh's spans; threads can emit disjoint ranges at once
-// (bench/bench_mesh.cpp, mesh_pipeline/grid10k).
+// any failure writes nothing.
 PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const PipelineOptions& options,
                          std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
                          std::span<std::uint32_t> indices);
@@ -281,6 +278,19 @@ PipelineStatus emit_mesh(const CpTableSet& tables, const MeshView& mesh, const P
 PipelineStatus emit_mesh(const CpTableSet& tables, const UniformTableSet& uniform, const MeshView& mesh,
                          const PipelineOptions& options, std::span<const PatchRecord> patches,
                          std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
+// Patches [a, b) of a mesh into the whole mesh's spans, so that threads can each emit a range at once
+// (bench/bench_mesh.cpp, mesh_pipeline/grid10k). range is a MeshView of those faces: indices from triangle a
+// on, quad_indices from the range's first quad on, and adjacency from the range's first entry on (12 per
+// triangle, then 24 per quad after all the mesh's triangles: adjacency + 12 a while a is a triangle,
+// adjacency + 12 T + 24 (a - T) past the T triangles); patches are the range's records, whose offsets run on
+// from the first one's. Checked as emit_mesh checks a mesh, the spans against the range's end.
+PipelineStatus emit_mesh_range(const CpTableSet& tables, const MeshView& range,
+                               const PipelineOptions& options, std::span<const PatchRecord> patches,
+                               std::span<TessVertex> vertices, std::span<std::uint32_t> indices);
+PipelineStatus emit_mesh_range(const CpTableSet& tables, const UniformTableSet& uniform,
+                               const MeshView& range, const PipelineOptions& options,
+                               std::span<const PatchRecord> patches, std::span<TessVertex> vertices,
+                               std::span<std::uint32_t> indices);
 
 // --- One welded, indexed mesh (docs/algorithm.md §7.4) ---
 //

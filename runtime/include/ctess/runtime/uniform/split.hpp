@@ -48,20 +48,21 @@
 //   own data (factor, depth), so both sides of an edge agree. counts().vertices = 1 + (T + B) / 2 (Euler on
 //   a disk, B the root's boundary segments). Below N it is UniformPatch's own numbering.
 //
-// Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, emit()
-// traverses again and returns false (writing nothing) when a span is shorter than counts(); during its walk
-// it checks every leaf and every welded vertex number against the spans too, and returns false rather than
-// write past one. Every decision (factor sanitising, the dice limit and an edge's pieces, rounding, child
-// factors, segments, the walks, longest_edge) is out of line in runtime/src/uniform/split.cpp, compiled with
-// -ffp-contract=off -fno-fast-math (ctess::uniform_core): in header code the constructor's count and emit()'s
-// walk were compiled with the caller's flags in different inlining contexts, and under -ffast-math they could
-// decide an edge differently (§3.5; docs/api.md, "Crack-free evaluation"). Every walk keeps its split
-// pattern's points on the stack per split level (at most uniform_split_max_depth levels) and one leaf-sized
-// buffer; the shared layout's emit() also keeps one pattern-sized set of arrays per level: the stack is
-// bounded by depth x the largest stored pattern, whatever the factors (measured in docs/algorithm.md §3.5).
-// A leaf that rounds like the last one reuses that leaf's pattern output (§3.5, "Leaf reuse"); that state
-// lives in the walk of one call, so a UniformSplit (all its methods const) may be used from several threads
-// at once, as before.
+// Embedded style: no heap, no exceptions; counts() is computed by one traversal in the constructor, which
+// also lists up to 16 leaves; emit() writes a listed patch from that list (the provoking layout, and
+// emit_leaves() in both) and otherwise traverses again (docs/algorithm.md §3.5, "Leaf list"). It returns
+// false (writing nothing) when a span is shorter than counts(); during its walk it checks every leaf and
+// every welded vertex number against the spans too, and returns false rather than write past one. Every
+// decision (factor sanitising, the dice limit and an edge's pieces, rounding, child factors, segments, the
+// walks, longest_edge) is out of line in runtime/src/uniform/split.cpp, compiled with -ffp-contract=off
+// -fno-fast-math (ctess::uniform_core): in header code the constructor's count and emit()'s walk were
+// compiled with the caller's flags in different inlining contexts, and under -ffast-math they could decide an
+// edge differently (§3.5; docs/api.md, "Crack-free evaluation"). Every walk keeps its split pattern's points
+// on the stack per split level (at most uniform_split_max_depth levels) and one leaf-sized buffer; the shared
+// layout's emit() also keeps one pattern-sized set of arrays per level: the stack is bounded by depth x the
+// largest stored pattern, whatever the factors (measured in docs/algorithm.md §3.5). A leaf that rounds like
+// the last one reuses that leaf's pattern output (§3.5, "Leaf reuse"); that state lives in the walk of one
+// call, so a UniformSplit (all its methods const) may be used from several threads at once, as before.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -232,9 +233,9 @@ class UniformSplit {
     std::uint32_t subpatches_ = 0, depth_ = 0, depth_limit_ = 2;
     bool overflow_ = false; // counts beyond 32 bits: counts() {0, 0}, emit() false
     // The leaves of a split of up to listed_leaf_capacity leaves, in walk order, as the counting walk met
-    // them: their corners on the root (units of 65534^2, which fit 32 bits) and rounded factors. emit()
-    // writes them without walking the tree again (docs/algorithm.md §3.5, "Leaf list"); listed_leaves_ = 0:
-    // walk.
+    // them: their corners on the root (units of 65534^2, which fit 32 bits) and rounded factors. The leaf
+    // writer (emit() in the provoking layout or at depth 0, emit_leaves()) reads them without walking the
+    // tree again (docs/algorithm.md §3.5, "Leaf list"); listed_leaves_ = 0: walk.
     struct ListedLeaf {
         std::array<std::array<std::uint32_t, 2>, 3> corner;
         std::array<std::uint32_t, 3> factors;
