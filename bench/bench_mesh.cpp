@@ -3,8 +3,8 @@
 // surface. One iteration is the whole frame: every patch's setup (in parallel, equal patch counts), the
 // prefix sum (serial), then every vertex and triangle (in parallel, equal output triangle counts: the patches
 // near the eye have far more). The patches are cut into one contiguous range per thread; each thread runs the
-// library's own per-patch functions on its range, so the library stays allocation- and thread-free. Counters:
-// triangles per second and the thread count (compare 1 and 2 threads for scaling).
+// library's setup_patch and emit_mesh_range on its range, so the library stays allocation- and thread-free.
+// Counters: triangles per second and the thread count (compare 1 and 2 threads for scaling).
 //
 // mesh_pipeline/torus100k/*: what `ctess mesh --factor 8` does with a 100,352-face closed mesh (a torus
 // written here: no uv or normal seams, every edge shared by two faces), one stage per benchmark on the
