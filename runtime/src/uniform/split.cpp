@@ -325,10 +325,13 @@ struct UniformSplit::Impl {
     void walk(Visitor& visitor) const noexcept {
         visit(visitor, root());
     }
-    // The Writer over a split's leaf list (UniformSplit::leaf_list_) instead of the walk that listed them.
-    void write_listed(Writer& w, std::span<const UniformSplit::ListedLeaf> leaves) const noexcept {
+    // The Writer over the split's leaf list (UniformSplit::leaf_list_) instead of the walk that listed them,
+    // or the walk when the split has more leaves than the list holds.
+    void write_leaves(Writer& w, const UniformSplit& split) const noexcept {
+        if (split.listed_leaves_ == 0) return walk(w);
         Sub s{};
-        for (const UniformSplit::ListedLeaf& l : leaves) {
+        for (const UniformSplit::ListedLeaf& l :
+             std::span<const UniformSplit::ListedLeaf>(split.leaf_list_.data(), split.listed_leaves_)) {
             for (int c = 0; c < 3; ++c) s.corner[c] = Point{l.corner[c][0], l.corner[c][1]};
             w.listed_leaf(s, l.factors, *this);
         }
@@ -882,10 +885,7 @@ bool UniformSplit::emit_leaves(std::span<point_type> vertices,
         return false;
     const Impl impl = make_impl();
     Impl::Writer w{vertices, indices};
-    if (listed_leaves_ != 0)
-        impl.write_listed(w, std::span<const ListedLeaf>(leaf_list_.data(), listed_leaves_));
-    else
-        impl.walk(w);
+    impl.write_leaves(w, *this);
     return w.ok && w.v == leaf_counts_.vertices && w.t == leaf_counts_.index_count();
 }
 
@@ -904,11 +904,7 @@ bool emit_checked(const UniformSplit& split, std::span<UniformSplit::point_type>
         return w.ok && w.next == counts.vertices && w.t == counts.index_count();
     }
     UniformSplit::Impl::Writer w{vertices, indices};
-    if (split.listed_leaves_ != 0)
-        impl.write_listed(
-            w, std::span<const UniformSplit::ListedLeaf>(split.leaf_list_.data(), split.listed_leaves_));
-    else
-        impl.walk(w);
+    impl.write_leaves(w, split);
     return w.ok && w.v == counts.vertices && w.t == counts.index_count();
 }
 
